@@ -1,0 +1,28 @@
+# Two commands on a fresh machine: `make study` (the main job) and `make test` (all tests).
+PYTHON ?= python3
+VENV ?= .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed-stamp
+OUT ?= study
+
+.PHONY: study test lint bench clean
+
+$(STAMP): pyproject.toml
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	@touch $(STAMP)
+
+study: $(STAMP)
+	$(BIN)/auxbearing contact-sweep --out $(OUT)/contact
+	@echo "Study output: $(OUT)/ (NetCDF data, figures, JSON summaries)"
+
+test: $(STAMP)
+	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/python -m pytest
+
+bench: $(STAMP)
+	$(BIN)/python benchmarks/run.py
+
+clean:
+	rm -rf $(VENV) $(OUT) out .pytest_cache .ruff_cache

@@ -1,0 +1,1 @@
+"""Studies built from the core kernels: sweeps, comparisons, the paper's figures."""

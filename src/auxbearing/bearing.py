@@ -1,0 +1,360 @@
+"""Ball bearing geometry: the types, their validation, derived quantities, catalogue and TOML.
+
+Kernels take SI floats; this module is where a person's values become a validated,
+immutable :class:`BearingGeometry`. Geometry follows Harris & Kotzalas, *Rolling Bearing
+Analysis*, 5th ed. (2007), Essential Concepts, Ch. 2 ("ball bearing macrogeometry").
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, replace
+from functools import cache
+from importlib import resources
+from pathlib import Path
+
+from auxbearing.errors import InputError
+from auxbearing.materials import Material, check_positive, get_material, material_from_mapping
+from auxbearing.units import to_si
+
+#: Bearing types and the contact pairs a ball makes with the raceways. ``axial_signs`` is the
+#: side of the raceway groove each pair's curvature centre lies on (+1 / -1), 0 for a
+#: single-arc deep groove whose centres sit in the ring's mid-plane.
+BEARING_TYPES: dict[str, dict] = {
+    "four_point": {"axial_signs": (1.0, -1.0), "label": "four-point contact"},
+    "angular_contact": {"axial_signs": (1.0,), "label": "angular contact"},
+    "deep_groove": {"axial_signs": (0.0,), "label": "deep groove"},
+}
+
+
+@dataclass(frozen=True)
+class BearingGeometry:
+    """Internal geometry and materials of a ball bearing (all SI).
+
+    Parameters
+    ----------
+    type : str
+        ``four_point``, ``angular_contact`` or ``deep_groove``.
+    ball_diameter : float
+        D [m].
+    pitch_diameter : float
+        dm [m].
+    ball_count : int
+        Z [-], at least 3.
+    inner_groove_ratio, outer_groove_ratio : float
+        fi = ri/D, fo = ro/D [-], each > 0.5.
+    contact_angle : float
+        Free (nominal) contact angle alpha0 [rad] of the curvature-centre line, in [0, pi/2).
+        Zero for a deep-groove bearing, whose working angle comes from clearance and load.
+    diametral_clearance : float
+        Pd [m], >= 0. Zero reproduces the source paper.
+    ball_material, ring_material : Material
+    name : str
+    bore, outside_diameter, width : float or None
+        Envelope [m]; optional.
+    source : str
+
+    Examples
+    --------
+    >>> b = get_bearing("QJ202")
+    >>> round(b.gamma, 5), round(b.curvature_centre_distance * 1e3, 4)
+    (0.19274, 0.24)
+    """
+
+    type: str
+    ball_diameter: float
+    pitch_diameter: float
+    ball_count: int
+    inner_groove_ratio: float
+    outer_groove_ratio: float
+    contact_angle: float
+    diametral_clearance: float
+    ball_material: Material
+    ring_material: Material
+    name: str = "custom"
+    bore: float | None = None
+    outside_diameter: float | None = None
+    width: float | None = None
+    source: str = "user input"
+
+    def __post_init__(self) -> None:
+        if self.type not in BEARING_TYPES:
+            raise InputError.for_field("type", self.type, "must be one of " + ", ".join(BEARING_TYPES))
+        check_positive("ball_diameter", self.ball_diameter)
+        check_positive("pitch_diameter", self.pitch_diameter)
+        z = self.ball_count
+        if isinstance(z, bool) or not isinstance(z, int) or z < 3:
+            raise InputError.for_field("ball_count", z, "must be a whole number >= 3")
+        for key in ("inner_groove_ratio", "outer_groove_ratio"):
+            ratio = getattr(self, key)
+            check_positive(key, ratio)
+            if ratio <= 0.5:
+                raise InputError.for_field(
+                    key, ratio, "must be > 0.5 (groove radius larger than ball radius)"
+                )
+        if self.pitch_diameter <= self.ball_diameter:
+            raise InputError.for_field(
+                "pitch_diameter", self.pitch_diameter,
+                f"must exceed ball_diameter = {self.ball_diameter:g} m",
+            )
+        chord = self.pitch_diameter * math.sin(math.pi / z)
+        if chord <= self.ball_diameter:
+            raise InputError.for_field(
+                "ball_count", z,
+                f"balls overlap on the pitch circle: pitch_diameter*sin(pi/Z) = {chord * 1e3:.4g} mm "
+                f"must exceed ball_diameter = {self.ball_diameter * 1e3:.4g} mm "
+                f"(at most {max_ball_count(self.ball_diameter, self.pitch_diameter)} balls fit)",
+            )
+        angle = self.contact_angle
+        if not isinstance(angle, (int, float)) or math.isnan(angle) or not 0.0 <= angle < math.pi / 2:
+            raise InputError.for_field(
+                "contact_angle", _deg(angle), "must lie in [0, 90) deg"
+            )
+        if self.type == "deep_groove" and angle != 0.0:
+            raise InputError.for_field(
+                "contact_angle", _deg(angle),
+                "a deep_groove bearing has contact_angle 0 deg; its working angle follows from "
+                "diametral_clearance and load (use angular_contact for a built-in angle)",
+            )
+        pd = self.diametral_clearance
+        if not isinstance(pd, (int, float)) or math.isnan(pd) or pd < 0.0 or math.isinf(pd):
+            raise InputError.for_field("diametral_clearance", pd, "must be >= 0 m and finite")
+        if pd >= 2.0 * self.curvature_centre_distance * math.cos(angle):
+            raise InputError.for_field(
+                "diametral_clearance", pd,
+                f"must be below 2 A cos(alpha) = {2e3 * self.curvature_centre_distance * math.cos(angle):.4g} mm "
+                "or the ball is loose in every direction",
+            )
+        for key in ("bore", "outside_diameter", "width"):
+            value = getattr(self, key)
+            if value is not None:
+                check_positive(key, value)
+        if self.bore is not None and self.bore >= self.inner_raceway_diameter:
+            raise InputError.for_field(
+                "bore", self.bore,
+                f"must be below the inner raceway diameter {self.inner_raceway_diameter * 1e3:.4g} mm",
+            )
+        if self.outside_diameter is not None and self.outside_diameter <= self.outer_raceway_diameter:
+            raise InputError.for_field(
+                "outside_diameter", self.outside_diameter,
+                f"must exceed the outer raceway diameter {self.outer_raceway_diameter * 1e3:.4g} mm",
+            )
+
+    # -- derived quantities (Harris & Kotzalas 2007, Essential Concepts, Ch. 2) -------------
+    @property
+    def axial_signs(self) -> tuple[float, ...]:
+        """Groove side of each contact pair's curvature centre (see :data:`BEARING_TYPES`)."""
+        return BEARING_TYPES[self.type]["axial_signs"]
+
+    @property
+    def pairs_per_ball(self) -> int:
+        """Contact pairs a ball can form: 2 for four-point, 1 otherwise."""
+        return len(self.axial_signs)
+
+    @property
+    def gamma(self) -> float:
+        """Gamma = D cos(alpha0) / dm [-] (Harris Eq. 2.27)."""
+        return self.ball_diameter * math.cos(self.contact_angle) / self.pitch_diameter
+
+    @property
+    def curvature_centre_distance(self) -> float:
+        """A = (fi + fo - 1) D [m], distance of the groove curvature centres (Eq. 9, source paper)."""
+        return (self.inner_groove_ratio + self.outer_groove_ratio - 1.0) * self.ball_diameter
+
+    @property
+    def inner_curvature_centre_radius(self) -> float:
+        """Radius of the locus of the inner groove curvature centres r_ic [m].
+
+        r_ic = dm/2 + (fi - 0.5) D cos(alpha0) (Harris Eq. 3.xx, the moment arm of Eq. 14).
+        """
+        return 0.5 * self.pitch_diameter + (self.inner_groove_ratio - 0.5) * self.ball_diameter * math.cos(
+            self.contact_angle
+        )
+
+    @property
+    def inner_raceway_diameter(self) -> float:
+        """Groove bottom diameter of the inner ring, di = dm - D [m]."""
+        return self.pitch_diameter - self.ball_diameter
+
+    @property
+    def outer_raceway_diameter(self) -> float:
+        """Groove bottom diameter of the outer ring, do = dm + D [m]."""
+        return self.pitch_diameter + self.ball_diameter
+
+    @property
+    def free_contact_angle(self) -> float:
+        """Contact angle [rad] when the ball just touches both races, Harris Eq. 2.11 for clearance.
+
+        For four-point and angular-contact bearings this is the nominal angle with Pd = 0;
+        with clearance it is arccos((A cos(alpha0) - Pd/2)/A) measured on the centre line
+        after the ring has moved axially until the pair closes.
+        """
+        a = self.curvature_centre_distance
+        radial = a * math.cos(self.contact_angle) - 0.5 * self.diametral_clearance
+        return math.acos(radial / a)
+
+    @property
+    def label(self) -> str:
+        """Human-readable type."""
+        return BEARING_TYPES[self.type]["label"]
+
+    def with_changes(self, **changes) -> BearingGeometry:
+        """A copy with some fields changed, validated again."""
+        return replace(self, **changes)
+
+    def describe(self) -> dict[str, object]:
+        """Inputs with units, for files and reports."""
+        out: dict[str, object] = {
+            "name": self.name,
+            "type": self.type,
+            "ball_diameter_mm": self.ball_diameter * 1e3,
+            "pitch_diameter_mm": self.pitch_diameter * 1e3,
+            "ball_count": self.ball_count,
+            "inner_groove_ratio": self.inner_groove_ratio,
+            "outer_groove_ratio": self.outer_groove_ratio,
+            "contact_angle_deg": _deg(self.contact_angle),
+            "diametral_clearance_mm": self.diametral_clearance * 1e3,
+            "ball_material": f"{self.ball_material.name} (E = {self.ball_material.elastic_modulus / 1e9:g} GPa, "
+            f"nu = {self.ball_material.poisson_ratio:g})",
+            "ring_material": f"{self.ring_material.name} (E = {self.ring_material.elastic_modulus / 1e9:g} GPa, "
+            f"nu = {self.ring_material.poisson_ratio:g})",
+            "source": self.source,
+        }
+        for key in ("bore", "outside_diameter", "width"):
+            value = getattr(self, key)
+            if value is not None:
+                out[f"{key}_mm"] = value * 1e3
+        return out
+
+
+def max_ball_count(ball_diameter: float, pitch_diameter: float) -> int:
+    """Largest Z with dm sin(pi/Z) > D (balls do not overlap on the pitch circle)."""
+    return int(math.pi / math.asin(min(1.0, ball_diameter / pitch_diameter)) - 1e-12)
+
+
+def _deg(angle: object) -> object:
+    return math.degrees(angle) if isinstance(angle, (int, float)) else angle
+
+
+# -- reading bearings from TOML tables ----------------------------------------------------
+_LENGTH_KEYS = ("ball_diameter", "pitch_diameter", "diametral_clearance")
+_OPTIONAL_LENGTH_KEYS = ("bore", "outside_diameter", "width")
+_RATIO_KEYS = ("inner_groove_ratio", "outer_groove_ratio")
+_REQUIRED_KEYS = ("type", *_LENGTH_KEYS[:2], "ball_count", *_RATIO_KEYS, "contact_angle",
+                  "diametral_clearance", "ball_material", "ring_material")
+_ALLOWED_KEYS = (*_REQUIRED_KEYS, "name", "source", *_OPTIONAL_LENGTH_KEYS)
+
+
+def bearing_from_mapping(data: dict, name: str | None = None, prefix: str = "bearing.") -> BearingGeometry:
+    """Build a validated bearing from a ``[bearing]`` TOML table whose values carry units.
+
+    Examples
+    --------
+    >>> table = {"type": "four_point", "ball_diameter": "6 mm", "pitch_diameter": "25.5 mm",
+    ...          "ball_count": 11, "inner_groove_ratio": 0.49, "outer_groove_ratio": 0.52,
+    ...          "contact_angle": "35 deg", "diametral_clearance": "0 mm",
+    ...          "ball_material": "GCr15", "ring_material": "GCr15"}
+    >>> try:
+    ...     bearing_from_mapping(table)
+    ... except InputError as err:
+    ...     print(err)
+    bearing.inner_groove_ratio = 0.49: must be > 0.5 (groove radius larger than ball radius)
+    """
+    if not isinstance(data, dict):
+        raise InputError.for_field(prefix.rstrip("."), data, "must be a table of keys")
+    unknown = [k for k in data if k not in _ALLOWED_KEYS]
+    if unknown:
+        raise InputError.for_field(
+            prefix + unknown[0], data[unknown[0]], "unknown key; allowed keys: " + ", ".join(_ALLOWED_KEYS)
+        )
+    missing = [k for k in _REQUIRED_KEYS if k not in data]
+    if missing:
+        raise InputError(f"{prefix}{missing[0]}: missing; a bearing needs " + ", ".join(_REQUIRED_KEYS))
+    kind = data["type"]
+    if kind not in BEARING_TYPES:
+        raise InputError.for_field(prefix + "type", kind, "must be one of " + ", ".join(BEARING_TYPES))
+    count = data["ball_count"]
+    if isinstance(count, bool) or not isinstance(count, int):
+        raise InputError.for_field(prefix + "ball_count", count, "must be a whole number >= 3")
+    values: dict[str, object] = {
+        "type": kind,
+        "ball_count": count,
+        "name": str(data.get("name", name or "custom")),
+        "source": str(data.get("source", "user input")),
+        "contact_angle": to_si(prefix + "contact_angle", data["contact_angle"], "angle"),
+        "ball_material": _material(data["ball_material"], prefix + "ball_material."),
+        "ring_material": _material(data["ring_material"], prefix + "ring_material."),
+    }
+    for key in _LENGTH_KEYS:
+        values[key] = to_si(prefix + key, data[key], "length")
+    for key in _OPTIONAL_LENGTH_KEYS:
+        if key in data:
+            values[key] = to_si(prefix + key, data[key], "length")
+    for key in _RATIO_KEYS:
+        values[key] = to_si(prefix + key, data[key], "dimensionless")
+    try:
+        return BearingGeometry(**values)
+    except InputError as err:
+        raise InputError(prefix + str(err)) from None
+
+
+def _material(value: object, prefix: str) -> Material:
+    if isinstance(value, str):
+        try:
+            return get_material(value)
+        except InputError as err:
+            raise InputError(prefix.rstrip(".") + str(err).removeprefix("material")) from None
+    if isinstance(value, dict):
+        return material_from_mapping(value, str(value.get("name", "custom")), "user input", prefix)
+    raise InputError.for_field(prefix.rstrip("."), value, "must be a catalogue name or a table")
+
+
+@cache
+def _catalogue() -> dict[str, dict]:
+    text = resources.files("auxbearing.catalog").joinpath("bearings.toml").read_text()
+    return tomllib.loads(text)
+
+
+def bearing_names() -> list[str]:
+    """Names of the catalogue bearings."""
+    return list(_catalogue())
+
+
+def get_bearing(name: str) -> BearingGeometry:
+    """A catalogue bearing by name (case-insensitive).
+
+    Examples
+    --------
+    >>> get_bearing("qj202").type
+    'four_point'
+    """
+    for key, entry in _catalogue().items():
+        if key.lower() == name.strip().lower():
+            return bearing_from_mapping(entry, name=key, prefix=f"catalogue {key}.")
+    raise InputError.for_field("bearing", name, "unknown; catalogue names are " + ", ".join(_catalogue()))
+
+
+def read_toml(path: str | Path) -> dict:
+    """Read a TOML file, turning a missing file or a syntax error into a one-line error."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError.for_field("file", str(path), "not found")
+    try:
+        return tomllib.loads(path.read_text())
+    except tomllib.TOMLDecodeError as err:
+        raise InputError.for_field("file", str(path), f"is not valid TOML ({err})") from None
+
+
+def load_bearing(spec: str | Path | BearingGeometry) -> BearingGeometry:
+    """A bearing from a catalogue name, a TOML path with a ``[bearing]`` table, or as given."""
+    if isinstance(spec, BearingGeometry):
+        return spec
+    text = str(spec)
+    if text.lower().endswith(".toml") or Path(text).is_file():
+        data = read_toml(text)
+        if "bearing" not in data:
+            raise InputError.for_field("file", text, "has no [bearing] table")
+        return bearing_from_mapping(data["bearing"], name=Path(text).stem)
+    return get_bearing(text)
+

@@ -1,0 +1,1 @@
+"""Data files: the materials and bearings catalogues, each entry with its source."""

@@ -1,0 +1,120 @@
+"""``auxbearing contact`` and ``auxbearing contact-sweep`` (source paper Sec. II.B, Fig. 2-4)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+import numpy as np
+from rich.console import Console
+from rich.table import Table
+
+from auxbearing.analysis.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
+from auxbearing.cli.common import (
+    bearing_option,
+    echo_json,
+    json_option,
+    out_option,
+    quantity,
+    resolve_bearing,
+)
+from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
+
+_ROWS = (
+    ("contact_load_N", "Contact load", "N", "{:.1f}"),
+    ("semi_major_mm", "Semi-major axis a", "mm", "{:.4f}"),
+    ("semi_minor_mm", "Semi-minor axis b", "mm", "{:.4f}"),
+    ("ellipticity", "Ellipticity a/b", "-", "{:.3f}"),
+    ("approach_um", "Elastic approach", "µm", "{:.3f}"),
+    ("max_stress_MPa", "Max contact stress", "MPa", "{:.1f}"),
+    ("stiffness_N_per_m1_5", "Load-deflection constant K", "N/m^1.5", "{:.4g}"),
+)
+
+
+@click.command("contact")
+@bearing_option()
+@click.option("--ball-load", default="1000", show_default=True, metavar="LOAD",
+              help="Radial load on one ball: a number in N, or with a unit ('1 kN').")
+@click.option("--contact-angle", default=None, metavar="ANGLE",
+              help="Override the contact angle: a number in deg, or with a unit ('0.6 rad').")
+@click.option("--groove-ratio", default=None, metavar="F", help="Override both groove radius coefficients (> 0.5).")
+@click.option("--method", type=click.Choice(["exact", "hamrock_brewe"]), default="exact", show_default=True,
+              help="Ellipticity from exact elliptic integrals, or the Hamrock-Brewe approximation.")
+@json_option()
+def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method, as_json):
+    """Hertz contact of one ball on the inner and outer race (source paper Eq. 1-8).
+
+    The radial ball load is split over the ball's contacts: Q/(2 cos α) on each of the two
+    contacts of a four-point bearing, Q/cos α on the one contact of an angular-contact bearing.
+    """
+    bearing = resolve_bearing(bearing_spec, contact_angle, groove_ratio)
+    load = quantity("--ball-load", ball_load, "force", "N")
+    result = ball_contact(bearing, load, method=method)
+    if as_json:
+        echo_json(result)
+        return
+    table = Table(title=f"{bearing.name} ({bearing.label}), ball load {load:g} N, "
+                        f"α = {result['contact_angle_deg']:g} deg, {bearing.pairs_per_ball} contact(s) per race")
+    table.add_column("quantity")
+    table.add_column("unit")
+    table.add_column("inner race", justify="right")
+    table.add_column("outer race", justify="right")
+    for key, label, unit, fmt in _ROWS:
+        table.add_row(label, unit, fmt.format(result["inner"][key]), fmt.format(result["outer"][key]))
+    Console().print(table)
+    click.echo(f"Ball constant K_b (Eq. 15): {result['ball_constant_N_per_m1_5']:.4g} N/m^1.5")
+
+
+@click.command("contact-sweep")
+@bearing_option()
+@click.option("--ball-load", default="1000", show_default=True, metavar="LOAD", help="Radial load on one ball [N].")
+@click.option("--angle-range", nargs=3, type=float, default=(10.0, 75.0, 1.0), show_default=True,
+              metavar="START STOP STEP", help="Contact angles [deg] (Fig. 2: 10-75 deg).")
+@click.option("--ratio-range", nargs=3, type=float, default=(0.505, 0.6, 0.0025), show_default=True,
+              metavar="START STOP STEP", help="Groove radius coefficients [-] (Fig. 3: 0.505-0.6).")
+@out_option("out/contact")
+@json_option()
+def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, out_dir, as_json):
+    """Sweep contact angle and groove ratio; write NetCDF data and Fig. 2-3 style figures.
+
+    Writes contact_map.nc (dims race x contact_angle x groove_ratio, SI units in attrs),
+    fig2_contact_angle.png, fig3_groove_ratio.png, contact_map.png and contact_summary.json
+    (the Fig. 4 comparison of four-point and angular-contact beside the paper's numbers).
+    """
+    bearing = resolve_bearing(bearing_spec)
+    load = quantity("--ball-load", ball_load, "force", "N")
+    angles = _grid("--angle-range", angle_range)
+    ratios = _grid("--ratio-range", ratio_range)
+    ds = contact_map(bearing, load, angles, ratios)
+    summary = {"bearing": bearing.describe(), "ball_load_N": load, "fig4_comparison": type_comparison(bearing, load)}
+    inputs = {"bearing": bearing.describe(), "ball_load_N": load, "angle_range_deg": angle_range,
+              "ratio_range": ratio_range}
+    with atomic_output_dir(out_dir) as tmp:
+        save_dataset(ds, tmp / "contact_map.nc", inputs)
+        save_figure(plot_contact_angle_sweep(ds, bearing.inner_groove_ratio), tmp / "fig2_contact_angle")
+        save_figure(plot_groove_ratio_sweep(ds, np.degrees(bearing.contact_angle)), tmp / "fig3_groove_ratio")
+        save_figure(plot_contact_map(ds), tmp / "contact_map")
+        write_json(summary, tmp / "contact_summary.json", inputs)
+    if as_json:
+        echo_json({**summary, "out": str(out_dir)})
+        return
+    comp = summary["fig4_comparison"]
+    click.echo(f"Four-point max stress  {comp['four_point_max_stress_MPa']:.1f} MPa "
+               f"(paper: theory {PAPER_CONTACT['theory_four_point_MPa']} MPa, "
+               f"FE {PAPER_CONTACT['fe_four_point_MPa']} MPa)")
+    click.echo(f"Angular-contact        {comp['angular_contact_max_stress_MPa']:.1f} MPa "
+               f"(paper: FE {PAPER_CONTACT['fe_angular_contact_MPa']} MPa)")
+    click.echo(f"Wrote {Path(out_dir) / 'contact_map.nc'} and the Fig. 2-3 figures in {out_dir}/")
+
+
+def _grid(name: str, triple: tuple[float, float, float]) -> np.ndarray:
+    start, stop, step = triple
+    if step <= 0 or stop < start:
+        from auxbearing.errors import InputError
+
+        raise InputError.for_field(name, triple, "needs START <= STOP and STEP > 0")
+    return np.arange(start, stop + 0.5 * step, step)
+
+
+COMMANDS = [contact_command, contact_sweep_command]

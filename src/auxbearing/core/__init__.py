@@ -1,0 +1,1 @@
+"""Pure kernels on SI floats and numpy arrays: no units, no I/O, no printing."""

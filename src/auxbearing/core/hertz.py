@@ -1,0 +1,365 @@
+"""Hertz point and line contact on SI floats and numpy arrays (no units, no I/O).
+
+Notation follows Harris & Kotzalas, *Rolling Bearing Analysis*, 5th ed. (2007), Essential
+Concepts, Ch. 2 (curvature) and Ch. 6 (contact stress and deformation), which is also the
+reading of Eq. 1-8 of the source paper:
+
+* curvature sum and difference ``sum_rho``, ``F(rho)`` (Harris Eq. 2.2-2.3),
+* ellipticity ``kappa = a/b`` from F(rho) through the complete elliptic integrals K and E
+  (Harris Eq. 6.22 in the form F = [(kappa^2+1)E - 2K] / [(kappa^2-1)E]),
+* semi-axes a, b (source paper Eq. 4-5; Harris Eq. 6.38-6.39), elastic approach delta (source
+  paper Eq. 6 with the compliance squared, see :func:`point_contact`; Harris Eq. 6.40-6.43),
+* max stress 3Q/(2 pi a b) (source paper Eq. 8; Harris Eq. 6.47),
+* load-deflection constant K with Q = K delta^1.5 (Harris Eq. 7.1-7.2).
+
+``compliance`` below is eta = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 [1/Pa] (source paper Eq. 3).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from scipy.special import ellipe, ellipkm1
+
+_HALF_PI = 0.5 * np.pi
+_EPS = np.finfo(float).eps
+
+# Maclaurin coefficients of K(m) and E(m) in the parameter m (Abramowitz & Stegun 17.3.11-12):
+# K = pi/2 sum a_n m^n, E = pi/2 sum a_n m^n / (1 - 2n), a_n = ((2n-1)!!/(2n)!!)^2.
+_N_SERIES = 80
+_A = np.cumprod(np.r_[1.0, ((2.0 * np.arange(1, _N_SERIES) - 1.0) / (2.0 * np.arange(1, _N_SERIES))) ** 2])
+_E = _A / (1.0 - 2.0 * np.arange(_N_SERIES))
+# numerator (2-m)E - 2(1-m)K = pi/2 sum c_n m^n with c_0 = c_1 = 0 exactly; dividing by m
+# gives the series of F(rho) * E(m) * 2/pi, free of the cancellation of the closed form at small m.
+_C = 2.0 * _E - 2.0 * _A
+_C[1:] += -_E[:-1] + 2.0 * _A[:-1]
+_S = _C[1:]  # coefficients of N(m)/m, starting at m^0 (which is 0)
+_SERIES_LIMIT = 0.5  # below this m the series converges as 0.5^80 and beats the closed form
+
+
+class PointContact(NamedTuple):
+    """Hertz point contact results (arrays broadcast over the inputs)."""
+
+    semi_major: np.ndarray  #: a [m]
+    semi_minor: np.ndarray  #: b [m]
+    approach: np.ndarray  #: elastic approach delta [m]
+    max_stress: np.ndarray  #: sigma_max [Pa]
+    ellipticity: np.ndarray  #: kappa = a/b [-]
+    stiffness: np.ndarray  #: K with Q = K delta^1.5 [N/m^1.5]
+
+
+def curvature_sum_difference(rho_11, rho_12, rho_21, rho_22, plane_angle=0.0):
+    """Curvature sum and curvature difference F(rho) of two bodies in contact.
+
+    Harris & Kotzalas (2007) Eq. 2.2-2.3, generalised to principal planes at an angle
+    ``plane_angle`` (Johnson, *Contact Mechanics*, 1985, Eq. 4.9); zero is the bearing case.
+
+    Parameters
+    ----------
+    rho_11, rho_12 : float or array
+        Principal curvatures of body I [1/m] (convex positive, concave negative).
+    rho_21, rho_22 : float or array
+        Principal curvatures of body II [1/m].
+    plane_angle : float or array
+        Angle between the principal planes [rad].
+
+    Returns
+    -------
+    sum_rho : array
+        Curvature sum [1/m].
+    f_rho : array
+        Curvature difference [-], in [0, 1).
+
+    Examples
+    --------
+    >>> s, f = curvature_sum_difference(1.0, 1.0, 0.0, 0.0)
+    >>> float(s), float(f)
+    (2.0, 0.0)
+    """
+    d1 = np.asarray(rho_11, float) - rho_12
+    d2 = np.asarray(rho_21, float) - rho_22
+    total = np.asarray(rho_11, float) + rho_12 + rho_21 + rho_22
+    diff = np.sqrt(np.maximum(d1**2 + d2**2 + 2.0 * d1 * d2 * np.cos(2.0 * np.asarray(plane_angle)), 0.0))
+    return total, diff / total
+
+
+def ball_raceway_curvature(ball_diameter, pitch_diameter, groove_ratio, contact_angle, race):
+    """Curvature sum and difference of a ball on the inner or outer raceway.
+
+    Harris & Kotzalas (2007) Eq. 2.27-2.33 (ball: rho = 2/D in both planes; raceway:
+    rho_II1 = +-(2/D) gamma/(1 -+ gamma) in the rolling plane, rho_II2 = -1/(f D) across the
+    groove; gamma = D cos(alpha)/dm, upper signs inner race).
+
+    Parameters
+    ----------
+    ball_diameter : float or array
+        D [m].
+    pitch_diameter : float or array
+        dm [m].
+    groove_ratio : float or array
+        f = r/D [-], > 0.5.
+    contact_angle : float or array
+        alpha [rad].
+    race : {"inner", "outer"}
+
+    Returns
+    -------
+    sum_rho, f_rho : arrays
+        [1/m], [-].
+
+    Examples
+    --------
+    >>> s, f = ball_raceway_curvature(6e-3, 25.5e-3, 0.52, 0.0, "inner")
+    >>> round(float(s), 2), round(float(f), 5)
+    (448.72, 0.94286)
+    """
+    d = np.asarray(ball_diameter, float)
+    gamma = d * np.cos(contact_angle) / pitch_diameter
+    if race == "inner":
+        rho_rolling = 2.0 / d * gamma / (1.0 - gamma)
+    elif race == "outer":
+        rho_rolling = -2.0 / d * gamma / (1.0 + gamma)
+    else:
+        raise ValueError(f"race = {race!r}: must be 'inner' or 'outer'")
+    rho_groove = -1.0 / (np.asarray(groove_ratio, float) * d)
+    return curvature_sum_difference(2.0 / d, 2.0 / d, rho_rolling, rho_groove)
+
+
+def _f_and_slope(m):
+    """F(rho) and dF/dm for the elliptic parameter m = 1 - 1/kappa^2 (arrays)."""
+    k = ellipkm1(1.0 - m)
+    e = ellipe(m)
+    f = np.empty_like(m)
+    slope = np.empty_like(m)
+    small = m < _SERIES_LIMIT
+    if np.any(small):
+        ms = m[small]
+        powers = ms[:, None] ** np.arange(_N_SERIES - 1)
+        series = powers @ _S
+        dseries = (powers[:, :-1] * np.arange(1, _N_SERIES - 1)) @ _S[1:]
+        es = e[small] / _HALF_PI
+        des = (powers * np.arange(1, _N_SERIES)) @ _E[1:]
+        f[small] = series / es
+        slope[small] = (dseries * es - series * des) / es**2
+    big = ~small
+    if np.any(big):
+        mb, kb, eb = m[big], k[big], e[big]
+        p = 1.0 - mb
+        num = (1.0 + p) * eb - 2.0 * p * kb
+        den = mb * eb
+        dk = (eb - p * kb) / (2.0 * mb * p)
+        de = (eb - kb) / (2.0 * mb)
+        dnum = -eb + (1.0 + p) * de + 2.0 * kb - 2.0 * p * dk
+        dden = eb + mb * de
+        f[big] = num / den
+        slope[big] = (dnum * den - num * dden) / den**2
+    return f, slope
+
+
+def ellipticity(f_rho, method="exact", max_iter=60):
+    """Ellipticity kappa = a/b of the contact ellipse from the curvature difference.
+
+    ``exact`` solves F(rho) = [(kappa^2+1) E - 2K] / [(kappa^2-1) E] (Harris & Kotzalas 2007,
+    Eq. 6.22; source paper Sec. II.A) for kappa to machine precision: safeguarded Newton on
+    m = 1 - 1/kappa^2 started from the Hamrock-Brewe estimate, bracketed by bisection, with
+    a cancellation-free series of the equation below m = 0.5. ``hamrock_brewe`` returns the
+    approximation of :func:`hamrock_brewe`.
+
+    Parameters
+    ----------
+    f_rho : float or array
+        Curvature difference [-], in [0, 1).
+    method : {"exact", "hamrock_brewe"}
+    max_iter : int
+        Iteration cap of the exact solve.
+
+    Returns
+    -------
+    kappa, K, E : arrays
+        Ellipticity [-] and the complete elliptic integrals of the first and second kind.
+
+    Examples
+    --------
+    >>> kappa, k, e = ellipticity(0.9)
+    >>> round(float(kappa), 4)
+    6.7133
+    """
+    f_target = np.asarray(f_rho, dtype=float)
+    if np.any(~np.isfinite(f_target)) or np.any(f_target < 0.0) or np.any(f_target >= 1.0):
+        bad = f_target[~((f_target >= 0.0) & (f_target < 1.0))].ravel()[0]
+        raise ValueError(f"curvature difference F(rho) = {float(bad)!r}: must lie in [0, 1)")
+    if method == "hamrock_brewe":
+        return hamrock_brewe(f_target)
+    if method != "exact":
+        raise ValueError(f"method = {method!r}: must be 'exact' or 'hamrock_brewe'")
+    flat = f_target.ravel()
+    m = np.zeros_like(flat)
+    active = flat > 0.0
+    if np.any(active):
+        m[active] = _solve_m(flat[active], max_iter)
+    p = 1.0 - m
+    kappa = 1.0 / np.sqrt(p)
+    return (kappa.reshape(f_target.shape), ellipkm1(p).reshape(f_target.shape),
+            ellipe(m).reshape(f_target.shape))
+
+
+def _solve_m(target, max_iter):
+    kappa0 = hamrock_brewe(target)[0]
+    m = 1.0 - 1.0 / kappa0**2
+    lo = np.zeros_like(target)
+    hi = np.ones_like(target)
+    for _ in range(max_iter):
+        f, slope = _f_and_slope(m)
+        resid = f - target
+        # F(m) rises monotonically from 0 to 1: shrink the bracket with every evaluation
+        lo = np.where(resid < 0.0, np.maximum(lo, m), lo)
+        hi = np.where(resid > 0.0, np.minimum(hi, m), hi)
+        step = resid / slope
+        m_new = m - step
+        outside = ~((m_new > lo) & (m_new < hi)) | ~np.isfinite(m_new)
+        m_new = np.where(outside, 0.5 * (lo + hi), m_new)
+        done = np.abs(m_new - m) <= 4.0 * _EPS * np.maximum(m, 1e-300)
+        m = m_new
+        if np.all(done | (resid == 0.0)):
+            break
+    return m
+
+
+def hamrock_brewe(f_rho):
+    """Hamrock-Brewe approximation of kappa, K and E (an approximation, not exact).
+
+    Hamrock & Brewe, "Simplified solution for stresses and deformations", J. Lubr. Technol.
+    105 (1983) 171-177: with alpha_r = Ry/Rx = (1 + F)/(1 - F),
+    kappa = alpha_r^(2/pi), E = 1 + (pi/2 - 1)/alpha_r, K = pi/2 + (pi/2 - 1) ln(alpha_r).
+
+    Examples
+    --------
+    >>> kappa, k, e = hamrock_brewe(0.9)
+    >>> round(float(kappa), 3)
+    6.517
+    """
+    f = np.asarray(f_rho, dtype=float)
+    ratio = (1.0 + f) / (1.0 - f)
+    q = _HALF_PI - 1.0
+    return ratio ** (2.0 / np.pi), _HALF_PI + q * np.log(ratio), 1.0 + q / ratio
+
+
+def point_contact(load, sum_rho, f_rho, compliance, method="exact"):
+    """Hertz point contact: semi-axes, approach, max stress and load-deflection constant.
+
+    With s = (3 Q eta / (2 sum_rho))^(1/3) (source paper Eq. 4-5; Harris Eq. 6.38-6.39):
+    a = a* s, b = b* s, a* = (2 kappa^2 E / pi)^(1/3), b* = (2 E / (pi kappa))^(1/3);
+    delta = (delta*/2) s^2 sum_rho with delta* = 2K/(pi a*) (Harris Eq. 6.40-6.43; the source
+    paper's Eq. 6 prints the compliance unsquared inside the cube root, a misprint: its own
+    Eq. 7, the steel form 2.79e-4 delta* Q^(2/3) sum_rho^(1/3), needs it squared);
+    sigma_max = 3Q/(2 pi a b) (Eq. 8); K = Q / delta^1.5.
+
+    Parameters
+    ----------
+    load : float or array
+        Contact load Q [N], >= 0. Zero gives a zero ellipse, zero approach and zero stress.
+    sum_rho : float or array
+        Curvature sum [1/m], > 0.
+    f_rho : float or array
+        Curvature difference [-].
+    compliance : float or array
+        eta = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 [1/Pa].
+    method : {"exact", "hamrock_brewe"}
+        How the ellipticity and elliptic integrals are found.
+
+    Returns
+    -------
+    PointContact
+
+    Examples
+    --------
+    >>> s, f = ball_raceway_curvature(6e-3, 25.5e-3, 0.52, 0.0, "inner")
+    >>> c = point_contact(1000.0, s, f, 2 * (1 - 0.3**2) / 207e9)
+    >>> round(float(c.max_stress) / 1e6, 1)
+    3154.2
+    """
+    q = np.asarray(load, dtype=float)
+    if np.any(q < 0.0) or np.any(~np.isfinite(q)):
+        bad = q[~(q >= 0.0) | ~np.isfinite(q)].ravel()[0]
+        raise ValueError(f"contact load = {float(bad)!r} N: must be >= 0 and finite")
+    kappa, k_int, e_int = ellipticity(f_rho, method)
+    a_star = np.cbrt(2.0 * kappa**2 * e_int / np.pi)
+    b_star = np.cbrt(2.0 * e_int / (np.pi * kappa))
+    delta_star = 2.0 * k_int / (np.pi * a_star)
+    scale = np.cbrt(1.5 * q * compliance / sum_rho)
+    a = a_star * scale
+    b = b_star * scale
+    approach = 0.5 * delta_star * scale**2 * sum_rho
+    area = a * b
+    with np.errstate(invalid="ignore", divide="ignore"):
+        stress = np.where(area > 0.0, 1.5 * q / (np.pi * np.where(area > 0.0, area, 1.0)), 0.0)
+    stiffness = load_deflection_constant(sum_rho, compliance, kappa, k_int, e_int)
+    return PointContact(a, b, approach, stress, kappa * np.ones_like(a), stiffness * np.ones_like(a))
+
+
+def load_deflection_constant(sum_rho, compliance, kappa, k_int, e_int):
+    """K in Q = K delta^1.5 for a point contact [N/m^1.5] (Harris & Kotzalas 2007, Eq. 7.2).
+
+    From delta = (delta*/2) (3 Q eta / (2 sum_rho))^(2/3) sum_rho:
+    K = [(delta*/2)^(3/2) (3 eta / 2) sum_rho^(1/2)]^(-1).
+    """
+    a_star = np.cbrt(2.0 * kappa**2 * e_int / np.pi)
+    delta_star = 2.0 * k_int / (np.pi * a_star)
+    return 1.0 / ((0.5 * delta_star) ** 1.5 * 1.5 * compliance * np.sqrt(sum_rho))
+
+
+def stress_coefficient(sum_rho, f_rho, compliance, method="exact"):
+    """C in sigma_max = C Q^(1/3) [Pa/N^(1/3)]: Eq. 8 with Eq. 4-5, since a, b ~ Q^(1/3)."""
+    kappa, _, e_int = ellipticity(f_rho, method)
+    a_star = np.cbrt(2.0 * kappa**2 * e_int / np.pi)
+    b_star = np.cbrt(2.0 * e_int / (np.pi * kappa))
+    return 1.5 / (np.pi * a_star * b_star * np.cbrt(1.5 * compliance / sum_rho) ** 2)
+
+
+def series_constant(k_inner, k_outer):
+    """Combined constant of two contacts in series, Q = K_b delta^1.5 (source paper Eq. 15).
+
+    K_b = K_i K_o / (K_i^(2/3) + K_o^(2/3))^(3/2), since the approaches add
+    (Harris & Kotzalas 2007, Eq. 7.4).
+
+    Examples
+    --------
+    >>> round(float(series_constant(1.0, 1.0)), 6)
+    0.353553
+    """
+    k_i = np.asarray(k_inner, float)
+    k_o = np.asarray(k_outer, float)
+    return k_i * k_o / (k_i ** (2.0 / 3.0) + k_o ** (2.0 / 3.0)) ** 1.5
+
+
+#: Palmgren's line-contact approach for steel, delta = 3.84e-5 Q^0.9 / l^0.8 (delta, l in mm,
+#: Q in N): Palmgren, *Ball and Roller Bearing Engineering*, 3rd ed. (1959); Harris & Kotzalas
+#: (2007) Eq. 6.51 and Eq. 7.3. Its steel has E = 207 GPa, nu = 0.3 for both bodies.
+PALMGREN_COEFFICIENT_MM = 3.84e-5
+PALMGREN_REFERENCE_COMPLIANCE = 2.0 * (1.0 - 0.3**2) / 207e9
+
+
+def line_contact_constant(length, compliance=PALMGREN_REFERENCE_COMPLIANCE):
+    """K_l in Q = K_l delta^(10/9) for a line contact of length ``length`` [N/m^(10/9)].
+
+    Inverts Palmgren's delta = 3.84e-5 Q^0.9 / l^0.8 (mm, N; Harris & Kotzalas 2007 Eq. 6.51)
+    in SI. Other materials scale with the compliance as (eta/eta_steel)^0.9, the dependence
+    that Palmgren's form delta ~ (Q / (E' l))^0.9 l^0.1 implies dimensionally.
+
+    Parameters
+    ----------
+    length : float or array
+        Effective contact length l [m].
+    compliance : float or array
+        eta = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 [1/Pa].
+
+    Examples
+    --------
+    >>> f"{float(line_contact_constant(11e-3)):.4g}"  # the source paper's K_l is 1.468e9
+    '1.463e+09'
+    """
+    ratio = np.asarray(compliance, float) / PALMGREN_REFERENCE_COMPLIANCE
+    # delta [m] = 1e-3 * c (Q^0.9) (1e3 l)^-0.8 ratio^0.9
+    coefficient = 1e-3 * PALMGREN_COEFFICIENT_MM * 1e3**-0.8 * ratio**0.9
+    return (np.asarray(length, float) ** 0.8 / coefficient) ** (10.0 / 9.0)

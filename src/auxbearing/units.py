@@ -1,0 +1,148 @@
+"""Units at the boundary: parse user values with pint, hand SI floats to the kernels.
+
+Kernels never see pint. Every value a person types passes through :func:`to_si`, which names
+the field in its error. A plain number is accepted only where the caller says which unit it
+means (``default_unit``); TOML values with a dimension must spell their unit ("6 mm").
+"""
+
+from __future__ import annotations
+
+import math
+from numbers import Real
+
+import pint
+
+from auxbearing.errors import InputError
+
+ureg = pint.UnitRegistry()
+ureg.define("rpm = revolution / minute")
+Quantity = ureg.Quantity
+
+#: SI unit of each physical dimension the package reads.
+SI_UNITS: dict[str, str] = {
+    "length": "m",
+    "angle": "rad",
+    "force": "N",
+    "pressure": "Pa",
+    "moment": "N*m",
+    "mass": "kg",
+    "inertia": "kg*m**2",
+    "time": "s",
+    "angular_speed": "rad/s",
+    "damping": "N*s/m",
+    "dimensionless": "",
+}
+
+
+def to_si(field: str, value: object, dimension: str, default_unit: str | None = None) -> float:
+    """Convert a user value to a float in the SI unit of ``dimension``.
+
+    Parameters
+    ----------
+    field : str
+        Name shown in an error message (a TOML key or a command-line option).
+    value : str, int, float or pint.Quantity
+        ``"6 mm"``, ``"1 kN"``, ``"35 deg"``, a Quantity, or a plain number.
+    dimension : str
+        A key of :data:`SI_UNITS`.
+    default_unit : str, optional
+        Unit of a plain number. Without it a plain number is refused for dimensioned fields.
+
+    Returns
+    -------
+    float
+        The value in SI units (m, rad, N, Pa, ...).
+
+    Examples
+    --------
+    >>> to_si("ball_diameter", "6 mm", "length")
+    0.006
+    >>> round(to_si("contact_angle", "35 deg", "angle"), 6)
+    0.610865
+    >>> to_si("ball_load", 1000, "force", default_unit="N")
+    1000.0
+    >>> to_si("ball_diameter", "6 kg", "length")
+    Traceback (most recent call last):
+    ...
+    auxbearing.errors.InputError: ball_diameter = '6 kg': unit kilogram is not a length (use e.g. m, mm, um)
+    """
+    si = SI_UNITS[dimension]
+    if isinstance(value, bool):
+        raise InputError.for_field(field, value, f"must be a {_describe(dimension)}")
+    if isinstance(value, Real):
+        if dimension == "dimensionless":
+            quantity = Quantity(float(value), "")
+        elif default_unit is not None:
+            quantity = Quantity(float(value), default_unit)
+        else:
+            raise InputError.for_field(
+                field, value, f"needs a unit, e.g. '{value} {_example_unit(dimension)}'"
+            )
+    elif isinstance(value, pint.Quantity):
+        quantity = value
+    elif isinstance(value, str):
+        quantity = _parse_string(field, value, dimension, default_unit)
+    else:
+        raise InputError.for_field(field, value, f"must be a {_describe(dimension)}")
+    try:
+        magnitude = float(quantity.to(si).magnitude)
+    except pint.DimensionalityError:
+        raise InputError.for_field(
+            field,
+            value,
+            f"unit {quantity.units} is not a {_describe(dimension)} "
+            f"(use e.g. {_examples(dimension)})",
+        ) from None
+    if math.isnan(magnitude) or math.isinf(magnitude):
+        raise InputError.for_field(field, value, "must be a finite number")
+    return magnitude
+
+
+def _parse_string(field: str, text: str, dimension: str, default_unit: str | None) -> pint.Quantity:
+    try:
+        parsed = ureg.Quantity(text.strip())
+    except Exception:  # pint raises several unrelated types for malformed text
+        raise InputError.for_field(
+            field, text, f"cannot read it as a {_describe(dimension)} such as "
+            f"'{_example_value(dimension)}'"
+        ) from None
+    if not isinstance(parsed, pint.Quantity):  # pint returns a bare number for "5"
+        parsed = Quantity(float(parsed), "")
+    if parsed.dimensionless and dimension != "dimensionless" and str(parsed.units) == "dimensionless":
+        if default_unit is None:
+            raise InputError.for_field(
+                field, text, f"needs a unit, e.g. '{text.strip()} {_example_unit(dimension)}'"
+            )
+        parsed = Quantity(float(parsed.magnitude), default_unit)
+    return parsed
+
+
+_EXAMPLES = {
+    "length": ("m, mm, um", "mm", "6 mm"),
+    "angle": ("deg, rad", "deg", "35 deg"),
+    "force": ("N, kN", "N", "1000 N"),
+    "pressure": ("Pa, MPa, GPa", "GPa", "207 GPa"),
+    "moment": ("N*m, N*mm", "N*m", "2 N*m"),
+    "mass": ("kg, g", "kg", "1.48 kg"),
+    "inertia": ("kg*m**2", "kg*m**2", "3.88e-4 kg*m**2"),
+    "time": ("s, ms", "s", "0.15 s"),
+    "angular_speed": ("rpm, rad/s", "rpm", "6000 rpm"),
+    "damping": ("N*s/m", "N*s/m", "1000 N*s/m"),
+    "dimensionless": ("a plain number", "", "0.52"),
+}
+
+
+def _describe(dimension: str) -> str:
+    return dimension.replace("_", " ")
+
+
+def _examples(dimension: str) -> str:
+    return _EXAMPLES[dimension][0]
+
+
+def _example_unit(dimension: str) -> str:
+    return _EXAMPLES[dimension][1]
+
+
+def _example_value(dimension: str) -> str:
+    return _EXAMPLES[dimension][2]
