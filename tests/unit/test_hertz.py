@@ -1,5 +1,6 @@
 import numpy as np
 import pytest
+from scipy.special import ellipe, ellipk, ellipkm1
 
 from auxbearing.core import hertz
 
@@ -27,19 +28,30 @@ def test_curvature_difference_outside_range_refused(bad):
 
 
 def test_ellipticity_solves_to_machine_precision():
-    # from 1e-3 up: recomputing m = 1 - 1/kappa^2 in the test loses digits for smaller F
-    f = np.r_[np.linspace(1e-3, 0.5, 200), np.linspace(0.5, 0.9999, 500)]
-    kappa, _, _ = hertz.ellipticity(f)
+    """Residual of Harris Eq. 6.22 with scipy's independent ellipk/ellipe (from F = 0.05 up the
+    closed form evaluated here is itself free of cancellation at this level)."""
+    f = np.r_[np.linspace(0.05, 0.5, 200), np.linspace(0.5, 0.9999, 500)]
+    kappa, k, e = hertz.ellipticity(f)
     m = 1 - 1 / kappa**2
-    residual, _ = hertz._f_and_slope(m)
+    np.testing.assert_allclose(k, ellipkm1(1 / kappa**2), rtol=1e-13)
+    np.testing.assert_allclose(e, ellipe(m), rtol=1e-13)
+    residual = ((kappa**2 + 1) * ellipe(m) - 2 * ellipk(m)) / ((kappa**2 - 1) * ellipe(m))
     assert np.max(np.abs(residual - f) / f) < 1e-12
 
 
+def test_ellipticity_near_circular_contacts():
+    # F ~ 3m/8 for small m (series of Eq. 6.22): kappa^2 = 1/(1 - m) ~ 1 + 8F/3
+    f = np.array([1e-10, 1e-8, 1e-6])
+    kappa, _, _ = hertz.ellipticity(f)
+    np.testing.assert_allclose(kappa**2 - 1, 8 * f / 3, rtol=2e-5)
+    assert float(hertz.ellipticity(0.0)[0]) == 1.0
+
+
 def test_series_and_closed_form_agree_where_they_meet():
-    m = np.array([0.5 - 1e-12, 0.5 + 1e-12])
-    f, slope = hertz._f_and_slope(m)
-    assert f[0] == pytest.approx(f[1], rel=1e-11)
-    assert slope[0] == pytest.approx(slope[1], rel=1e-6)
+    below = hertz._curvature_difference_of(0.5 + 1e-12)
+    above = hertz._curvature_difference_of(0.5 - 1e-12)
+    assert below[0] == pytest.approx(above[0], rel=1e-11)
+    assert below[1] == pytest.approx(above[1], rel=1e-6)
 
 
 def test_vectorised_over_arrays_keeps_shape():

@@ -20,7 +20,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy.special import ellipe, ellipkm1
+from numba import njit, prange
 
 _HALF_PI = 0.5 * np.pi
 _EPS = np.finfo(float).eps
@@ -34,7 +34,7 @@ _E = _A / (1.0 - 2.0 * np.arange(_N_SERIES))
 # gives the series of F(rho) * E(m) * 2/pi, free of the cancellation of the closed form at small m.
 _C = 2.0 * _E - 2.0 * _A
 _C[1:] += -_E[:-1] + 2.0 * _A[:-1]
-_S = _C[1:]  # coefficients of N(m)/m, starting at m^0 (which is 0)
+_S = _C[1:].copy()  # coefficients of N(m)/m, starting at m^0 (which is 0)
 _SERIES_LIMIT = 0.5  # below this m the series converges as 0.5^80 and beats the closed form
 
 
@@ -126,44 +126,115 @@ def ball_raceway_curvature(ball_diameter, pitch_diameter, groove_ratio, contact_
     return curvature_sum_difference(2.0 / d, 2.0 / d, rho_rolling, rho_groove)
 
 
-def _f_and_slope(m):
-    """F(rho) and dF/dm for the elliptic parameter m = 1 - 1/kappa^2 (arrays)."""
-    k = ellipkm1(1.0 - m)
-    e = ellipe(m)
-    f = np.empty_like(m)
-    slope = np.empty_like(m)
-    small = m < _SERIES_LIMIT
-    if np.any(small):
-        ms = m[small]
-        powers = ms[:, None] ** np.arange(_N_SERIES - 1)
-        series = powers @ _S
-        dseries = (powers[:, :-1] * np.arange(1, _N_SERIES - 1)) @ _S[1:]
-        es = e[small] / _HALF_PI
-        des = (powers * np.arange(1, _N_SERIES)) @ _E[1:]
-        f[small] = series / es
-        slope[small] = (dseries * es - series * des) / es**2
-    big = ~small
-    if np.any(big):
-        mb, kb, eb = m[big], k[big], e[big]
-        p = 1.0 - mb
-        num = (1.0 + p) * eb - 2.0 * p * kb
-        den = mb * eb
-        dk = (eb - p * kb) / (2.0 * mb * p)
-        de = (eb - kb) / (2.0 * mb)
-        dnum = -eb + (1.0 + p) * de + 2.0 * kb - 2.0 * p * dk
-        dden = eb + mb * de
-        f[big] = num / den
-        slope[big] = (dnum * den - num * dden) / den**2
-    return f, slope
+@njit(cache=True)
+def _elliptic_k_e(p):
+    """K(m) and E(m) at m = 1 - p by the arithmetic-geometric mean.
+
+    Abramowitz & Stegun 17.6: K = pi / (2 AGM(1, sqrt(p))) and
+    E = K (1 - sum_n 2^(n-1) c_n^2), c_0^2 = m. Fed the complementary parameter p directly, so
+    elongated contacts (p -> 0) lose no digits forming 1 - m.
+    """
+    a = 1.0
+    b = np.sqrt(p)
+    total = 0.5 * (1.0 - p)
+    weight = 0.5
+    for _ in range(60):
+        c = 0.5 * (a - b)
+        a, b = 0.5 * (a + b), np.sqrt(a * b)
+        weight *= 2.0
+        total += weight * c * c
+        # the next c is about c^2/(4a): below 1e-8 a it no longer changes a, b or the sum
+        if c <= 1e-8 * a:
+            c = 0.5 * (a - b)
+            a = 0.5 * (a + b)
+            total += 2.0 * weight * c * c
+            break
+    k = np.pi / (2.0 * a)
+    return k, k * (1.0 - total)
+
+
+@njit(cache=True)
+def _curvature_difference_of(p):
+    """F(rho) for kappa = p^(-1/2), its slope dF/dp, and K, E (Harris Eq. 6.22 in p = 1/kappa^2).
+
+    F = [(1 + p) E - 2 p K] / [(1 - p) E]. Below m = 1 - p = 0.5 the closed form cancels
+    (F ~ 3m/8), so a Maclaurin series with exact cancellation-free coefficients is used there.
+    """
+    k, e = _elliptic_k_e(p)
+    m = 1.0 - p
+    if m < _SERIES_LIMIT:
+        series = 0.0
+        dseries = 0.0
+        e_series = 0.0
+        de_series = 0.0
+        power = 1.0
+        for j in range(_N_SERIES - 1):
+            series += _S[j] * power
+            e_series += _E[j] * power
+            if j + 1 < _N_SERIES - 1:
+                dseries += (j + 1) * _S[j + 1] * power
+            de_series += (j + 1) * _E[j + 1] * power
+            power *= m
+        f = series / e_series
+        slope_m = (dseries * e_series - series * de_series) / e_series**2
+        return f, -slope_m, k, e
+    num = (1.0 + p) * e - 2.0 * p * k
+    den = m * e
+    dk = (e - p * k) / (2.0 * m * p)  # dK/dm
+    de = (e - k) / (2.0 * m)  # dE/dm
+    dnum = -e + (1.0 + p) * de + 2.0 * k - 2.0 * p * dk
+    dden = e + m * de
+    return num / den, -(dnum * den - num * dden) / den**2, k, e
+
+
+@njit(cache=True)
+def _solve_p(target, max_iter):
+    """Safeguarded Newton for p = 1/kappa^2 with F(p) = target, started from Hamrock-Brewe."""
+    if target == 0.0:
+        return 1.0, 0.5 * np.pi, 0.5 * np.pi
+    ratio = (1.0 + target) / (1.0 - target)
+    p = ratio ** (-4.0 / np.pi)  # kappa_HB^-2 with kappa_HB = ratio^(2/pi)
+    lo, hi = 0.0, 1.0  # F falls monotonically from 1 at p = 0 to 0 at p = 1
+    k = e = 0.0
+    for _ in range(max_iter):
+        f, slope, k, e = _curvature_difference_of(p)
+        resid = f - target
+        if abs(resid) <= _EPS * target:
+            return p, k, e
+        if resid > 0.0:
+            lo = max(lo, p)
+        else:
+            hi = min(hi, p)
+        p_new = p - resid / slope
+        if not (lo < p_new < hi):
+            p_new = 0.5 * (lo + hi)
+        if abs(p_new - p) <= 2.0 * _EPS * p:
+            p = p_new
+            break
+        p = p_new
+    k, e = _elliptic_k_e(p)
+    return p, k, e
+
+
+@njit(cache=True, parallel=True)
+def _ellipticity_exact(targets, max_iter):
+    n = targets.size
+    kappa = np.empty(n)
+    k_int = np.empty(n)
+    e_int = np.empty(n)
+    for i in prange(n):
+        p, k_int[i], e_int[i] = _solve_p(targets[i], max_iter)
+        kappa[i] = 1.0 / np.sqrt(p)
+    return kappa, k_int, e_int
 
 
 def ellipticity(f_rho, method="exact", max_iter=60):
     """Ellipticity kappa = a/b of the contact ellipse from the curvature difference.
 
     ``exact`` solves F(rho) = [(kappa^2+1) E - 2K] / [(kappa^2-1) E] (Harris & Kotzalas 2007,
-    Eq. 6.22; source paper Sec. II.A) for kappa to machine precision: safeguarded Newton on
-    m = 1 - 1/kappa^2 started from the Hamrock-Brewe estimate, bracketed by bisection, with
-    a cancellation-free series of the equation below m = 0.5. ``hamrock_brewe`` returns the
+    Eq. 6.22; source paper Sec. II.A) for kappa to machine precision: compiled, per-contact
+    safeguarded Newton on p = 1/kappa^2 started from the Hamrock-Brewe estimate and bracketed
+    by bisection; K and E by the arithmetic-geometric mean. ``hamrock_brewe`` returns the
     approximation of :func:`hamrock_brewe`.
 
     Parameters
@@ -193,37 +264,9 @@ def ellipticity(f_rho, method="exact", max_iter=60):
         return hamrock_brewe(f_target)
     if method != "exact":
         raise ValueError(f"method = {method!r}: must be 'exact' or 'hamrock_brewe'")
-    flat = f_target.ravel()
-    m = np.zeros_like(flat)
-    active = flat > 0.0
-    if np.any(active):
-        m[active] = _solve_m(flat[active], max_iter)
-    p = 1.0 - m
-    kappa = 1.0 / np.sqrt(p)
-    return (kappa.reshape(f_target.shape), ellipkm1(p).reshape(f_target.shape),
-            ellipe(m).reshape(f_target.shape))
-
-
-def _solve_m(target, max_iter):
-    kappa0 = hamrock_brewe(target)[0]
-    m = 1.0 - 1.0 / kappa0**2
-    lo = np.zeros_like(target)
-    hi = np.ones_like(target)
-    for _ in range(max_iter):
-        f, slope = _f_and_slope(m)
-        resid = f - target
-        # F(m) rises monotonically from 0 to 1: shrink the bracket with every evaluation
-        lo = np.where(resid < 0.0, np.maximum(lo, m), lo)
-        hi = np.where(resid > 0.0, np.minimum(hi, m), hi)
-        step = resid / slope
-        m_new = m - step
-        outside = ~((m_new > lo) & (m_new < hi)) | ~np.isfinite(m_new)
-        m_new = np.where(outside, 0.5 * (lo + hi), m_new)
-        done = np.abs(m_new - m) <= 4.0 * _EPS * np.maximum(m, 1e-300)
-        m = m_new
-        if np.all(done | (resid == 0.0)):
-            break
-    return m
+    kappa, k_int, e_int = _ellipticity_exact(np.ascontiguousarray(f_target.ravel()), max_iter)
+    shape = f_target.shape
+    return kappa.reshape(shape), k_int.reshape(shape), e_int.reshape(shape)
 
 
 def hamrock_brewe(f_rho):

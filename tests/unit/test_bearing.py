@@ -1,0 +1,113 @@
+"""Bearing model, catalogue and TOML input: every impossible value gets a one-line error."""
+
+import math
+from pathlib import Path
+
+import pytest
+
+from auxbearing import InputError, get_bearing, load_bearing
+from auxbearing.bearing import bearing_from_mapping, bearing_names
+from auxbearing.materials import get_material, material_names
+
+EXAMPLE = Path(__file__).parents[2] / "examples" / "my_bearing.toml"
+
+BASE = {
+    "name": "t", "type": "four_point", "ball_diameter": "6 mm", "pitch_diameter": "25.5 mm",
+    "ball_count": 11, "inner_groove_ratio": 0.52, "outer_groove_ratio": 0.52, "contact_angle": "35 deg",
+    "diametral_clearance": "0 mm",
+    "ball_material": {"elastic_modulus": "207 GPa", "poisson_ratio": 0.3},
+    "ring_material": {"elastic_modulus": "207 GPa", "poisson_ratio": 0.3},
+}
+
+
+def with_(**changes):
+    table = {**BASE, **changes}
+    return {k: v for k, v in table.items() if v is not None}
+
+
+def test_example_file_reads_as_table_i_bearing():
+    b = load_bearing(EXAMPLE)
+    ref = get_bearing("QJ202")
+    assert b.ball_diameter == pytest.approx(6e-3)
+    assert b.contact_angle == pytest.approx(ref.contact_angle)
+    assert b.gamma == pytest.approx(6 * math.cos(math.radians(35)) / 25.5)
+    assert b.curvature_centre_distance == pytest.approx(0.04 * 6e-3)
+
+
+def test_catalogue_has_the_papers_bearings_with_sources():
+    assert {"QJ202", "7202", "7202-40"} <= set(bearing_names())
+    for name in bearing_names():
+        b = get_bearing(name)
+        assert b.source
+    assert get_bearing("7202-40").contact_angle == pytest.approx(math.radians(40))
+    assert get_bearing("QJ202").pairs_per_ball == 2
+    assert get_bearing("7202").pairs_per_ball == 1
+
+
+def test_materials_catalogue():
+    assert {"GCr15", "42CrMo", "M50", "Si3N4"} <= set(material_names())
+    assert get_material("AISI 52100").name == "GCr15"
+    assert get_material("silicon nitride").elastic_modulus > 300e9
+
+
+@pytest.mark.parametrize(
+    ("changes", "fragment"),
+    [
+        ({"inner_groove_ratio": 0.5}, "bearing.inner_groove_ratio = 0.5: must be > 0.5"),
+        ({"outer_groove_ratio": 0.45}, "bearing.outer_groove_ratio = 0.45: must be > 0.5"),
+        ({"ball_count": 14}, "bearing.ball_count = 14: balls overlap on the pitch circle"),
+        ({"ball_count": 2}, "bearing.ball_count = 2: must be a whole number >= 3"),
+        ({"ball_count": 11.5}, "bearing.ball_count = 11.5: must be a whole number >= 3"),
+        ({"contact_angle": "90 deg"}, "bearing.contact_angle = 90.0: must lie in [0, 90) deg"),
+        ({"contact_angle": "-5 deg"}, "bearing.contact_angle = -5.0: must lie in [0, 90) deg"),
+        ({"ball_diameter": "0 mm"}, "bearing.ball_diameter = 0.0: must be a positive finite number"),
+        ({"ball_diameter": "-6 mm"}, "bearing.ball_diameter = -0.006: must be a positive finite number"),
+        ({"ball_diameter": "nan mm"}, "bearing.ball_diameter = 'nan mm': must be a finite number"),
+        ({"ball_diameter": "6 kg"}, "bearing.ball_diameter = '6 kg': unit kilogram is not a length"),
+        ({"ball_diameter": 6}, "bearing.ball_diameter = 6: needs a unit, e.g. '6 mm'"),
+        ({"ball_diameter": "six mm"}, "bearing.ball_diameter = 'six mm': cannot read it"),
+        ({"ball_diameter": None}, "bearing.ball_diameter: missing"),
+        ({"colour": "red"}, "bearing.colour = 'red': unknown key; allowed keys: type, ball_diameter"),
+        ({"type": "tapered"}, "bearing.type = 'tapered': must be one of four_point, angular_contact, deep_groove"),
+        ({"ball_material": "brass"}, "bearing.ball_material = 'brass': unknown; catalogue names are GCr15"),
+        ({"ring_material": {"elastic_modulus": "-1 GPa", "poisson_ratio": 0.3}},
+         "bearing.ring_material.elastic_modulus = -1000000000.0: must be a positive finite number"),
+        ({"ring_material": {"elastic_modulus": "207 GPa", "poisson_ratio": 0.5}},
+         "bearing.ring_material.poisson_ratio = 0.5: must lie in (-1, 0.5)"),
+        ({"ring_material": {"elastic_modulus": "207 GPa"}}, "bearing.ring_material.poisson_ratio: missing"),
+        ({"diametral_clearance": "-1 um"}, "bearing.diametral_clearance = -1e-06: must be >= 0 m"),
+        ({"pitch_diameter": "5 mm"}, "bearing.pitch_diameter = 0.005: must exceed ball_diameter"),
+    ],
+)
+def test_impossible_values_get_one_line_errors(changes, fragment):
+    with pytest.raises(InputError) as info:
+        bearing_from_mapping(with_(**changes))
+    message = str(info.value)
+    assert fragment in message
+    assert "\n" not in message
+
+
+def test_unknown_catalogue_name():
+    with pytest.raises(InputError, match="bearing = 'QJ999': unknown; catalogue names are QJ202"):
+        load_bearing("QJ999")
+
+
+def test_missing_file_and_bad_toml(tmp_path):
+    with pytest.raises(InputError, match="not found"):
+        load_bearing(tmp_path / "nope.toml")
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[bearing\n")
+    with pytest.raises(InputError, match="is not valid TOML"):
+        load_bearing(bad)
+    empty = tmp_path / "empty.toml"
+    empty.write_text("[rotor]\n")
+    with pytest.raises(InputError, match=r"has no \[bearing\] table"):
+        load_bearing(empty)
+
+
+def test_deep_groove_free_contact_angle_from_clearance():
+    b = get_bearing("209")
+    a = b.curvature_centre_distance
+    assert b.free_contact_angle == pytest.approx(math.acos(1 - b.diametral_clearance / (2 * a)))
+    with pytest.raises(InputError, match="deep_groove bearing has contact_angle 0 deg"):
+        b.with_changes(contact_angle=0.3)
