@@ -228,8 +228,70 @@ def _pair(a, r, sign, params):
 
 
 @numba.njit(cache=True)
+def accumulate(disp, params, force, jac, with_jac):
+    """Add the ball-set resultant (and its Jacobian) at ``disp`` into ``force`` and ``jac``.
+
+    Allocation-free core of :func:`ballset_forces` for solvers (zero the outputs first).
+    Returns (max_load [N], max_stress [Pa]).
+    """
+    z = int(params[_Z])
+    n_pairs = int(params[_NP])
+    a0 = params[_A] * math.sin(params[_ALPHA0])
+    r0 = params[_A] * math.cos(params[_ALPHA0]) - 0.5 * params[_PD]
+    ric = params[_RIC]
+    max_load = 0.0
+    max_stress = 0.0
+    for j in range(z):
+        phi = params[int(params[_AZIM]) + j]
+        cphi = math.cos(phi)
+        sphi = math.sin(phi)
+        # d(axial)/d(disp) = ga, d(radial)/d(disp) = gr
+        ga3 = ric * sphi
+        ga4 = -ric * cphi
+        axial = disp[0] + ga3 * disp[3] + ga4 * disp[4]
+        radial = r0 + disp[1] * cphi + disp[2] * sphi
+        for k in range(n_pairs):
+            sign = params[int(params[_SIGNS]) + k]
+            a = sign * a0 + axial
+            s_len, _, q, _, dq_da, dq_dr, sig_i, sig_o = _pair(a, radial, sign, params)
+            if q <= 0.0:
+                continue
+            sn = a / s_len
+            cs = radial / s_len
+            fz = -q * sn
+            fr = -q * cs
+            force[0] += fz
+            force[1] += fr * cphi
+            force[2] += fr * sphi
+            force[3] += fz * ga3
+            force[4] += fz * ga4
+            if with_jac:
+                dfz_da = -(dq_da * sn + q * cs * cs / s_len)
+                dfz_dr = -(dq_dr * sn - q * sn * cs / s_len)
+                dfr_da = -(dq_da * cs - q * sn * cs / s_len)
+                dfr_dr = -(dq_dr * cs + q * sn * sn / s_len)
+                ga = (1.0, 0.0, 0.0, ga3, ga4)
+                gr = (0.0, cphi, sphi, 0.0, 0.0)
+                for m in range(5):
+                    wz = dfz_da * ga[m] + dfz_dr * gr[m]
+                    wr = dfr_da * ga[m] + dfr_dr * gr[m]
+                    for n in range(5):
+                        jac[n, m] += ga[n] * wz + gr[n] * wr
+            if q > max_load:
+                max_load = q
+            if sig_i > max_stress:
+                max_stress = sig_i
+            if sig_o > max_stress:
+                max_stress = sig_o
+    return max_load, max_stress
+
+
+@numba.njit(cache=True)
 def ballset_forces(disp, params):
     """Compiled 5-DOF scalar form: resultant on the inner ring, its Jacobian, max load and stress.
+
+    Source paper Eq. 10-16 generalised to 5 DOF (module docstring); same numbers as the
+    vectorised :func:`ballset_state`.
 
     Parameters
     ----------
@@ -250,54 +312,9 @@ def ballset_forces(disp, params):
     max_stress : float
         Largest Hertz max stress of any contact, inner or outer race [Pa].
     """
-    z = int(params[_Z])
-    n_pairs = int(params[_NP])
-    a0 = params[_A] * math.sin(params[_ALPHA0])
-    r0 = params[_A] * math.cos(params[_ALPHA0]) - 0.5 * params[_PD]
-    ric = params[_RIC]
     force = np.zeros(5)
     jac = np.zeros((5, 5))
-    ga = np.zeros(5)
-    gr = np.zeros(5)
-    max_load = 0.0
-    max_stress = 0.0
-    for j in range(z):
-        phi = params[int(params[_AZIM]) + j]
-        cphi = math.cos(phi)
-        sphi = math.sin(phi)
-        ga[0] = 1.0
-        ga[3] = ric * sphi
-        ga[4] = -ric * cphi
-        gr[1] = cphi
-        gr[2] = sphi
-        axial = disp[0] + ric * (disp[3] * sphi - disp[4] * cphi)
-        radial = r0 + disp[1] * cphi + disp[2] * sphi
-        for k in range(n_pairs):
-            sign = params[int(params[_SIGNS]) + k]
-            a = sign * a0 + axial
-            s_len, _, q, _, dq_da, dq_dr, sig_i, sig_o = _pair(a, radial, sign, params)
-            if q <= 0.0:
-                continue
-            sn = a / s_len
-            cs = radial / s_len
-            fz = -q * sn
-            fr = -q * cs
-            dfz_da = -(dq_da * sn + q * cs * cs / s_len)
-            dfz_dr = -(dq_dr * sn - q * sn * cs / s_len)
-            dfr_da = -(dq_da * cs - q * sn * cs / s_len)
-            dfr_dr = -(dq_dr * cs + q * sn * sn / s_len)
-            for m in range(5):
-                force[m] += fz * ga[m] + fr * gr[m]
-                wz = dfz_da * ga[m] + dfz_dr * gr[m]
-                wr = dfr_da * ga[m] + dfr_dr * gr[m]
-                for n in range(5):
-                    jac[n, m] += ga[n] * wz + gr[n] * wr
-            if q > max_load:
-                max_load = q
-            if sig_i > max_stress:
-                max_stress = sig_i
-            if sig_o > max_stress:
-                max_stress = sig_o
+    max_load, max_stress = accumulate(disp, params, force, jac, True)
     return force, jac, max_load, max_stress
 
 
