@@ -14,8 +14,8 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 study: $(STAMP)
-	$(BIN)/auxbearing contact-sweep --out $(OUT)/contact
-	@echo "Study output: $(OUT)/ (NetCDF data, figures, JSON summaries)"
+	$(BIN)/auxbearing study --out $(OUT)
+	@echo "Study output: $(OUT)/report.html (open it in a browser); data, figures and results.json in $(OUT)/"
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks

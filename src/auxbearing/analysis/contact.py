@@ -154,8 +154,9 @@ def contact_map(
     """
     if ball_load < 0.0 or not math.isfinite(ball_load):
         raise InputError.for_field("ball_load", ball_load, "must be >= 0 N and finite")
-    angles = np.unique(np.r_[np.asarray(contact_angles_deg, float), math.degrees(bearing.contact_angle)])
-    ratios = np.unique(np.r_[np.asarray(groove_ratios, float), bearing.inner_groove_ratio])
+    # rounded so that a grid point and the bearing's own value do not sit 1e-16 apart
+    angles = np.unique(np.round(np.r_[np.asarray(contact_angles_deg, float), math.degrees(bearing.contact_angle)], 9))
+    ratios = np.unique(np.round(np.r_[np.asarray(groove_ratios, float), bearing.inner_groove_ratio], 9))
     if np.any(angles < 0.0) or np.any(angles >= 90.0):
         raise InputError.for_field("contact_angle", float(angles.max()), "must lie in [0, 90) deg")
     if np.any(ratios <= 0.5):

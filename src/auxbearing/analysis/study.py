@@ -1,0 +1,96 @@
+"""The study: every stage of the paper, one report, data and figures, in one call.
+
+Stages are entries in :data:`STAGES` (a registry, not an if/elif chain): each takes the
+:class:`~auxbearing.analysis.study_config.StudyConfig` and returns a report
+:class:`~auxbearing.analysis.report_model.Section`.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from auxbearing import __version__
+from auxbearing.analysis.claims import HOLDS
+from auxbearing.analysis.report_model import Section
+from auxbearing.analysis.study_config import StudyConfig
+from auxbearing.analysis.study_contact import run_contact_stage
+from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+from auxbearing.report import render_report
+
+
+def _contact(config: StudyConfig) -> Section:
+    return run_contact_stage(config.bearing, config.ball_load, config.angle_grid(), config.ratio_grid())
+
+
+#: (key, label shown in the progress bar, stage function)
+STAGES: list[tuple[str, str, Callable[[StudyConfig], Section]]] = [
+    ("contact", "Hertz contact (Fig. 2-4)", _contact),
+]
+
+
+def summary_rows(sections: list[Section]) -> list[list[str]]:
+    """The report's opening table: the paper's headline numbers beside ours."""
+    rows = []
+    for section in sections:
+        for claim in section.claims:
+            if claim.paper != "qualitative":
+                rows.append([claim.statement, claim.paper, claim.ours, claim.verdict])
+    return rows
+
+
+def run_study(config: StudyConfig, out_dir: str | Path, progress: Callable[[str], None] | None = None,
+              stages: list[str] | None = None) -> dict:
+    """Run the study and write report.html, results.json, NetCDF data and PNG/PDF figures to ``out_dir``.
+
+    Parameters
+    ----------
+    config : StudyConfig
+    out_dir : path
+        Output folder; written atomically (nothing is left behind if a stage fails).
+    progress : callable, optional
+        Called with the label of each stage as it starts.
+    stages : list of str, optional
+        Keys of :data:`STAGES` to run (default all).
+
+    Returns
+    -------
+    dict
+        The contents of results.json.
+    """
+    start = time.perf_counter()
+    inputs = config.describe()
+    sections: list[Section] = []
+    timings: dict[str, float] = {}
+    for key, label, stage in STAGES:
+        if stages is not None and key not in stages:
+            continue
+        if progress is not None:
+            progress(label)
+        t0 = time.perf_counter()
+        sections.append(stage(config))
+        timings[key] = time.perf_counter() - t0
+    with atomic_output_dir(out_dir) as tmp:
+        for section in sections:
+            for name, ds in section.datasets.items():
+                save_dataset(ds, tmp / f"{name}.nc", inputs)
+            for fig in section.figures:
+                save_figure(fig.figure, tmp / fig.name, formats=("png", "pdf"))
+        wall = time.perf_counter() - start
+        (tmp / "report.html").write_text(render_report(sections, summary_rows(sections), inputs, config.title, wall))
+        claims = [c.as_dict() for s in sections for c in s.claims]
+        results = {
+            "title": config.title,
+            "auxbearing_version": __version__,
+            "wall_time_s": time.perf_counter() - start,
+            "stage_times_s": timings,
+            "claims": claims,
+            "claims_hold": sum(c["verdict"] == HOLDS for c in claims),
+            "claims_total": len(claims),
+            "assumptions": [a.as_dict() for s in sections for a in s.assumptions],
+            "results": {s.key: s.results for s in sections},
+            "files": [*sorted(p.name for p in tmp.iterdir()), "results.json"],
+        }
+        write_json(results, tmp / "results.json", inputs)
+    return results

@@ -1,0 +1,134 @@
+"""The study's TOML configuration: every section optional, defaults are the paper's.
+
+```toml
+[study]
+title = "My auxiliary bearing study"
+ball_load = "1000 N"                      # contact study load on one ball
+contact_angles = ["10 deg", "75 deg", "1 deg"]   # start, stop, step
+groove_ratios = [0.505, 0.6, 0.0025]             # start, stop, step
+
+[bearing]                 # the four-point bearing: a full [bearing] table, or
+catalogue = "QJ202"       # a catalogue entry
+[comparison_bearing]      # the angular-contact bearing it is compared with
+catalogue = "7202"
+
+[rotor]                   # rotor and drop case: see `auxbearing drop --help`
+[drop]
+```
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from auxbearing.bearing import BearingGeometry, bearing_from_mapping, get_bearing, read_toml
+from auxbearing.errors import InputError
+from auxbearing.units import to_si
+
+SECTIONS = ("study", "bearing", "comparison_bearing", "static", "rotor", "drop", "experiment")
+STUDY_KEYS = ("title", "ball_load", "contact_angles", "groove_ratios")
+DEFAULT_TITLE = "auxbearing study: four-point-contact auxiliary bearings"
+
+
+@dataclass(frozen=True)
+class StudyConfig:
+    """Validated study inputs (SI)."""
+
+    bearing: BearingGeometry
+    comparison: BearingGeometry
+    title: str = DEFAULT_TITLE
+    ball_load: float = 1000.0
+    contact_angles_deg: tuple[float, float, float] = (10.0, 75.0, 1.0)
+    groove_ratios: tuple[float, float, float] = (0.505, 0.6, 0.0025)
+    sections: dict = field(default_factory=dict)  # raw [static], [rotor], [drop], [experiment] tables
+    source: str = "defaults (the paper)"
+
+    def angle_grid(self) -> np.ndarray:
+        """Contact angles of the sweep [deg]."""
+        start, stop, step = self.contact_angles_deg
+        return np.arange(start, stop + 0.5 * step, step)
+
+    def ratio_grid(self) -> np.ndarray:
+        """Groove ratios of the sweep [-]."""
+        start, stop, step = self.groove_ratios
+        return np.arange(start, stop + 0.5 * step, step)
+
+    def describe(self) -> dict:
+        """Inputs for files and the report."""
+        return {
+            "config": self.source,
+            "title": self.title,
+            "ball_load_N": self.ball_load,
+            "contact_angles_deg": list(self.contact_angles_deg),
+            "groove_ratios": list(self.groove_ratios),
+            "four_point_bearing": self.bearing.describe(),
+            "angular_contact_bearing": self.comparison.describe(),
+            **{name: table for name, table in self.sections.items()},
+        }
+
+
+def default_config() -> StudyConfig:
+    """The paper's study: QJ202 against 7202, Table I and Table II."""
+    return StudyConfig(bearing=get_bearing("QJ202"), comparison=get_bearing("7202"))
+
+
+def load_study_config(path: str | Path | None) -> StudyConfig:
+    """Read and validate a study TOML file; ``None`` gives :func:`default_config`."""
+    if path is None:
+        return default_config()
+    data = read_toml(path)
+    unknown = [k for k in data if k not in SECTIONS]
+    if unknown:
+        raise InputError.for_field(unknown[0], "[...]", "unknown section; allowed: " + ", ".join(SECTIONS))
+    study = data.get("study", {})
+    bad = [k for k in study if k not in STUDY_KEYS]
+    if bad:
+        raise InputError.for_field(f"study.{bad[0]}", study[bad[0]], "unknown key; allowed: " + ", ".join(STUDY_KEYS))
+    base = default_config()
+    bearing = _bearing(data.get("bearing"), base.bearing, "bearing")
+    comparison = _bearing(data.get("comparison_bearing"), base.comparison, "comparison_bearing")
+    ball_load = to_si("study.ball_load", study.get("ball_load", "1000 N"), "force")
+    if ball_load <= 0:
+        raise InputError.for_field("study.ball_load", study["ball_load"], "must be > 0 N")
+    angles = _triple("study.contact_angles", study.get("contact_angles"), "angle", base.contact_angles_deg, deg=True)
+    if angles[0] < 0 or angles[1] >= 90:
+        raise InputError.for_field("study.contact_angles", study["contact_angles"], "must lie in [0, 90) deg")
+    ratios = _triple("study.groove_ratios", study.get("groove_ratios"), "dimensionless", base.groove_ratios)
+    if ratios[0] <= 0.5:
+        raise InputError.for_field("study.groove_ratios", study["groove_ratios"], "must start above 0.5")
+    sections = {name: data[name] for name in ("static", "rotor", "drop", "experiment") if name in data}
+    return StudyConfig(bearing=bearing, comparison=comparison, title=str(study.get("title", DEFAULT_TITLE)),
+                       ball_load=ball_load, contact_angles_deg=angles, groove_ratios=ratios,
+                       sections=sections, source=str(path))
+
+
+def _bearing(table: dict | None, default: BearingGeometry, prefix: str) -> BearingGeometry:
+    if table is None:
+        return default
+    if not isinstance(table, dict):
+        raise InputError.for_field(prefix, table, "must be a table")
+    if set(table) == {"catalogue"}:
+        try:
+            return get_bearing(str(table["catalogue"]))
+        except InputError as err:
+            raise InputError(f"{prefix}.catalogue" + str(err).removeprefix("bearing")) from None
+    return bearing_from_mapping(table, name=prefix, prefix=f"{prefix}.")
+
+
+def _triple(field_name, value, dimension, default, deg=False) -> tuple[float, float, float]:
+    if value is None:
+        return default
+    if not isinstance(value, list) or len(value) != 3:
+        raise InputError.for_field(field_name, value, "must be a list [start, stop, step]")
+    numbers = [to_si(f"{field_name}[{i}]", v, dimension) for i, v in enumerate(value)]
+    if deg:
+        numbers = [float(np.degrees(v)) for v in numbers]
+    start, stop, step = numbers
+    if step <= 0 or stop < start:
+        raise InputError.for_field(field_name, value, "needs start <= stop and step > 0")
+    if (stop - start) / step > 2000:
+        raise InputError.for_field(field_name, value, "more than 2000 grid points; take a larger step")
+    return (start, stop, step)

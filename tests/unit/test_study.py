@@ -1,0 +1,81 @@
+"""``auxbearing study``: config, output folder, claims, errors."""
+
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from auxbearing.analysis.claims import VERDICTS
+from auxbearing.analysis.study_config import load_study_config
+from auxbearing.cli.main import cli
+from auxbearing.errors import InputError
+
+EXAMPLE = Path(__file__).parents[2] / "examples" / "my_study.toml"
+
+
+def test_example_config_reads():
+    config = load_study_config(EXAMPLE)
+    assert config.bearing.name.startswith("QJ202 with 25")
+    assert config.comparison.name == "7202-40"
+    assert config.ball_load == pytest.approx(1000.0)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("[stduy]\n", "stduy = '[...]': unknown section; allowed: study, bearing"),
+        ("[study]\nball_lod = '1 kN'\n", "study.ball_lod = '1 kN': unknown key"),
+        ("[study]\nball_load = '1 kg'\n", "study.ball_load = '1 kg': unit kilogram is not a force"),
+        ("[study]\ncontact_angles = ['10 deg', '95 deg', '1 deg']\n", "study.contact_angles"),
+        ("[study]\ngroove_ratios = [0.5, 0.6]\n", "must be a list [start, stop, step]"),
+        ("[bearing]\ncatalogue = 'QJ999'\n", "bearing.catalogue = 'QJ999': unknown"),
+        ("[bearing]\ntype = 'four_point'\n", "bearing.ball_diameter: missing"),
+    ],
+)
+def test_config_mistakes(tmp_path, text, message):
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    with pytest.raises(InputError) as info:
+        load_study_config(path)
+    assert message in str(info.value)
+
+
+def test_cli_user_mistake_exits_2_and_leaves_no_folder(tmp_path):
+    path = tmp_path / "s.toml"
+    path.write_text("[study]\nball_load = 'lots'\n")
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["study", "--config", str(path), "--out", str(out), "--quiet"])
+    assert result.exit_code == 2
+    assert result.output.startswith("error: study.ball_load = 'lots'")
+    assert not out.exists()
+    missing = CliRunner().invoke(cli, ["study", "--config", str(tmp_path / "none.toml"), "--out", str(out)])
+    assert missing.exit_code == 2 and "not found" in missing.output
+
+
+def test_contact_stage_writes_report_and_results(tmp_path):
+    out = tmp_path / "study"
+    result = CliRunner().invoke(cli, ["study", "--stage", "contact", "--out", str(out), "--quiet", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    assert data["claims_total"] >= 9
+    assert all(c["verdict"] in VERDICTS for c in data["claims"])
+    results = json.loads((out / "results.json").read_text())
+    assert results["provenance"]["auxbearing_version"]
+    for name in ("report.html", "contact_map.nc", "fig2_contact_angle.png", "fig2_contact_angle.pdf"):
+        assert (out / name).stat().st_size > 0
+    html = (out / "report.html").read_text()
+    assert "Claims of the paper" in html and "Parameters the paper does not give" in html
+
+
+def test_bearings_lists_catalogue():
+    result = CliRunner().invoke(cli, ["bearings", "--json"])
+    names = {b["name"] for b in json.loads(result.output)["bearings"]}
+    assert {"QJ202", "7202", "7202-40"} <= names
+
+
+@pytest.mark.parametrize("command", ["contact", "contact-sweep", "study", "bearings"])
+def test_every_subcommand_has_help(command):
+    result = CliRunner().invoke(cli, [command, "--help"])
+    assert result.exit_code == 0
+    assert "Usage" in result.output
