@@ -55,8 +55,9 @@ TABLE_POINTS = 721
 _TABLE_MAX = 0.5 * math.pi
 _FD_STEP = 1e-5  # [rad] central-difference step for the node slopes (error ~ h^2 ~ 1e-10)
 
-# Header layout of the packed parameter array.
-_Z, _NP, _A, _ALPHA0, _PD, _RIC, _NT, _H, _SIGNS, _AZIM, _TAB, _HEADER = range(12)
+# Header layout of the packed parameter array (append new slots at the end: compiled callers
+# cached by numba elsewhere keep reading the old slots).
+_Z, _NP, _A, _ALPHA0, _PD, _RIC, _NT, _H, _SIGNS, _AZIM, _TAB, _COS, _SIN, _HEADER = range(14)
 #: Order of the six tables after the header: K_b, dK_b, C_i, dC_i, C_o, dC_o.
 _N_TABLES = 6
 
@@ -131,9 +132,12 @@ def _cached_params(bearing: BearingGeometry, ball_constant: float | None) -> np.
     header[_H] = _TABLE_MAX / (TABLE_POINTS - 1)
     header[_SIGNS] = _HEADER
     header[_AZIM] = _HEADER + signs.size
-    header[_TAB] = _HEADER + signs.size + z
+    header[_COS] = _HEADER + signs.size + z
+    header[_SIN] = _HEADER + signs.size + 2 * z
+    header[_TAB] = _HEADER + signs.size + 3 * z
     azimuths = 2.0 * np.pi * np.arange(z) / z
-    params = np.concatenate([header, signs, azimuths, k_b, dk_b, c_i, dc_i, c_o, dc_o])
+    params = np.concatenate([header, signs, azimuths, np.cos(azimuths), np.sin(azimuths),
+                             k_b, dk_b, c_i, dc_i, c_o, dc_o])
     params.setflags(write=False)
     return params
 
@@ -142,7 +146,8 @@ def kernel_params(bearing: BearingGeometry, ball_constant: float | None = None) 
     """Float64 1-D array packing everything the compiled ball-set kernels need.
 
     Layout: a header (Z, pairs per ball, A [m], alpha0 [rad], Pd [m], r_ic [m], table size,
-    table step [rad], offsets), the pair axial signs, the ball azimuths [rad], then six
+    table step [rad], offsets), the pair axial signs, the ball azimuths [rad] with their
+    cosines and sines (so the kernels need no trigonometry per ball), then six
     tables over |alpha| in [0, 90] deg: K_b (source paper Eq. 15 via Hertz Eq. 6) and the
     inner and outer stress coefficients of sigma_max = C(alpha) Q^(1/3) (Eq. 4-8), each
     followed by its slope d/d alpha.
@@ -202,7 +207,7 @@ def _table(params, which, x):
 
 
 @numba.njit(cache=True)
-def _pair(a, r, sign, params):
+def _pair(a, r, sign, params, with_stress=True):
     """One contact pair: (S, delta, Q, alpha, dQ/da, dQ/dr, sigma_inner, sigma_outer)."""
     s_len = math.sqrt(a * a + r * r)
     delta = s_len - params[_A]
@@ -221,6 +226,8 @@ def _pair(a, r, sign, params):
     dalpha_dr = -sigma * a * inv2
     dq_da = dk * dalpha_da * delta * root + 1.5 * k * root * a / s_len
     dq_dr = dk * dalpha_dr * delta * root + 1.5 * k * root * r / s_len
+    if not with_stress:
+        return s_len, delta, q, alpha, dq_da, dq_dr, 0.0, 0.0
     cube = q ** (1.0 / 3.0)
     c_i, _ = _table(params, 1, x)
     c_o, _ = _table(params, 2, x)
@@ -228,11 +235,11 @@ def _pair(a, r, sign, params):
 
 
 @numba.njit(cache=True)
-def accumulate(disp, params, force, jac, with_jac):
+def accumulate(disp, params, force, jac, with_jac, with_stress=True):
     """Add the ball-set resultant (and its Jacobian) at ``disp`` into ``force`` and ``jac``.
 
     Allocation-free core of :func:`ballset_forces` for solvers (zero the outputs first).
-    Returns (max_load [N], max_stress [Pa]).
+    Returns (max_load [N], max_stress [Pa]); max_stress is 0 when ``with_stress`` is False.
     """
     z = int(params[_Z])
     n_pairs = int(params[_NP])
@@ -242,9 +249,8 @@ def accumulate(disp, params, force, jac, with_jac):
     max_load = 0.0
     max_stress = 0.0
     for j in range(z):
-        phi = params[int(params[_AZIM]) + j]
-        cphi = math.cos(phi)
-        sphi = math.sin(phi)
+        cphi = params[int(params[_COS]) + j]
+        sphi = params[int(params[_SIN]) + j]
         # d(axial)/d(disp) = ga, d(radial)/d(disp) = gr
         ga3 = ric * sphi
         ga4 = -ric * cphi
@@ -253,7 +259,7 @@ def accumulate(disp, params, force, jac, with_jac):
         for k in range(n_pairs):
             sign = params[int(params[_SIGNS]) + k]
             a = sign * a0 + axial
-            s_len, _, q, _, dq_da, dq_dr, sig_i, sig_o = _pair(a, radial, sign, params)
+            s_len, _, q, _, dq_da, dq_dr, sig_i, sig_o = _pair(a, radial, sign, params, with_stress)
             if q <= 0.0:
                 continue
             sn = a / s_len
@@ -357,9 +363,8 @@ def radial_support(dx: float, dy: float, params: np.ndarray) -> tuple[float, flo
     max_load = 0.0
     max_stress = 0.0
     for j in range(z):
-        phi = params[int(params[_AZIM]) + j]
-        cphi = math.cos(phi)
-        sphi = math.sin(phi)
+        cphi = params[int(params[_COS]) + j]
+        sphi = params[int(params[_SIN]) + j]
         radial = r0 + dx * cphi + dy * sphi
         for k in range(n_pairs):
             sign = params[int(params[_SIGNS]) + k]
