@@ -151,7 +151,7 @@ def check(param: Param, value: object, field: str | None = None) -> None:
         raise InputError.for_field(name, value, "is required")
     if isinstance(value, bool) or not isinstance(value, (int, float)) or math.isnan(value):
         raise InputError.for_field(name, value, f"must be a number in {param.display_unit or 'SI'}")
-    shown = _shown(param, value)
+    shown = display_value(param, value)
     if math.isinf(value):
         raise InputError.for_field(name, shown, "must be finite")
     rule = param.rule
@@ -165,9 +165,9 @@ def check(param: Param, value: object, field: str | None = None) -> None:
         raise InputError.for_field(name, shown, "must lie in (0, 0.01]")
 
 
-def _shown(param: Param, value: float) -> object:
+def display_value(param: Param, value: float) -> object:
     """The value in the parameter's display unit, as a user would have typed it."""
-    if not param.display_unit or param.dimension in _EXTRA_UNITS:
+    if not param.display_unit:
         return value
     si = SI_UNITS.get(param.dimension) or _EXTRA_UNITS[param.dimension][0]
     try:
