@@ -286,7 +286,9 @@ def detect_whirl(t: np.ndarray, x: np.ndarray, y: np.ndarray, clearance: float, 
     ('backward', 50.0)
     """
     keep = t >= start
-    z = (x[keep] + 1j * y[keep]) * (1.0 if spin >= 0 else -1.0)
+    z = x[keep] + 1j * y[keep]
+    if spin < 0:  # mirror the orbit so that positive frequencies always mean "with the spin"
+        z = np.conj(z)
     out = {"whirl": "none", "whirl_frequency_Hz": None, "whirl_rms_um": 0.0, "forward_power_fraction": None}
     if z.size < 16:
         return out
