@@ -1,0 +1,245 @@
+"""Measured rotor drops in: CSV and NetCDF readers with the checks a test-rig file needs.
+
+A measured drop is the journal centre (x, y) recorded by two displacement sensors over time,
+optionally with the rotor speed (source paper Sec. III, Fig. 13). Both readers return the same
+:class:`xarray.Dataset` in SI units (time [s], x and y [m], speed [rad/s]) so the rest of the
+pipeline never sees a unit. Every problem with the file is an :class:`InputError` of one line
+naming the column and the file line (CSV) or the index (NetCDF).
+
+CSV format (see docs/experiment.md)::
+
+    # lines starting with '#' are comments; '# key = value' lines become metadata
+    time [s], x [um], y [um], speed [rpm]
+    0.000000, 12.31, -4.02, 6000.2
+
+The unit of each column is written in brackets in the header or given as an option
+(``units={"x": "um"}``); a column without a unit is refused. Names are matched without
+regard to case; ``t`` is an alias of ``time``, ``omega`` and ``rpm`` of ``speed``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from auxbearing.errors import InputError
+from auxbearing.units import to_si
+
+#: Dimension of each channel (keys of :data:`auxbearing.units.SI_UNITS`), required or not.
+CHANNELS = {"time": ("time", True), "x": ("length", True), "y": ("length", True),
+            "speed": ("angular_speed", False)}
+_ALIASES = {"t": "time", "omega": "speed", "rpm": "speed", "spin": "speed"}
+_HEADER = re.compile(r"^\s*([A-Za-z_][\w\-]*)\s*(?:\[([^\]]*)\])?\s*$")
+#: Fewest samples a drop record must have.
+MIN_SAMPLES = 64
+#: Largest relative spread of the sampling interval accepted as uniform sampling.
+UNIFORM_TOLERANCE = 0.01
+#: Slowest sampling that can still see an impact: the rotor/race contact lasts about 0.2 ms
+#: (half the ~0.4 ms contact period, NOTES item 7), so below 5 kHz an impact is one sample or none.
+MIN_SAMPLING_RATE = 5e3
+
+
+def _unit_scale(column: str, unit: str, dimension: str) -> float:
+    """SI value of one ``unit`` of ``column``; the error names the column."""
+    return to_si(f"column {column!r} unit", f"1 {unit}", dimension)
+
+
+def _channel(name: str) -> str | None:
+    key = name.strip().lower()
+    key = _ALIASES.get(key, key)
+    return key if key in CHANNELS else None
+
+
+def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: str | None = None) -> xr.Dataset:
+    """Read a measured drop from a CSV file and check it.
+
+    Parameters
+    ----------
+    path : path
+        The file (format in the module docstring).
+    units : dict, optional
+        Unit of a channel (``{"x": "um", "time": "ms"}``) when the header has none; a unit in
+        the header wins only when it agrees, otherwise the option is an error.
+    delimiter : str, optional
+        Field separator; default: a comma if the header has one, else whitespace.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``x``, ``y`` [m] (and ``speed`` [rad/s]) over ``time`` [s]; attrs: ``source_file``,
+        ``sampling_rate_Hz`` and every ``# key = value`` comment of the file.
+
+    Raises
+    ------
+    InputError
+        One line naming the column and the file line: missing file or header, unknown or
+        missing unit, a field that is not a number, a missing value, time not increasing,
+        non-uniform or too slow sampling, too few samples.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError.for_field("measured file", str(path), "not found")
+    units = {(_channel(k) or k): v for k, v in (units or {}).items()}
+    meta: dict[str, str] = {}
+    header: list[str] | None = None
+    header_line = 0
+    rows: list[list[str]] = []
+    line_numbers: list[int] = []
+    with path.open(encoding="utf-8-sig") as handle:
+        for number, line in enumerate(handle, start=1):
+            text = line.strip()
+            if not text:
+                continue
+            if text.startswith("#"):
+                key, sep, value = text.lstrip("#").partition("=")
+                if sep and key.strip():
+                    meta[key.strip()] = value.strip()
+                continue
+            if header is None:
+                if delimiter is None:
+                    delimiter = "," if "," in text else (";" if ";" in text else None)
+                header = [h.strip() for h in (text.split(delimiter) if delimiter else text.split())]
+                header_line = number
+                continue
+            fields = [f.strip() for f in (text.split(delimiter) if delimiter else text.split())]
+            if len(fields) != len(header):
+                raise InputError(f"{path.name}: line {number}: {len(fields)} fields, the header (line "
+                                 f"{header_line}) has {len(header)}")
+            rows.append(fields)
+            line_numbers.append(number)
+    if header is None:
+        raise InputError.for_field("measured file", str(path), "has no header line such as 'time [s], x [um], y [um]'")
+    columns: dict[str, tuple[int, float]] = {}
+    for index, label in enumerate(header):
+        match = _HEADER.match(label)
+        name = match.group(1) if match else label
+        channel = _channel(name)
+        if channel is None:
+            continue  # other channels (e.g. a trigger) are allowed and ignored
+        if channel in columns:
+            raise InputError(f"{path.name}: column {label!r}: channel {channel!r} appears twice in the header")
+        unit = (match.group(2) or "").strip() if match else ""
+        option = units.get(channel)
+        if option and unit and _unit_scale(label, unit, CHANNELS[channel][0]) != _unit_scale(
+                label, option, CHANNELS[channel][0]):
+            raise InputError(f"{path.name}: column {label!r}: header unit {unit!r} contradicts the option {option!r}")
+        unit = unit or option or ""
+        if not unit:
+            raise InputError(f"{path.name}: column {label!r} (line {header_line}) has no unit: write e.g. "
+                             f"'{name} [{'s' if channel == 'time' else 'rpm' if channel == 'speed' else 'um'}]' "
+                             f"or give it as an option")
+        columns[channel] = (index, _unit_scale(label, unit, CHANNELS[channel][0]))
+    for channel, (_, required) in CHANNELS.items():
+        if required and channel not in columns:
+            raise InputError(f"{path.name}: no {channel!r} column in the header (line {header_line}); "
+                             f"found {', '.join(header)}")
+    data = {}
+    for channel, (index, scale) in columns.items():
+        values = np.empty(len(rows))
+        for k, row in enumerate(rows):
+            text = row[index]
+            if text == "" or text.lower() in ("nan", "na", "null", "none"):
+                raise InputError(f"{path.name}: column {header[index]!r}, line {line_numbers[k]}: missing value")
+            try:
+                values[k] = float(text)
+            except ValueError:
+                raise InputError(f"{path.name}: column {header[index]!r}, line {line_numbers[k]}: "
+                                 f"{text!r} is not a number") from None
+            if not math.isfinite(values[k]):
+                raise InputError(f"{path.name}: column {header[index]!r}, line {line_numbers[k]}: "
+                                 f"{text!r} is not finite")
+        data[channel] = values * scale
+    where = [f"line {n}" for n in line_numbers]
+    return _checked(data, where, path.name, {h: h for h in header}, meta)
+
+
+def read_netcdf(path: str | Path, units: dict[str, str] | None = None) -> xr.Dataset:
+    """Read a measured drop from NetCDF: variables ``x``, ``y`` (optional ``speed``) over ``time``.
+
+    Units come from each variable's ``units`` attribute (and the time coordinate's), or from
+    ``units``; a NetCDF time coordinate decoded to dates is refused (store seconds).
+
+    Returns and raises as :func:`read_csv`; rows are named by their index along ``time``.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError.for_field("measured file", str(path), "not found")
+    try:
+        raw = xr.load_dataset(path, decode_times=False)
+    except Exception as err:  # netCDF4/h5py raise several unrelated types for a bad file
+        raise InputError.for_field("measured file", str(path), f"is not a readable NetCDF file ({err})") from None
+    units = {(_channel(k) or k): v for k, v in (units or {}).items()}
+    names = {(_channel(str(k)) or str(k)): str(k) for k in [*raw.data_vars, *raw.coords]}
+    data: dict[str, np.ndarray] = {}
+    for channel, (dimension, required) in CHANNELS.items():
+        if channel not in names:
+            if required:
+                raise InputError(f"{path.name}: no {channel!r} variable; found {', '.join(map(str, raw.variables))}")
+            continue
+        var = raw[names[channel]]
+        if var.ndim != 1:
+            raise InputError(f"{path.name}: variable {names[channel]!r} has dims {var.dims}; it must be 1-D over time")
+        unit = str(var.attrs.get("units", "")).strip() or units.get(channel, "")
+        if not unit:
+            raise InputError(f"{path.name}: variable {names[channel]!r} has no 'units' attribute; give its unit "
+                             "as an option")
+        values = np.asarray(var.values, float)
+        bad = np.nonzero(~np.isfinite(values))[0]
+        if bad.size:
+            raise InputError(f"{path.name}: variable {names[channel]!r}, index {bad[0]}: missing value")
+        data[channel] = values * _unit_scale(names[channel], unit, dimension)
+    sizes = {c: v.size for c, v in data.items()}
+    if len(set(sizes.values())) != 1:
+        raise InputError(f"{path.name}: channels have different lengths {sizes}")
+    meta = {str(k): str(v) for k, v in raw.attrs.items()}
+    return _checked(data, [f"index {k}" for k in range(sizes["time"])], path.name,
+                    {c: names[c] for c in data}, meta)
+
+
+def read_measured(path: str | Path, units: dict[str, str] | None = None) -> xr.Dataset:
+    """A measured drop from ``.nc`` / ``.nc4`` / ``.cdf`` (NetCDF) or any other file as CSV."""
+    suffix = Path(path).suffix.lower()
+    if suffix in (".nc", ".nc4", ".cdf", ".netcdf"):
+        return read_netcdf(path, units)
+    return read_csv(path, units)
+
+
+def _checked(data: dict[str, np.ndarray], where: list[str], name: str, labels: dict, meta: dict) -> xr.Dataset:
+    """Check time and sampling, then build the Dataset (SI)."""
+    t = data["time"]
+    label = labels.get("time", "time")
+    if t.size < MIN_SAMPLES:
+        raise InputError(f"{name}: {t.size} samples; a drop record needs at least {MIN_SAMPLES}")
+    step = np.diff(t)
+    bad = np.nonzero(step <= 0.0)[0]
+    if bad.size:
+        k = bad[0] + 1
+        raise InputError(f"{name}: column {label!r}, {where[k]}: time {t[k]:.9g} s does not increase "
+                         f"(previous {t[k - 1]:.9g} s)")
+    dt = float(np.median(step))
+    spread = np.abs(step / dt - 1.0)
+    worst = int(np.argmax(spread))
+    if spread[worst] > UNIFORM_TOLERANCE:
+        raise InputError(f"{name}: column {label!r}, {where[worst + 1]}: sampling interval {step[worst]:.6g} s "
+                         f"differs from the median {dt:.6g} s by more than {100 * UNIFORM_TOLERANCE:g} % "
+                         "(resample to a uniform rate first)")
+    rate = 1.0 / dt
+    if rate < MIN_SAMPLING_RATE:
+        raise InputError(f"{name}: column {label!r}: sampling rate {rate:.4g} Hz is below {MIN_SAMPLING_RATE:g} Hz, "
+                         "too slow to resolve impacts lasting about 0.2 ms")
+    coords = {"time": ("time", t, {"units": "s", "long_name": "Time of the record"})}
+    variables = {
+        "x": ("time", data["x"], {"units": "m", "long_name": "Journal centre x as measured (sensor frame)"}),
+        "y": ("time", data["y"], {"units": "m", "long_name": "Journal centre y as measured (sensor frame, up)"}),
+    }
+    if "speed" in data:
+        variables["speed"] = ("time", data["speed"], {"units": "rad/s", "long_name": "Rotor speed as measured"})
+    ds = xr.Dataset(variables, coords=coords)
+    ds.attrs.update({k: v for k, v in meta.items() if k not in ("source_file", "sampling_rate_Hz")})
+    ds.attrs["source_file"] = name
+    ds.attrs["sampling_rate_Hz"] = rate
+    return ds

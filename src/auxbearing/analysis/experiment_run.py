@@ -1,0 +1,239 @@
+"""The whole experiment pipeline in one call: measured drop in; Datasets, a summary and figures out.
+
+Steps (see :mod:`auxbearing.analysis.experiment` and :mod:`auxbearing.analysis.experiment_fit`):
+read and check the file, pre-process, fit the uncertain parameters, estimate force and stress
+from the measured orbit, simulate the same case (as configured, and as fitted), and lay the
+peaks side by side. The simulations are also put through the measurement pipeline (sampled,
+filtered, force from the orbit) so that "measured" and "simulated" are compared like with like.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import replace
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
+
+from auxbearing.analysis.drop import DropCase, Rotor, build_model
+from auxbearing.analysis.experiment import Preprocessing, contact_from_orbit, orbit_features, preprocess
+from auxbearing.analysis.experiment_fit import FitOptions, fit_parameters, simulate_like_measurement
+from auxbearing.analysis.experiment_io import read_measured
+from auxbearing.bearing import BearingGeometry, load_bearing
+from auxbearing.plots.experiment import plot_fit_window, plot_force_stress, plot_orbits
+
+#: Peak quantities compared in the table: (summary key, label, format).
+PEAK_ROWS = (
+    ("peak_contact_force_N", "Peak rotor/race contact force [N]", "{:.0f}"),
+    ("peak_ball_stress_MPa", "Peak ball contact stress [MPa]", "{:.0f}"),
+    ("peak_ball_load_N", "Peak ball contact-pair load [N]", "{:.0f}"),
+    ("impacts", "Impacts", "{:d}"),
+    ("first_impact_ms", "First impact [ms after the drop]", "{:.2f}"),
+    ("whirl", "Whirl", "{}"),
+    ("whirl_frequency_Hz", "Whirl frequency [Hz]", "{:.0f}"),
+)
+
+
+class ExperimentResult(NamedTuple):
+    """What :func:`run_experiment` returns (unpacks as ``datasets, summary, figures``)."""
+
+    datasets: dict[str, xr.Dataset]
+    summary: dict
+    figures: dict[str, Figure]
+
+
+def _fmt(fmt: str, value: object) -> str:
+    if value is None:
+        return "-"
+    try:
+        return fmt.format(value)
+    except (ValueError, TypeError):
+        return str(value)
+
+
+def peak_table(columns: dict[str, dict]) -> dict:
+    """Rows of peak values per column, and the difference of each simulation from the measurement [%]."""
+    names = list(columns)
+    rows = []
+    for key, label, fmt in PEAK_ROWS:
+        row = [label, *(_fmt(fmt, columns[n].get(key)) for n in names)]
+        ref = columns[names[0]].get(key)
+        for n in names[1:]:
+            other = columns[n].get(key)
+            numeric = isinstance(ref, (int, float)) and isinstance(other, (int, float)) and ref
+            row.append(f"{100.0 * (other / ref - 1.0):+.1f} %" if numeric else "-")
+        rows.append(row)
+    return {"columns": ["", *names, *(f"{n} vs {names[0]}" for n in names[1:])], "rows": rows}
+
+
+def _truth(attrs: dict) -> dict:
+    """True values written in a SYNTHETIC file's header (``true_*`` keys), as floats where they are numbers."""
+    out = {}
+    for key, value in attrs.items():
+        if key.startswith("true_"):
+            try:
+                out[key[5:]] = float(value)
+            except (TypeError, ValueError):
+                out[key[5:]] = value
+    return out
+
+
+def run_experiment(
+    measured: str | Path | xr.Dataset,
+    bearing: str | BearingGeometry = "QJ202",
+    rotor: Rotor | None = None,
+    case: DropCase | None = None,
+    preprocessing: Preprocessing | None = None,
+    fit: bool = True,
+    fit_options: FitOptions | None = None,
+    clearance: float | None = None,
+    progress: Callable[[float, str], None] | None = None,
+) -> ExperimentResult:
+    """Run the experiment pipeline on a measured drop (source paper Sec. III).
+
+    Parameters
+    ----------
+    measured : path or xarray.Dataset
+        CSV or NetCDF file (:mod:`auxbearing.analysis.experiment_io`) or what its readers return.
+    bearing : str or BearingGeometry
+        The auxiliary bearing of the test (catalogue name, TOML file or geometry).
+    rotor, case : optional
+        The simulated case (defaults: Table II). A measured speed channel replaces ``case.speed``
+        by the speed at the drop; the start position comes from the levitated stretch.
+    preprocessing : Preprocessing, optional
+    fit : bool
+        Fit friction, clearance and unbalance phase (and the drop moment) to the opening orbit.
+    fit_options : FitOptions, optional
+    clearance : float, optional
+        Clearance s [m] for the force estimate; default: the fitted one, else ``case.clearance``.
+    progress : callable, optional
+        Called with (fraction done, label of the next step).
+
+    Returns
+    -------
+    ExperimentResult
+        ``datasets``: ``measured`` (orbit, force, ball loads and stress over time since the
+        drop) and ``simulated_<label>`` (:func:`auxbearing.analysis.drop.run_drop` output);
+        ``summary``: JSON-ready; ``figures``: orbits, force/stress and (with the fit) the fit window.
+    """
+    def step(fraction: float, label: str) -> None:
+        if progress is not None:
+            progress(fraction, label)
+
+    step(0.0, "reading")
+    data = measured if isinstance(measured, xr.Dataset) else read_measured(measured)
+    bearing = load_bearing(bearing)
+    rotor = rotor or Rotor()
+    case = case or DropCase()
+    orbit, info = preprocess(data, preprocessing)
+    if "speed" in orbit:
+        near = np.abs(orbit.time.values) <= 1e-3
+        case = replace(case, speed=float(np.median(orbit.speed.values[near])))
+    case = replace(case, start_x=info["start_x_m"], start_y=info["start_y_m"])
+    spin = case.speed
+    fitted = None
+    if fit:
+        step(0.05, "fitting friction, clearance and unbalance phase")
+        fitted = fit_parameters(orbit, info, bearing, rotor, case, fit_options)
+        shift = fitted["drop_time_s"] - info["drop_time_s"]
+        orbit = orbit.assign_coords(time=orbit.time - shift)
+        orbit.time.attrs.update(units="s", long_name="Time since the (fitted) drop")
+        info["drop_time_s"] = fitted["drop_time_s"]
+    if clearance is not None:
+        s_used, s_source = clearance, "given"
+    elif fitted is not None:
+        s_used, s_source = fitted["case"].clearance, "fitted"
+    else:
+        s_used, s_source = case.clearance, "configured"
+    step(0.45, "force and stress from the measured orbit")
+    model = build_model(bearing, rotor, replace(case, clearance=s_used))
+    measured_ds, measured_summary = orbit_features(orbit, s_used, model.line_stiffness, model.ballset,
+                                                   case.line_damping, info["noise_filtered_m"], spin)
+    dt = float(np.median(np.diff(orbit.time.values)))
+    after = orbit.time.values >= 0.0
+    sensitivity = {}
+    for ds_um in (-1.0, 1.0):
+        c = contact_from_orbit(orbit.x.values[after], orbit.y.values[after], s_used + ds_um * 1e-6,
+                               model.line_stiffness, model.ballset, case.line_damping, dt)
+        sensitivity[f"{ds_um:+.0f}"] = (float(c["contact_force"].max()), float(c["max_ball_stress"].max() / 1e6))
+    measured_summary["clearance_used_um"] = s_used * 1e6
+    measured_summary["clearance_source"] = s_source
+    measured_summary["peak_stress_if_clearance_minus_1um_MPa"] = sensitivity["-1"][1]
+    measured_summary["peak_stress_if_clearance_plus_1um_MPa"] = sensitivity["+1"][1]
+    measured_summary["peak_force_if_clearance_minus_1um_N"] = sensitivity["-1"][0]
+    measured_summary["peak_force_if_clearance_plus_1um_N"] = sensitivity["+1"][0]
+    cases = {"configured": case}
+    if fitted is not None:
+        cases["fitted"] = fitted["case"]
+    datasets = {"measured": measured_ds}
+    sims, columns = {}, {"measured": measured_summary}
+    for k, (label, sim_case) in enumerate(cases.items()):
+        step(0.55 + 0.2 * k, f"simulating the {label} case")
+        sim_ds, sim_summary, seen = simulate_like_measurement(bearing, rotor, sim_case, orbit, info["cutoff_Hz"])
+        sim_model = build_model(bearing, rotor, sim_case)
+        _, seen_summary = orbit_features(seen, sim_case.clearance, sim_model.line_stiffness, sim_model.ballset,
+                                         sim_case.line_damping, info["noise_filtered_m"], spin)
+        sims[f"simulated, {label}"] = sim_ds
+        datasets[f"simulated_{label}"] = sim_ds
+        columns[f"sim {label}"] = sim_summary
+        if label == "fitted" or fitted is None:
+            columns[f"sim {label}, as measured"] = seen_summary
+    step(0.95, "figures")
+    synthetic = str(data.attrs.get("synthetic", "")).lower() in ("true", "1", "yes")
+    label = f"{bearing.name}: {'SYNTHETIC ' if synthetic else ''}measured drop"
+    figures = {
+        "experiment_orbits": plot_orbits(orbit, sims, s_used, f"{label}: orbits in the clearance circle",
+                                         {f"simulated, {k}": c.clearance for k, c in cases.items()}),
+        "experiment_force_stress": plot_force_stress(measured_ds, sims, f"{label}: force and stress"),
+    }
+    summary = {
+        "bearing": bearing.name,
+        "source_file": data.attrs.get("source_file"),
+        "synthetic": synthetic,
+        "preprocessing": {k: v for k, v in info.items() if k != "circle"} | {"circle": info.get("circle")},
+        "speed_at_drop_rpm": spin * 30.0 / math.pi,
+        "measured": measured_summary,
+        "simulated": {k: v for k, v in columns.items() if k != "measured"},
+        "peak_table": peak_table(columns),
+    }
+    if fitted is not None:
+        tau, sim_xy, meas_xy = fitted.pop("fitted_orbit")
+        figures["experiment_fit_window"] = plot_fit_window(tau, sim_xy, meas_xy, f"{label}: fitted stretch")
+        summary["fit"] = {k: v for k, v in fitted.items() if k != "case"}
+    truth = _truth(data.attrs)
+    if truth:
+        summary["truth"] = truth
+        if fitted is not None:
+            summary["recovery"] = recovery_table(fitted, truth)
+    measured_ds.attrs.update(
+        title=label, synthetic=int(synthetic), bearing=bearing.describe(), source_file=str(data.attrs.get(
+            "source_file", "")), clearance_m=s_used, clearance_source=s_source,
+        offset_x_m=info["offset_x_m"], offset_y_m=info["offset_y_m"], drop_time_s=info["drop_time_s"],
+        method="force and stress from the orbit: quasi-static series split of line contact (Eq. 19) and ball set "
+               "(Eq. 10-16, 22); see auxbearing.analysis.experiment")
+    step(1.0, "done")
+    return ExperimentResult(datasets, summary, figures)
+
+
+def recovery_table(fitted: dict, truth: dict) -> list[dict]:
+    """Recovered against true values of a SYNTHETIC record (fitted parameters with a true value)."""
+    rows = []
+    pairs = (("sliding_friction", "sliding_friction", 1.0, "-"), ("clearance", "clearance_m", 1e6, "um"),
+             ("unbalance_phase", "unbalance_phase_deg", None, "deg"))
+    for name, key, factor, unit in pairs:
+        if key not in truth:
+            continue
+        p = fitted["parameters"][name]
+        true = truth[key] if factor is None else truth[key] * factor
+        value = p["value_shown"]
+        if factor is None:  # a phase: compare on the circle
+            diff = (value - true + 180.0) % 360.0 - 180.0
+        else:
+            diff = value - true
+        rows.append({"parameter": name, "unit": unit, "true": true, "recovered": value, "std": p["std_shown"],
+                     "error": diff, "start": p["start"] * (factor or 180.0 / math.pi)})
+    return rows
