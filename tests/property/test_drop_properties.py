@@ -5,6 +5,7 @@ tolerance; with friction, damping and unbalance off the mechanical energy stays 
 no unbalance the rotor comes to rest where statics puts it.
 """
 
+import itertools
 import math
 
 import numpy as np
@@ -37,7 +38,7 @@ def test_peaks_converge_as_the_tolerance_tightens(name):
     for tol in (1e-5, 1e-6, 1e-7):
         _, s = ad.run_drop(name, None, ad.DropCase(rtol=tol, atol=tol, output_step=1e-4))
         out.append(_peaks(s))
-    for coarse, fine in zip(out, out[1:], strict=False):
+    for coarse, fine in itertools.pairwise(out):
         np.testing.assert_allclose(coarse, fine, rtol=1e-2)
     np.testing.assert_allclose(out[1], out[2], rtol=1e-4)  # much better than required
 

@@ -1,6 +1,7 @@
 """Unit tests of the rotor-drop model: forces by free-body sketch, inputs, integrator, outputs."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -213,7 +214,7 @@ def test_rotor_radius_plus_clearance_must_equal_bore_radius():
         ad.build_model(QJ202, ad.Rotor(radius=7.0e-3), ad.DropCase())
     m = ad.build_model(QJ202, ad.Rotor(radius=7.4e-3), ad.DropCase(clearance=1e-4))
     assert m.rotor_radius == pytest.approx(7.4e-3)
-    with pytest.raises(InputError, match="drop.clearance = '8 mm': must be below the race bore radius"):
+    with pytest.raises(InputError, match=re.escape("drop.clearance = '8 mm': must be below the race bore radius")):
         ad.build_model(QJ202, ad.Rotor(), ad.DropCase(clearance=8e-3))
 
 
@@ -242,3 +243,28 @@ def test_toml_sections_with_units(tmp_path):
 def test_static_safety_factor_iso76():
     assert ad.static_safety_factor(4200e6) == pytest.approx(1.0)
     assert ad.static_safety_factor(0.0) is None
+
+
+def test_stale_numba_cache_is_dropped_when_the_ball_set_source_changes(tmp_path):
+    (tmp_path / "drop.integrate-1.py312.nbi").write_text("x")
+    (tmp_path / "drop.integrate-1.py312.1.nbc").write_text("x")
+    (tmp_path / "other.f-1.nbi").write_text("x")
+    assert cd.invalidate_stale_cache(tmp_path)  # no stamp yet: treated as stale
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["drop.dependency-stamp", "other.f-1.nbi"]
+    (tmp_path / "drop.integrate-1.py312.nbi").write_text("x")
+    assert not cd.invalidate_stale_cache(tmp_path)  # same sources: cache kept
+    (tmp_path / "drop.dependency-stamp").write_text("an older ball-set model")
+    assert cd.invalidate_stale_cache(tmp_path)
+    assert not (tmp_path / "drop.integrate-1.py312.nbi").exists()
+
+
+def test_rhs_ball_set_force_is_the_shared_radial_support():
+    """The RHS takes the force from the shared model's accumulate(); it must equal radial_support."""
+    from auxbearing.core.ballset import radial_support
+
+    m = _model(gravity=0.0, ball_damping=0.0, rolling_friction=0.0)
+    for xb, yb in ((3e-6, -4e-6), (-1e-6, 2e-6), (0.0, -1e-5)):
+        out = np.zeros(12)
+        cd.rhs(_state(xb=xb, yb=yb), m.params, m.ballset, out)
+        fx, fy, _, _ = radial_support(xb, yb, m.ballset)
+        np.testing.assert_allclose(out[9:11] * m.params[cd.P_MB], [fx, fy], rtol=1e-12)

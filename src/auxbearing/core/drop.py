@@ -46,7 +46,7 @@ import numpy as np
 from numba import njit
 
 from auxbearing.core import integrate as _ig
-from auxbearing.core.ballset import radial_support
+from auxbearing.core.ballset import accumulate, radial_support
 
 # Parameter vector layout (filled by auxbearing.analysis.drop.kernel_vector).
 (P_MR, P_JR, P_E, P_MB, P_JB, P_R, P_S, P_KL, P_CL, P_CB, P_MU1, P_MU2, P_VEPS, P_G, P_RI,
@@ -58,9 +58,14 @@ CONTACT_FIELDS = ("penetration", "normal_force", "friction_force", "slip_velocit
 #: Entries of the statistics vector returned by :func:`integrate`.
 STAT_FIELDS = ("h", "err_prev", "rejected_last", "steps", "rejected", "rhs_evals", "peak_force",
                "t_peak_force", "peak_stress", "t_peak_stress", "onsets", "t_first_contact",
-               "prev_force", "prev_stress", "prev2_force", "prev2_stress", "prev_delta", "h_last")
+               "prev_force", "prev_stress", "prev2_force", "prev2_stress", "prev_delta", "h_last",
+               "peak_ball_load")
 (S_H, S_ERRP, S_REJ, S_STEPS, S_REJECTED, S_NRHS, S_PF, S_TPF, S_PS, S_TPS, S_ONSETS, S_TFIRST,
- S_F1, S_S1, S_F0, S_S0, S_DELTA, S_HLAST) = range(len(STAT_FIELDS))
+ S_F1, S_S1, S_F0, S_S0, S_DELTA, S_HLAST, S_PQ) = range(len(STAT_FIELDS))
+#: Step ends whose largest ball load is below this fraction of the running peak load cannot
+#: hold the peak stress (sigma ~ C(alpha) Q^(1/3) and C varies by far less than 1 - 0.7^(1/3)
+#: over the loaded contact angles), so the stress is evaluated only on the others.
+STRESS_CANDIDATE_LOAD = 0.7
 
 
 @njit(cache=True)
@@ -83,24 +88,29 @@ def contact_state(y, p, bp):
         slip velocity v_s [m/s], ball-set force on the race (x, y) [N], largest ball contact
         load [N], largest ball contact Hertz stress [Pa].
     """
+    delta, fn, ft, vs, _, _ = _rotor_race(y, p)
+    fex, fey, qmax, smax = radial_support(y[3], y[4], bp)
+    return delta, fn, ft, vs, fex, fey, qmax, smax
+
+
+@njit(cache=True)
+def _rotor_race(y, p):
+    """Rotor/race contact (Eq. 17, 19-21 corrected): delta, F_n, F_t, v_s and the normal n."""
     dx = y[0] - y[3]
     dy = y[1] - y[4]
     dist = math.sqrt(dx * dx + dy * dy)
     delta = dist - p[P_S]
-    fn = 0.0
-    ft = 0.0
-    vs = 0.0
-    if delta > 0.0:
-        nx = dx / dist
-        ny = dy / dist
-        dvx = y[6] - y[9]
-        dvy = y[7] - y[10]
-        vn = dvx * nx + dvy * ny
-        fn = max(0.0, p[P_KL] * delta ** (10.0 / 9.0) + p[P_CL] * vn)
-        vs = -dvx * ny + dvy * nx + y[8] * p[P_R] - y[11] * (p[P_R] + p[P_S])
-        ft = -p[P_MU1] * fn * math.tanh(vs / p[P_VEPS])
-    fex, fey, qmax, smax = radial_support(y[3], y[4], bp)
-    return delta, fn, ft, vs, fex, fey, qmax, smax
+    if delta <= 0.0:
+        return delta, 0.0, 0.0, 0.0, 0.0, 0.0
+    nx = dx / dist
+    ny = dy / dist
+    dvx = y[6] - y[9]
+    dvy = y[7] - y[10]
+    vn = dvx * nx + dvy * ny
+    fn = max(0.0, p[P_KL] * delta ** (10.0 / 9.0) + p[P_CL] * vn)
+    vs = -dvx * ny + dvy * nx + y[8] * p[P_R] - y[11] * (p[P_R] + p[P_S])
+    ft = -p[P_MU1] * fn * math.tanh(vs / p[P_VEPS])
+    return delta, fn, ft, vs, nx, ny
 
 
 @njit(cache=True)
@@ -118,17 +128,26 @@ def rhs(y, p, bp, out):
     >>> float(d[7]), float(d[10])  # free fall of the rotor; the race at rest in the centre
     (-9.81, -9.81)
     """
-    delta, fn, ft, _, fex, fey, _, _ = contact_state(y, p, bp)
-    fcx = 0.0  # contact force ON the rotor
-    fcy = 0.0
-    if delta > 0.0:
-        dx = y[0] - y[3]
-        dy = y[1] - y[4]
-        dist = math.sqrt(dx * dx + dy * dy)
-        nx = dx / dist
-        ny = dy / dist
-        fcx = -fn * nx - ft * ny
-        fcy = -fn * ny + ft * nx
+    _rhs(y, p, bp, out, np.zeros(5), np.zeros(5), np.zeros((5, 5)))
+
+
+@njit(cache=True)
+def _rhs(y, p, bp, out, disp, force, jac):
+    """:func:`rhs` with scratch arrays; returns (delta, F_n, largest ball load) for bookkeeping.
+
+    The ball-set force comes from ``accumulate`` of the shared model with the stress left out
+    (the same pair loads as ``radial_support``, which the outputs use for the stress).
+    """
+    delta, fn, ft, _, nx, ny = _rotor_race(y, p)
+    disp[1] = y[3]
+    disp[2] = y[4]
+    for i in range(5):
+        force[i] = 0.0
+    qmax, _ = accumulate(disp, bp, force, jac, False, False)
+    fex = force[1]
+    fey = force[2]
+    fcx = -fn * nx - ft * ny  # contact force ON the rotor (zero without contact)
+    fcy = -fn * ny + ft * nx
     # rotor: Newton-Euler about the mass centre G = O + e (cos th, sin th)
     c = math.cos(y[2])
     s = math.sin(y[2])
@@ -161,6 +180,7 @@ def rhs(y, p, bp, out):
     out[9] = fx / p[P_MB]
     out[10] = fy / p[P_MB] - p[P_G]
     out[11] = torque / p[P_JB]
+    return delta, fn, qmax
 
 
 @njit(cache=True)
@@ -299,9 +319,12 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
     err = np.empty(n)
     tmp = np.empty(n)
     coeff = np.empty((5, n))
+    disp = np.zeros(5)
+    force = np.zeros(5)
+    jac = np.zeros((5, 5))
     prev_coeff = np.zeros((5, n))
     prev_coeff[0, :] = y
-    rhs(y, p, bp, k1)
+    _rhs(y, p, bp, k1, disp, force, jac)
     stats[S_NRHS] += 1.0
     t = t0
     h = stats[S_H]
@@ -313,24 +336,24 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
             h = t1 - t
         for i in range(n):
             yt[i] = y[i] + h * _ig.A21 * k1[i]
-        rhs(yt, p, bp, k2)
+        _rhs(yt, p, bp, k2, disp, force, jac)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A31 * k1[i] + _ig.A32 * k2[i])
-        rhs(yt, p, bp, k3)
+        _rhs(yt, p, bp, k3, disp, force, jac)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A41 * k1[i] + _ig.A42 * k2[i] + _ig.A43 * k3[i])
-        rhs(yt, p, bp, k4)
+        _rhs(yt, p, bp, k4, disp, force, jac)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A51 * k1[i] + _ig.A52 * k2[i] + _ig.A53 * k3[i] + _ig.A54 * k4[i])
-        rhs(yt, p, bp, k5)
+        _rhs(yt, p, bp, k5, disp, force, jac)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A61 * k1[i] + _ig.A62 * k2[i] + _ig.A63 * k3[i] + _ig.A64 * k4[i]
                                 + _ig.A65 * k5[i])
-        rhs(yt, p, bp, k6)
+        _rhs(yt, p, bp, k6, disp, force, jac)
         for i in range(n):
             y1[i] = y[i] + h * (_ig.B1 * k1[i] + _ig.B3 * k3[i] + _ig.B4 * k4[i] + _ig.B5 * k5[i]
                                 + _ig.B6 * k6[i])
-        rhs(y1, p, bp, k7)
+        delta1, fn1, q1 = _rhs(y1, p, bp, k7, disp, force, jac)
         stats[S_NRHS] += 6.0
         for i in range(n):
             err[i] = h * (_ig.E1 * k1[i] + _ig.E3 * k3[i] + _ig.E4 * k4[i] + _ig.E5 * k5[i]
@@ -352,8 +375,11 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
             for i in range(n):
                 grid[k_next, i] = tmp[i]
             k_next += 1
-        cs = contact_state(y1, p, bp)
-        _track_peaks(t, h, coeff, prev_coeff, p, bp, tmp, stats, cs[1], cs[7], cs[0])
+        sigma1 = 0.0
+        if q1 >= STRESS_CANDIDATE_LOAD * stats[S_PQ]:
+            sigma1 = radial_support(y1[3], y1[4], bp)[3]
+        stats[S_PQ] = max(stats[S_PQ], q1)
+        _track_peaks(t, h, coeff, prev_coeff, p, bp, tmp, stats, fn1, sigma1, delta1)
         factor = _ig.next_step_factor(e_norm, stats[S_ERRP], stats[S_REJ] > 0.5)
         stats[S_ERRP] = max(e_norm, 1e-4)
         stats[S_REJ] = 0.0
@@ -442,27 +468,37 @@ def new_stats(h0: float) -> np.ndarray:
     return stats
 
 
-def _invalidate_stale_cache() -> None:
+def _cache_dir() -> Path:
+    """Where numba keeps this module's cache (``__pycache__`` or under ``NUMBA_CACHE_DIR``)."""
+    try:
+        return Path(integrate._cache._cache_path)  # numba internals; fall back if they move
+    except AttributeError:  # pragma: no cover
+        return Path(__file__).parent / "__pycache__"
+
+
+def invalidate_stale_cache(cache_dir: Path | None = None) -> bool:
     """Drop this module's numba cache when a compiled dependency changed since it was written.
 
-    numba keys a cached function on its own file only; the drop kernels inline
-    ``radial_support`` and the DOPRI5 helpers, so an edited ball-set model would otherwise run
-    from a stale cache.
+    numba keys a cached function on its own file only; the drop kernels inline the ball-set
+    model and the DOPRI5 helpers, so an edited ball-set model would otherwise run from a stale
+    cache. A hash of those sources is kept beside the cache; returns True when files were dropped.
     """
+    cache_dir = _cache_dir() if cache_dir is None else Path(cache_dir)
     try:
         digest = hashlib.sha256()
         for func in (radial_support, _ig.error_norm):
             digest.update(Path(inspect.getsourcefile(func.py_func)).read_bytes())
-        cache_dir = Path(__file__).parent / "__pycache__"
         stamp = cache_dir / "drop.dependency-stamp"
         if stamp.exists() and stamp.read_text() == digest.hexdigest():
-            return
-        for path in cache_dir.glob("drop.*.nb[ic]"):
+            return False
+        stale = list(cache_dir.glob("drop.*.nb[ic]"))
+        for path in stale:
             path.unlink()
-        cache_dir.mkdir(exist_ok=True)
+        cache_dir.mkdir(parents=True, exist_ok=True)
         stamp.write_text(digest.hexdigest())
-    except OSError:  # read-only install: numba falls back to its user cache dir anyway
-        pass
+        return bool(stale)
+    except OSError:  # read-only install: nothing cached here to go stale
+        return False
 
 
-_invalidate_stale_cache()
+invalidate_stale_cache()
