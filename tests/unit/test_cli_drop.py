@@ -76,12 +76,14 @@ def test_config_file_and_options_override_it(tmp_path):
 def test_drop_compare_writes_the_comparison(tmp_path):
     out = tmp_path / "cmp"
     r = _run("drop-compare", "--out", str(out), "--json", "--quiet", "--duration", "0.012",
-             "--output-step", "100us", "--clearances", "0.15,0.2", "--frictions", "0.2", "--no-checks")
+             "--output-step", "100us", "--clearances", "0.15,0.2", "--frictions", "0.2", "--phases", "0",
+             "--no-checks")
     assert r.exit_code == 0, r.output
     data = json.loads(r.output)
     assert set(data["results"]) == {"QJ202", "7202"}
     assert data["paper"]["QJ202"]["peak_contact_force_N"] == 618.0
     assert data["sweep"]["clearance_mm"] == [0.15, 0.2]
+    assert data["sweep"]["unbalance_phase_deg"] == [0.0]
     names = {p.name for p in out.iterdir()}
     assert {"drop_QJ202.nc", "drop_7202.nc", "drop_sweep.nc", "drop_compare.json",
             "fig10_QJ202_orbit_force.png", "fig11_7202_orbit_force.png"} <= names

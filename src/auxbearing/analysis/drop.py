@@ -396,6 +396,14 @@ def _change_percent(a: dict, b: dict) -> dict:
     return {k: 100.0 * (b[k] / a[k] - 1.0) for k in _KEYS}
 
 
+#: Swept fields of :func:`drop_compare`: DropCase field -> (sweep key, display scale, display unit).
+SWEEPS = {
+    "clearance": ("vs_clearance", 1e3, "mm"),
+    "sliding_friction": ("vs_friction", 1.0, ""),
+    "unbalance_phase": ("vs_unbalance_phase", 180.0 / math.pi, "deg"),
+}
+
+
 def drop_compare(
     out_dir: str | Path | None = None,
     bearings: tuple[str, ...] = ("QJ202", "7202"),
@@ -406,15 +414,17 @@ def drop_compare(
     checks: bool = True,
     progress: Callable[[str, float], None] | None = None,
     sections: dict | None = None,
+    phases: tuple[float, ...] = (0.0, 0.5 * math.pi, math.pi, 1.5 * math.pi),
 ) -> dict:
     """Four-point (QJ202) versus angular-contact (7202) drop beside the paper's Sec. II.D numbers.
 
     Runs each bearing with the Hertz K_b and with the paper's K_b read as N/mm^1.5, sweeps the
-    clearance s [m] and the sliding friction mu_1, and (``checks``) repeats the base case with a
-    10x tighter tolerance and a 10x smaller slip regularisation. With ``out_dir`` it writes
+    clearance s [m], the sliding friction mu_1 and the unbalance phase at the drop [rad] (which
+    the paper names as a cause of scatter, Sec. III), and (``checks``) repeats the base case with
+    a 10x tighter tolerance and a 10x smaller slip regularisation. With ``out_dir`` it writes
     NetCDF time series and sweep, Fig. 10-11 style figures and ``drop_compare.json``.
     ``sections`` takes raw ``[rotor]`` / ``[drop]`` TOML tables (values with units), applied
-    over ``rotor`` / ``case``. About 10 s after the first compile.
+    over ``rotor`` / ``case``. About 15 s on one core after the first compile.
 
     Returns
     -------
@@ -427,13 +437,14 @@ def drop_compare(
     if sections:
         rotor = replace(rotor, **from_mapping(sections.get("rotor"), "rotor"))
         base = replace(base, **from_mapping(sections.get("drop"), "drop"))
+    axes = {"clearance": clearances, "sliding_friction": frictions, "unbalance_phase": phases}
+    axes = {k: sorted(set(v) | {getattr(base, k)}) for k, v in axes.items() if v}
     jobs: list[tuple[str, str, DropCase]] = []
     for name in bearings:
         jobs.append((name, "base", base))
         jobs.append((name, "paper_kb", replace(base, ball_constant=PAPER_BALL_CONSTANT)))
-        jobs += [(name, f"s={s!r}", replace(base, clearance=s)) for s in clearances if s != base.clearance]
-        jobs += [(name, f"mu={m!r}", replace(base, sliding_friction=m)) for m in frictions
-                 if m != base.sliding_friction]
+        for field, values in axes.items():
+            jobs += [(name, f"{field}={v!r}", replace(base, **{field: v})) for v in values if v != getattr(base, field)]
         if checks:
             jobs.append((name, "tight", replace(base, rtol=base.rtol / 10, atol=base.atol / 10)))
             jobs.append((name, "veps", replace(base, slip_velocity=base.slip_velocity / 10)))
@@ -447,28 +458,25 @@ def drop_compare(
             datasets[name] = ds
         if progress is not None:
             progress(f"{name} {label}", (i + 1) / len(jobs))
-    result = _assemble(bearings, clearances, frictions, base, summaries, checks)
+    result = _assemble(bearings, axes, base, summaries, checks)
     result["wall_time_s"] = time.perf_counter() - start
     if out_dir is not None:
         result["files"] = _write_compare(Path(out_dir), result, datasets, rotor, base)
     return result
 
 
-def _assemble(bearings, clearances, frictions, base, summaries, checks) -> dict:
-    clear_axis = sorted(set(clearances) | {base.clearance})
-    fric_axis = sorted(set(frictions) | {base.sliding_friction})
-    sweep: dict = {"clearance_mm": [s * 1e3 for s in clear_axis], "sliding_friction": fric_axis}
+def _assemble(bearings, axes, base, summaries, checks) -> dict:
+    sweep: dict = {f"{field}_{SWEEPS[field][2] or '1'}": [v * SWEEPS[field][1] for v in values]
+                   for field, values in axes.items()}
     results, paper_kb, conv = {}, {}, {}
     for name in bearings:
         b = summaries[(name, "base")]
         results[name] = {**b, "paper": PAPER_DROP.get(name)}
         paper_kb[name] = _pick(summaries[(name, "paper_kb")])
-        by_s = [b if s == base.clearance else summaries[(name, f"s={s!r}")] for s in clear_axis]
-        by_m = [b if m == base.sliding_friction else summaries[(name, f"mu={m!r}")] for m in fric_axis]
-        sweep[name] = {
-            "vs_clearance": {k: [r[k] for r in by_s] for k in (*_KEYS, "whirl", "impacts")},
-            "vs_friction": {k: [r[k] for r in by_m] for k in (*_KEYS, "whirl", "impacts")},
-        }
+        sweep[name] = {}
+        for field, values in axes.items():
+            runs = [b if v == getattr(base, field) else summaries[(name, f"{field}={v!r}")] for v in values]
+            sweep[name][SWEEPS[field][0]] = {k: [r[k] for r in runs] for k in (*_KEYS, "whirl", "impacts")}
         if checks:
             conv[name] = {
                 "tolerance_10x_tighter_change_percent": _change_percent(b, summaries[(name, "tight")]),
@@ -497,19 +505,22 @@ def _assemble(bearings, clearances, frictions, base, summaries, checks) -> dict:
 
 
 def sweep_dataset(result: dict) -> xr.Dataset:
-    """The clearance and friction sweeps of :func:`drop_compare` as a Dataset."""
+    """The sweeps of :func:`drop_compare` as a Dataset (one dimension per swept field, SI)."""
     sweep = result["sweep"]
-    names = [n for n in result["results"]]
-    data = {}
-    for key, unit in zip(_KEYS, ("N", "MPa"), strict=True):
-        for axis, dim in (("vs_clearance", "clearance"), ("vs_friction", "sliding_friction")):
-            data[f"{key.rsplit('_', 1)[0]}_{axis}"] = (
-                ("bearing", dim), np.array([sweep[n][axis][key] for n in names], float), {"units": unit})
-    return xr.Dataset(data, coords={
-        "bearing": names,
-        "clearance": ("clearance", np.array(sweep["clearance_mm"]) * 1e-3, {"units": "m"}),
-        "sliding_friction": ("sliding_friction", np.array(sweep["sliding_friction"]), {"units": "1"}),
-    }, attrs={"title": "Rotor drop: peaks against clearance and sliding friction", "auxbearing_version": __version__})
+    names = list(result["results"])
+    data, coords = {}, {"bearing": names}
+    for field, (axis, scale, unit) in SWEEPS.items():
+        key = f"{field}_{unit or '1'}"
+        if key not in sweep:
+            continue
+        si_unit = {"mm": "m", "deg": "rad"}.get(unit, "1")
+        coords[field] = (field, np.array(sweep[key]) / scale, {"units": si_unit})
+        for quantity, q_unit in zip(_KEYS, ("N", "MPa"), strict=True):
+            data[f"{quantity.rsplit('_', 1)[0]}_{axis}"] = (
+                ("bearing", field), np.array([sweep[n][axis][quantity] for n in names], float), {"units": q_unit})
+    return xr.Dataset(data, coords=coords, attrs={
+        "title": "Rotor drop: peaks against clearance, sliding friction and unbalance phase",
+        "auxbearing_version": __version__})
 
 
 def _write_compare(out_dir: Path, result: dict, datasets: dict, rotor: Rotor, case: DropCase) -> list[str]:

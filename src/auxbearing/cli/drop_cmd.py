@@ -182,17 +182,21 @@ def _list(name: str, text: str, dimension: str, unit: str | None) -> tuple[float
               help="Clearances s of the sweep (plain numbers in mm).")
 @click.option("--frictions", default="0.1,0.2,0.3", show_default=True, metavar="LIST",
               help="Sliding friction coefficients μ1 of the sweep.")
+@click.option("--phases", default="0,90,180,270", show_default=True, metavar="LIST",
+              help="Unbalance phases at the drop of the sweep (plain numbers in deg).")
 @click.option("--checks/--no-checks", default=True, show_default=True,
               help="Also rerun with 10x tighter tolerance and 10x smaller slip regularisation.")
 @out_option("out/drop-compare")
 @json_option()
 @quiet_option()
 @click.pass_context
-def drop_compare_command(ctx, config, params, bearings, clearances, frictions, checks, out_dir, as_json, quiet):
+def drop_compare_command(ctx, config, params, bearings, clearances, frictions, phases, checks, out_dir, as_json,
+                         quiet):
     """Four-point QJ202 versus angular-contact 7202 drop beside the paper (Fig. 10-11, Sec. II.D).
 
     Writes drop_<bearing>.nc, fig10/fig11 orbit and collision-force figures, spin-speed and
-    stress figures, the clearance and friction sweep (drop_sweep.nc, drop_sweep.png) and
+    stress figures, the clearance, friction and unbalance-phase sweep (drop_sweep.nc,
+    drop_sweep.png) and
     drop_compare.json (peaks beside 618 N / 1483 MPa and 391 N / 1634 MPa, the paper's K_b read as
     N/mm^1.5, convergence checks and the parameters the paper leaves out).
     """
@@ -206,10 +210,12 @@ def drop_compare_command(ctx, config, params, bearings, clearances, frictions, c
     mu_list = _list("--frictions", frictions, "dimensionless", None)
     for mu in mu_list:
         check(next(p for p in PARAMETERS if p.key == "sliding_friction"), mu, "--frictions")
+    phase_list = _list("--phases", phases, "angle", "deg")
     with _progress(quiet) as bar:
         task = bar.add_task("drop-compare (first run compiles)", total=1.0)
         result = drop_compare(out_dir, names, s_list, mu_list, rotor, replace(case), checks,
-                              progress=lambda label, f: bar.update(task, completed=f, description=label))
+                              progress=lambda label, f: bar.update(task, completed=f, description=label),
+                              phases=phase_list)
     if as_json:
         echo_json({**result, "out": str(out_dir)})
         return

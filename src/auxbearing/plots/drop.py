@@ -94,8 +94,15 @@ def plot_speeds_stress(ds: xr.Dataset) -> Figure:
     return fig
 
 
+_SWEEP_AXES = (  # dimension, variable suffix, display scale, axis label
+    ("clearance", "vs_clearance", 1e3, "Clearance s [mm]"),
+    ("sliding_friction", "vs_friction", 1.0, "Sliding friction μ1 [-]"),
+    ("unbalance_phase", "vs_unbalance_phase", 180.0 / np.pi, "Unbalance phase at the drop [deg]"),
+)
+
+
 def plot_sweep(sweep: xr.Dataset, paper: dict | None = None) -> Figure:
-    """Peak collision force and peak ball stress against clearance and sliding friction.
+    """Peak collision force and peak ball stress against each swept parameter, per bearing.
 
     Parameters
     ----------
@@ -104,25 +111,23 @@ def plot_sweep(sweep: xr.Dataset, paper: dict | None = None) -> Figure:
     paper : dict, optional
         The paper's peaks per bearing, drawn as horizontal dotted lines.
     """
-    fig = Figure(figsize=(10, 7), layout="constrained")
-    axes = fig.subplots(2, 2)
+    axes_present = [a for a in _SWEEP_AXES if a[0] in sweep.dims]
+    fig = Figure(figsize=(4.2 * max(1, len(axes_present)), 7), layout="constrained")
+    grid = fig.subplots(2, max(1, len(axes_present)), squeeze=False)
     fig.suptitle("Rotor drop: four-point (QJ202) against angular contact (7202)")
-    panels = (("peak_contact_force_vs_clearance", "clearance", 1e3, "Clearance s [mm]", "Peak collision force [N]"),
-              ("peak_contact_force_vs_friction", "sliding_friction", 1.0, "Sliding friction μ1 [-]",
-               "Peak collision force [N]"),
-              ("peak_ball_stress_vs_clearance", "clearance", 1e3, "Clearance s [mm]", "Peak ball stress [MPa]"),
-              ("peak_ball_stress_vs_friction", "sliding_friction", 1.0, "Sliding friction μ1 [-]",
-               "Peak ball stress [MPa]"))
-    for ax, (var, dim, scale, xlabel, ylabel) in zip(axes.flat, panels, strict=True):
-        key = "peak_contact_force_N" if "force" in var else "peak_ball_stress_MPa"
-        for name in sweep.bearing.values:
-            colour = _COLOURS.get(str(name))
-            ax.plot(sweep[dim].values * scale, sweep[var].sel(bearing=name).values, "o-", color=colour,
-                    label=str(name))
-            if paper and str(name) in paper:
-                ax.axhline(paper[str(name)][key], color=colour, ls=":", lw=1, label=f"{name} paper")
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel(ylabel)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
+    rows = (("peak_contact_force", "peak_contact_force_N", "Peak collision force [N]"),
+            ("peak_ball_stress", "peak_ball_stress_MPa", "Peak ball stress [MPa]"))
+    for col, (dim, suffix, scale, xlabel) in enumerate(axes_present):
+        for row, (prefix, key, ylabel) in enumerate(rows):
+            ax = grid[row, col]
+            for name in sweep.bearing.values:
+                colour = _COLOURS.get(str(name))
+                ax.plot(sweep[dim].values * scale, sweep[f"{prefix}_{suffix}"].sel(bearing=name).values, "o-",
+                        color=colour, label=str(name))
+                if paper and str(name) in paper:
+                    ax.axhline(paper[str(name)][key], color=colour, ls=":", lw=1, label=f"{name} paper")
+            ax.set_xlabel(xlabel)
+            ax.set_ylabel(ylabel)
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=7)
     return fig
