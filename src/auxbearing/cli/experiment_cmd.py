@@ -1,0 +1,160 @@
+"""``auxbearing experiment``: a measured drop against the simulation (source paper Sec. III).
+
+Reads a CSV or NetCDF drop record (format in docs/experiment.md), estimates contact force and
+ball stress from the orbit, fits friction, clearance and unbalance phase, simulates the same
+case and writes data, figures and a JSON summary.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import click
+import pint
+from rich.console import Console
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.table import Table
+
+from auxbearing.analysis.drop import DropCase, Rotor, read_config
+from auxbearing.analysis.experiment import Preprocessing
+from auxbearing.analysis.experiment_fit import FitOptions
+from auxbearing.analysis.experiment_io import read_measured
+from auxbearing.analysis.experiment_run import run_experiment
+from auxbearing.bearing import bearing_names
+from auxbearing.cli.common import echo_json, json_option, out_option, quantity, resolve_bearing
+from auxbearing.errors import InputError
+from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+from auxbearing.units import to_si, ureg
+
+
+def _offset(text: str) -> str | tuple[float, float]:
+    if text in ("auto", "fit", "start"):
+        return text
+    parts = text.split(",")
+    if len(parts) != 2:
+        raise InputError.for_field("--offset", text, "must be auto, fit, start or 'X0,Y0' (e.g. '31.7 um,-18.4 um')")
+    return (to_si("--offset x0", parts[0], "length", "um"), to_si("--offset y0", parts[1], "length", "um"))
+
+
+@click.command("experiment")
+@click.option("--measured", "measured", required=True, type=click.Path(path_type=Path),
+              help="Drop record: CSV ('time [s], x [um], y [um][, speed [rpm]]') or NetCDF (x, y over time).")
+@click.option("--bearing", "bearing_spec", default=None, metavar="NAME|FILE.toml",
+              help="Auxiliary bearing of the test (" + ", ".join(bearing_names()) + ") or a TOML file; "
+                   "default: the [bearing] of --config, else QJ202.")
+@click.option("--config", type=click.Path(dir_okay=False, path_type=Path), default=None,
+              help="TOML file with [rotor] and [drop] tables (values with units) and optionally [bearing]: "
+                   "the simulated case (see `auxbearing drop --help`).")
+@click.option("--offset", default="auto", show_default=True, metavar="auto|fit|start|X0,Y0",
+              help="Sensor reading at the bearing centre: 'start' = levitated position before the drop, 'fit' = "
+                   "centre of the clearance circle fitted to the orbit, 'auto' = start if the record has a "
+                   "levitated stretch, or two lengths (plain numbers in um).")
+@click.option("--scale", default="1", show_default=True, help="Factor on the displacement channels.")
+@click.option("--cutoff", default="8 kHz", show_default=True,
+              help="Zero-phase low-pass cutoff (plain number in Hz); 'none' for no filter.")
+@click.option("--drop-time", default=None, help="Moment of the drop in record time (plain number in s); "
+                                                "default: detected.")
+@click.option("--clearance", default=None,
+              help="Clearance s for the force estimate (plain number in mm); default: the fitted one.")
+@click.option("--no-fit", is_flag=True, help="Skip the fit of friction, clearance and unbalance phase.")
+@click.option("--fit-window", default="12 ms", show_default=True,
+              help="Opening stretch of the drop the fit matches (plain number in ms); it must reach a few ms past "
+                   "the first impact.")
+@click.option("--unit", "units", multiple=True, metavar="CHANNEL=UNIT",
+              help="Unit of a channel whose header has none, e.g. --unit x=um --unit time=ms (repeatable).")
+@out_option("out/experiment")
+@json_option()
+@click.option("--quiet", is_flag=True, help="No progress bar.")
+def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, drop_time, clearance, no_fit,
+                       fit_window, units, out_dir, as_json, quiet):
+    """Measured rotor drop: force and ball stress from the orbit, fit, comparison with the simulation.
+
+    Writes measured.nc (orbit, force, ball loads and stress since the drop), simulated_*.nc,
+    experiment_*.png and experiment_summary.json (peaks side by side, fitted parameters with
+    their standard errors, recovered vs true values for a SYNTHETIC file).
+    """
+    unit_map = {}
+    for item in units:
+        channel, sep, unit = item.partition("=")
+        if not sep or not unit.strip():
+            raise InputError.for_field("--unit", item, "must be CHANNEL=UNIT, e.g. x=um")
+        unit_map[channel.strip()] = unit.strip()
+    cfg_bearing, rotor_kw, drop_kw = (None, {}, {}) if config is None else read_config(config)
+    bearing = resolve_bearing(bearing_spec) if bearing_spec is not None else cfg_bearing or resolve_bearing("QJ202")
+    prep = Preprocessing(
+        offset=_offset(offset.strip()),
+        scale=to_si("--scale", scale, "dimensionless"),
+        cutoff=None if cutoff.strip().lower() == "none" else _frequency(cutoff),
+        drop_time=quantity("--drop-time", drop_time, "time", "s"),
+    )
+    fit_options = FitOptions(window=to_si("--fit-window", fit_window, "time", "ms"))
+    data = read_measured(measured, unit_map)
+    progress = Progress(TextColumn("{task.description:<48}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
+                        TimeElapsedColumn(), console=Console(stderr=True), disable=quiet or as_json, transient=True)
+    with progress:
+        task = progress.add_task("experiment", total=1.0)
+        result = run_experiment(data, bearing, Rotor(**rotor_kw), DropCase(**drop_kw), prep, fit=not no_fit,
+                                fit_options=fit_options, clearance=quantity("--clearance", clearance, "length", "mm"),
+                                progress=lambda f, label: progress.update(task, completed=f, description=label))
+    inputs = {"measured": str(measured), "bearing": bearing.describe(), "config": str(config) if config else None,
+              "offset": offset, "scale": scale, "cutoff": cutoff, "drop_time": drop_time, "clearance": clearance,
+              "fit": not no_fit, "fit_window": fit_window, "units": unit_map}
+    with atomic_output_dir(out_dir) as tmp:
+        for name, ds in result.datasets.items():
+            save_dataset(ds, tmp / f"{name}.nc", inputs)
+        for name, fig in result.figures.items():
+            save_figure(fig, tmp / name)
+        write_json(result.summary, tmp / "experiment_summary.json", inputs)
+    if as_json:
+        echo_json({**result.summary, "out": str(out_dir)})
+        return
+    _print(result.summary, out_dir)
+
+
+def _frequency(text: str) -> float:
+    """A cutoff frequency in Hz ('8 kHz', '8000'); units.SI_UNITS has no frequency, so pint directly."""
+    try:
+        q = ureg.Quantity(text.strip())
+        value = float(q.to("Hz").magnitude) if isinstance(q, pint.Quantity) and not q.dimensionless else float(
+            getattr(q, "magnitude", q))
+    except Exception:  # pint raises several unrelated types for malformed text
+        raise InputError.for_field("--cutoff", text, "must be a frequency such as '8 kHz' or 8000 (Hz)") from None
+    if not (math.isfinite(value) and value > 0.0):
+        raise InputError.for_field("--cutoff", text, "must be > 0 Hz")
+    return value
+
+
+def _print(summary: dict, out_dir: Path) -> None:
+    console = Console()
+    if summary["synthetic"]:
+        console.print("[bold]Note: this record is SYNTHETIC (made by the simulation), not a measurement.[/bold]")
+    table = Table(title=f"{summary['bearing']}: peaks from the orbit and from the simulation")
+    columns = summary["peak_table"]["columns"]
+    # the terminal gets the values and the last difference; the JSON has every difference
+    keep = [k for k, c in enumerate(columns) if not c.startswith("Δ")] + [len(columns) - 1]
+    for k in keep:
+        table.add_column(columns[k], justify="left" if k == 0 else "right", no_wrap=k == 0)
+    for row in summary["peak_table"]["rows"]:
+        table.add_row(*(row[k] for k in keep))
+    console.print(table)
+    m = summary["measured"]
+    console.print(f"Clearance used for the force: {m['clearance_used_um']:.2f} µm ({m['clearance_source']}); "
+                  f"±1 µm moves the peak stress to {m['peak_stress_if_clearance_plus_1um_MPa']:.0f} / "
+                  f"{m['peak_stress_if_clearance_minus_1um_MPa']:.0f} MPa")
+    if "fit" in summary:
+        fit = summary["fit"]
+        ft = Table(title=f"Fit over the first {fit['window_ms']:g} ms (residual rms {fit['residual_rms_um']:.2f} µm)")
+        for col in ("parameter", "value", "± 1σ", "unit"):
+            ft.add_column(col, justify="right")
+        for name, p in fit["parameters"].items():
+            ft.add_row(name, f"{p['value_shown']:.5g}", f"{p['std_shown']:.2g}", p["unit"])
+        console.print(ft)
+    for row in summary.get("recovery", []):
+        console.print(f"  {row['parameter']}: true {row['true']:.4g}, recovered {row['recovered']:.4g} ± "
+                      f"{row['std']:.2g} {row['unit']}")
+    speed = summary["speed_at_drop_rpm"]
+    console.print(f"Speed at the drop {speed:.0f} rpm ({speed * math.pi / 30:.1f} rad/s). Wrote {out_dir}/")
+
+
+COMMANDS = [experiment_command]
