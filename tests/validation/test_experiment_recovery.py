@@ -17,9 +17,10 @@ Tolerances, and why:
   over the 12 ms window (-0.012 over 20 ms, see experiment_fit).
 * unbalance phase within 5 deg: the free-fall curve fixes it to ~0.5 deg; the bias from the
   fixed parameters is 1-2 deg.
-* peak ball stress from the orbit within 3 % of the simulation that made the data: the
+* peak ball stress from the orbit within 5 % of the simulation that made the data: the
   quasi-static split reproduces the simulated stress to < 0.5 % on an exact orbit (unit
-  test); the rest is the clearance error (above) and the 50 kHz sampling of 0.2 ms impacts.
+  test); the rest is the clearance error (0.5 um gives about 2 %; 1 um 4.5 %) and the 50 kHz
+  sampling and 8 kHz filtering of 0.2 ms impacts (< 0.5 %). Found: -1.1 % QJ202, -2.3 % 7202-40.
 """
 
 import math
@@ -61,7 +62,7 @@ def test_recovers_friction_clearance_and_phase(example):
 def test_peak_stress_from_the_orbit(example):
     _, (datasets, summary, figures) = example
     true_stress = summary["truth"]["simulated_peak_ball_stress_MPa"]
-    assert summary["measured"]["peak_ball_stress_MPa"] == pytest.approx(true_stress, rel=0.03)
+    assert summary["measured"]["peak_ball_stress_MPa"] == pytest.approx(true_stress, rel=0.05)
     assert summary["measured"]["peak_stress_if_clearance_minus_1um_MPa"] > summary["measured"]["peak_ball_stress_MPa"]
     assert set(figures) == {"experiment_orbits", "experiment_force_stress", "experiment_fit_window"}
     assert datasets["measured"].attrs["synthetic"] == 1

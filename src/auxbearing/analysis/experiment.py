@@ -22,8 +22,11 @@ module is our reading, built on the same models as the drop simulation (Sec. II.
    (:func:`auxbearing.analysis.drop.detect_whirl`, the simulation's own), impacts by counting
    contact episodes with hysteresis.
 
-The comparison with the simulation and the fit of the uncertain parameters live in
-:mod:`auxbearing.analysis.experiment_fit`; :func:`run_experiment` there runs everything.
+Readers: :mod:`auxbearing.analysis.experiment_io`. Fit of the uncertain parameters:
+:mod:`auxbearing.analysis.experiment_fit`. Everything in one call:
+:func:`auxbearing.analysis.experiment_run.run_experiment`. Report section:
+:func:`auxbearing.analysis.experiment_stage.experiment_stage`. Example data (SYNTHETIC):
+:mod:`auxbearing.analysis.experiment_synth`.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""A measured drop against the simulation: fit of the uncertain parameters, comparison, the whole run.
+"""A measured drop against the simulation: fit of the uncertain parameters, and the simulation seen as measured.
 
 The paper (Sec. III) blames the gap between its measured and simulated stress partly on "the
 angle of imbalance eccentricity at the moment of dropping" and on unknown parameters. Here the

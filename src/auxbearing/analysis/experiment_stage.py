@@ -50,10 +50,11 @@ def experiment_stage(config=None, examples=EXAMPLES) -> Section:
     sections = getattr(config, "sections", {}) or {}
     rotor = Rotor(**from_mapping(sections.get("rotor"), "rotor"))
     case = DropCase(**from_mapping(sections.get("drop"), "drop"))
-    results, figures, tables = {}, [], []
+    results, figures, tables, data = {}, [], [], {}
     for k, (bearing, path) in enumerate(examples):
-        _, summary, figs = run_experiment(Path(path), bearing, rotor, case, fit=True)
+        datasets, summary, figs = run_experiment(Path(path), bearing, rotor, case, fit=True)
         results[bearing] = summary
+        data[f"experiment_{bearing.lower().replace('-', '_')}"] = datasets["measured"]
         table = summary["peak_table"]
         tables.append({"columns": table["columns"], "rows": table["rows"],
                        "caption": f"{bearing}, SYNTHETIC drop: peaks from the orbit ('measured') and from the "
@@ -101,7 +102,7 @@ def experiment_stage(config=None, examples=EXAMPLES) -> Section:
         key="experiment", title="Experiment (Sec. III, Fig. 12-13) — SYNTHETIC data",
         paper="Rotor spinning at 6000 rpm dropped onto a QJ202 and a 7202 (40°); orbits recorded; max stress computed "
               "from them: 1728 MPa (QJ202) vs 2348 MPa (7202).",
-        figures=figures, tables=tables, claims=claims, assumptions=assumptions,
+        figures=figures, tables=tables, datasets=data, claims=claims, assumptions=assumptions,
         results={"synthetic": True, **{k: _compact(v) for k, v in results.items()}},
         notes=[SYNTHETIC_NOTE,
                "Force from the orbit is very sensitive to the clearance: ±1 µm moves the QJ202 peak stress from "
