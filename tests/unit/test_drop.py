@@ -268,3 +268,17 @@ def test_rhs_ball_set_force_is_the_shared_radial_support():
         cd.rhs(_state(xb=xb, yb=yb), m.params, m.ballset, out)
         fx, fy, _, _ = radial_support(xb, yb, m.ballset)
         np.testing.assert_allclose(out[9:11] * m.params[cd.P_MB], [fx, fy], rtol=1e-12)
+
+
+def test_a_blown_up_state_stops_with_a_convergence_error_not_a_hang():
+    from auxbearing.errors import ConvergenceError
+
+    m = _model()
+    y = m.y0.copy()
+    y[1] = float("nan")
+    grid = np.empty((3, 12))
+    stats = cd.new_stats(1e-6)
+    cd.integrate(y, 0.0, 1e-3, m.params, m.ballset, 1e-6, m.atol, 5e-5, 5e-4, 1, grid, stats)
+    assert stats[cd.S_FAIL] == 0.0
+    with pytest.raises(ConvergenceError, match="stalled at t = 0 ms"):
+        ad.run_drop(QJ202, None, ad.DropCase(gravity=1e300, duration=1e-3, output_step=1e-4))

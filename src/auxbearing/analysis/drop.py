@@ -31,7 +31,7 @@ from auxbearing.bearing import BearingGeometry, load_bearing
 from auxbearing.core import drop as cd
 from auxbearing.core.ballset import ballset_state, kernel_params
 from auxbearing.core.hertz import line_contact_constant
-from auxbearing.errors import InputError
+from auxbearing.errors import ConvergenceError, InputError
 from auxbearing.io import to_jsonable
 
 __all__ = ["PARAMETERS", "DropCase", "DropModel", "Param", "Rotor", "build_model", "convert", "detect_whirl",
@@ -174,6 +174,10 @@ def run_drop(
         k_next = cd.integrate(y, edges[i], edges[i + 1], model.params, model.ballset, case.rtol, model.atol,
                               case.max_step, case.output_step, k_next, grid, stats)
         wall += time.perf_counter() - start
+        if stats[cd.S_FAIL] >= 0.0:
+            raise ConvergenceError(f"drop integration stalled at t = {stats[cd.S_FAIL] * 1e3:.6g} ms "
+                                   "(step size underflow: non-finite forces or an unphysical input)",
+                                   float("nan"), int(stats[cd.S_STEPS]))
         if progress is not None:
             progress((i + 1) / (edges.size - 1))
     if k_next < n_out:  # the last instant can fall a rounding error past the end

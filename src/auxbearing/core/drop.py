@@ -59,9 +59,12 @@ CONTACT_FIELDS = ("penetration", "normal_force", "friction_force", "slip_velocit
 STAT_FIELDS = ("h", "err_prev", "rejected_last", "steps", "rejected", "rhs_evals", "peak_force",
                "t_peak_force", "peak_stress", "t_peak_stress", "onsets", "t_first_contact",
                "prev_force", "prev_stress", "prev2_force", "prev2_stress", "prev_delta", "h_last",
-               "peak_ball_load")
+               "peak_ball_load", "failed_at")
 (S_H, S_ERRP, S_REJ, S_STEPS, S_REJECTED, S_NRHS, S_PF, S_TPF, S_PS, S_TPS, S_ONSETS, S_TFIRST,
- S_F1, S_S1, S_F0, S_S0, S_DELTA, S_HLAST, S_PQ) = range(len(STAT_FIELDS))
+ S_F1, S_S1, S_F0, S_S0, S_DELTA, S_HLAST, S_PQ, S_FAIL) = range(len(STAT_FIELDS))
+#: Smallest step relative to the time scale of the run before the integration gives up
+#: (a non-finite or exploding state); a contact onset needs about 1e-10 s at rtol = 1e-9.
+MIN_STEP = 1e-14
 #: Step ends whose largest ball load is below this fraction of the running peak load cannot
 #: hold the peak stress (sigma ~ C(alpha) Q^(1/3) and C varies by far less than 1 - 0.7^(1/3)
 #: over the loaded contact angles), so the stress is evaluated only on the others.
@@ -304,7 +307,8 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
     Returns
     -------
     int
-        The new ``k_next``.
+        The new ``k_next``. When the step size underflows (a non-finite state), the loop stops
+        and ``stats[S_FAIL]`` holds the time reached.
     """
     n = N_STATE
     k1 = np.empty(n)
@@ -330,6 +334,9 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
     h = stats[S_H]
     n_out = grid.shape[0]
     while t < t1:
+        if h < MIN_STEP * max(1.0, t1):
+            stats[S_FAIL] = t
+            break
         h = min(h, max_step)
         last = t + h >= t1 * (1.0 - 1e-15)
         if last:
@@ -465,6 +472,7 @@ def new_stats(h0: float) -> np.ndarray:
     stats[S_TPF] = -1.0
     stats[S_TPS] = -1.0
     stats[S_DELTA] = -1.0
+    stats[S_FAIL] = -1.0
     return stats
 
 
