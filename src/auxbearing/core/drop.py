@@ -25,8 +25,12 @@ t = z x n the counter-clockwise tangent):
 * rotor unbalance: mass centre G = O_r + e (cos theta_r, sin theta_r); Newton-Euler about G
   (J_r is the polar moment about G), so the unbalance enters through the exact kinematics of G
   instead of the centrifugal term of Eq. 25;
-* ball set: F_e = radial_support(x_b, y_b) of :mod:`auxbearing.core.ballset` (Eq. 22, which is
-  the radial ball-set force, NOTES item 4), plus isotropic viscous damping -C_b v_b. Eq. 23
+* ball set: F_e is the radial force of THE shared ball-set model (:mod:`auxbearing.core.ballset`,
+  Eq. 22, which is the radial ball-set force, NOTES item 4; four-point and angular contact
+  differ only through the geometry packed in its parameters, NOTES item 8). The right-hand
+  side calls its force-only ``accumulate`` at zero axial and tilt displacement (the same pair
+  loads as ``radial_support``, without the stresses); the outputs and the peak stress use
+  ``radial_support`` (NOTES item 9). Plus isotropic viscous damping -C_b v_b. Eq. 23
   damps only the radial rate d|r_b|/dt, whose direction is undefined at the centre where the
   drop starts; for a ring carried all round by balls the isotropic form is the natural one;
 * rolling resistance (Eq. 24): a tangential force mu_2 |F_e| tanh(omega_b R_i / v_eps) on the
@@ -48,7 +52,7 @@ from numba import njit
 from auxbearing.core import integrate as _ig
 from auxbearing.core.ballset import accumulate, radial_support
 
-# Parameter vector layout (filled by auxbearing.analysis.drop.kernel_vector).
+# Parameter vector layout (filled by auxbearing.analysis.drop.build_model).
 (P_MR, P_JR, P_E, P_MB, P_JB, P_R, P_S, P_KL, P_CL, P_CB, P_MU1, P_MU2, P_VEPS, P_G, P_RI,
  N_PARAMS) = range(16)
 N_STATE = 12
@@ -276,10 +280,13 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
     """Advance the drop from t0 to t1 with DOPRI5 and PI step control (``y`` updated in place).
 
     Dormand-Prince 5(4) with the fourth-order dense output and PI controller of
-    :mod:`auxbearing.core.integrate`. Contact onset (where the damping term of Eq. 19 jumps)
-    and loss are handled by the error control alone: a step across a jump fails the error test
-    and shrinks by at most 5x per attempt until it fits, a few rejections per onset, never a
-    stall, because the controller never lets the step fall below what the jump allows.
+    :mod:`auxbearing.core.integrate`. Contact onset (where the damping term of Eq. 19 jumps by
+    C_l v_n) and loss (continuous: the force is clipped at zero) are handled by the error
+    control: a step across the jump fails the error test and shrinks, by at most 5x per
+    attempt, until it ends just before the jump; the next step starts on the other side and the
+    controller grows the step again by up to 10x per step. This costs a few tens of rejected
+    steps per onset (default run: 358 rejected of 12,229 steps with 20 onsets) and cannot stall;
+    a step-size underflow (only with a non-finite state) stops the loop and is reported.
 
     Parameters
     ----------
