@@ -420,7 +420,7 @@ SWEEPS = {
 
 def drop_compare(
     out_dir: str | Path | None = None,
-    bearings: tuple[str, ...] = ("QJ202", "7202"),
+    bearings: tuple[str | BearingGeometry, ...] = ("QJ202", "7202"),
     clearances: tuple[float, ...] = (1e-4, 1.5e-4, 2e-4, 3e-4),
     frictions: tuple[float, ...] = (0.1, 0.2, 0.3),
     rotor: Rotor | None = None,
@@ -453,6 +453,8 @@ def drop_compare(
         base = replace(base, **from_mapping(sections.get("drop"), "drop"))
     axes = {"clearance": clearances, "sliding_friction": frictions, "unbalance_phase": phases}
     axes = {k: sorted(set(v) | {getattr(base, k)}) for k, v in axes.items() if v}
+    geometry = {b.name: b for b in (load_bearing(spec) for spec in bearings)}
+    bearings = tuple(geometry)
     jobs: list[tuple[str, str, DropCase]] = []
     for name in bearings:
         jobs.append((name, "base", base))
@@ -466,7 +468,7 @@ def drop_compare(
     datasets: dict[str, xr.Dataset] = {}
     start = time.perf_counter()
     for i, (name, label, c) in enumerate(jobs):
-        ds, summary = run_drop(name, rotor, c)
+        ds, summary = run_drop(geometry[name], rotor, c)
         summaries[(name, label)] = summary
         if label == "base":
             datasets[name] = ds
