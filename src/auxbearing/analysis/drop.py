@@ -38,6 +38,10 @@ __all__ = ["PARAMETERS", "DropCase", "DropModel", "Param", "Rotor", "build_model
            "drop_compare", "from_mapping", "read_config", "run_drop", "static_safety_factor"]
 
 
+#: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (not in the paper; Palmgren's steel).
+ROTOR_STEEL_COMPLIANCE = (1.0 - 0.3**2) / 207e9
+
+
 # ----------------------------------------------------------------------------- the model
 class DropModel(NamedTuple):
     """Everything the compiled kernels need, and the derived values they were built from."""
@@ -89,7 +93,10 @@ def build_model(bearing: BearingGeometry, rotor: Rotor, case: DropCase) -> DropM
     if case.line_stiffness is not None:
         k_l = case.line_stiffness
     elif bearing.width is not None:
-        k_l = float(line_contact_constant(bearing.width))
+        # journal steel assumed as Palmgren's (the paper names no rotor material); the ring's own
+        # material enters through its compliance term
+        k_l = float(line_contact_constant(bearing.width, bearing.ring_material.compliance
+                                          + ROTOR_STEEL_COMPLIANCE))
     else:
         raise InputError.for_field("drop.line_stiffness", None,
                                    f"bearing {bearing.name} has no width for Palmgren's K_l: give line_stiffness")
@@ -386,6 +393,8 @@ UNSTATED = (
     ("K_b", "Hertz Eq. 15 at each loaded contact angle (8.05e9 N/m^1.5 at 35 deg)",
      "Table II's 5.42e5 'N/m^1.5' is implausible; as N/mm^1.5 (1.71e10 N/m^1.5) run as a variant"),
     ("internal clearance of QJ202 / 7202", "0", "the paper assumes zero (Sec. II.C)"),
+    ("K_l contact length and rotor material", "bearing width 11 mm; steel 207 GPa, nu 0.3",
+     "Palmgren's line contact then gives 1.463e9 N/m^(10/9) against Table II's 1.468e9"),
     ("axial condition of the 7202", "inner ring axially located (no axial displacement)",
      "a single angular-contact bearing needs one; the paper does not say"),
     ("unbalance phase at the drop", "0 deg (along +x)", "not given; Sec. III names it as a cause of scatter"),
