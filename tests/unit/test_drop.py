@@ -282,3 +282,17 @@ def test_a_blown_up_state_stops_with_a_convergence_error_not_a_hang():
     assert stats[cd.S_FAIL] == 0.0
     with pytest.raises(ConvergenceError, match="stalled at t = 0 ms"):
         ad.run_drop(QJ202, None, ad.DropCase(gravity=1e300, duration=1e-3, output_step=1e-4))
+
+
+def test_chunk_ends_landing_within_roundoff_do_not_shrink_the_next_step():
+    """A step shortened to land on a chunk end must not become the next step's proposal (a run
+    once underflowed at a chunk boundary reached within roundoff)."""
+    m = ad.build_model(QJ202, ad.Rotor(eccentricity=0.0), ad.DropCase())
+    y = m.y0.copy()
+    grid = np.empty((2, 12))
+    stats = cd.new_stats(1e-6)
+    for t0, t1 in ((0.0, 5e-3), (5e-3, 5e-3 + 1e-16), (5e-3 + 1e-16, 6e-3)):
+        cd.integrate(y, t0, t1, m.params, m.ballset, 1e-6, m.atol, 5e-5, 1.0, 1, grid, stats)
+        assert stats[cd.S_FAIL] < 0.0
+        assert stats[cd.S_H] > 1e-7
+    np.testing.assert_allclose(y[1], -0.5 * 9.80665 * 6e-3**2, rtol=1e-9)

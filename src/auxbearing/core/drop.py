@@ -340,12 +340,17 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
     t = t0
     h = stats[S_H]
     n_out = grid.shape[0]
+    end_slack = 1e-13 * max(1.0, abs(t1))  # a remainder below this is roundoff, not a step
     while t < t1:
+        if t1 - t <= end_slack:
+            t = t1
+            break
         if h < MIN_STEP * max(1.0, t1):
             stats[S_FAIL] = t
             break
         h = min(h, max_step)
-        last = t + h >= t1 * (1.0 - 1e-15)
+        h_proposed = h
+        last = t + h >= t1 - end_slack
         if last:
             h = t1 - t
         for i in range(n):
@@ -405,7 +410,8 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
             k1[i] = k7[i]
             for j in range(5):
                 prev_coeff[j, i] = coeff[j, i]
-        h = h * factor
+        # a step shortened to land on t1 says nothing about the step size the solution allows
+        h = max(h * factor, h_proposed) if last else h * factor
     stats[S_H] = h
     return k_next
 
