@@ -16,6 +16,8 @@ from auxbearing.analysis.claims import HOLDS
 from auxbearing.analysis.report_model import Section
 from auxbearing.analysis.study_config import StudyConfig
 from auxbearing.analysis.study_contact import run_contact_stage
+from auxbearing.analysis.study_drop import run_drop_stage
+from auxbearing.analysis.study_static import run_static_stage
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
 from auxbearing.report import render_report
 
@@ -24,9 +26,26 @@ def _contact(config: StudyConfig) -> Section:
     return run_contact_stage(config.bearing, config.ball_load, config.angle_grid(), config.ratio_grid())
 
 
+def _static(config: StudyConfig) -> Section:
+    return run_static_stage(config.bearing, config.comparison)
+
+
+def _drop(config: StudyConfig) -> Section:
+    return run_drop_stage(config.bearing, config.comparison, config.sections)
+
+
+def _experiment(config: StudyConfig) -> Section:
+    from auxbearing.analysis.experiment_stage import experiment_stage
+
+    return experiment_stage(config)
+
+
 #: (key, label shown in the progress bar, stage function)
 STAGES: list[tuple[str, str, Callable[[StudyConfig], Section]]] = [
     ("contact", "Hertz contact (Fig. 2-4)", _contact),
+    ("static", "Load distribution (Fig. 6-8)", _static),
+    ("drop", "Rotor drop (Fig. 10-11) and sweeps", _drop),
+    ("experiment", "Drop experiment pipeline (Sec. III, synthetic data)", _experiment),
 ]
 
 
