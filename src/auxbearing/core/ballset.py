@@ -13,7 +13,8 @@ load", Eq. 1.27-1.39 in the rigid-ring, no-centrifugal form), generalised to 5 D
 * Curvature-centre offset of pair k of ball j (source paper Eq. 10-11 with clearance):
   ``a = s_k A sin(alpha0) + delta_a + r_ic (theta_x sin phi - theta_y cos phi)``,
   ``r = A cos(alpha0) - Pd/2 + dx cos phi + dy sin phi``, ``S = sqrt(a^2 + r^2)``,
-  A = (fi + fo - 1) D (Eq. 9). Compression delta = S - A; Q = K_b(alpha) delta^1.5 for
+  A = (fi + fo - 1) D (Eq. 9). Compression delta = S - A, evaluated as (S^2 - A^2)/(S + A)
+  without cancellation; Q = K_b(alpha) delta^1.5 for
   delta > 0, else 0 (a pair never pulls). Loaded contact angle alpha = atan2(sigma_k a, r)
   with sigma_k = s_k (or +1 for s_k = 0), so both four-point pairs read positive at rest like
   alpha_1, alpha_2 of Eq. 12-13.
@@ -207,14 +208,28 @@ def _table(params, which, x):
 
 
 @numba.njit(cache=True)
-def _pair(a, r, sign, params, with_stress=True):
-    """One contact pair: (S, delta, Q, alpha, dQ/da, dQ/dr, sigma_inner, sigma_outer)."""
+def _pair(sign, axial, radial, params, with_stress=True):
+    """One contact pair: (a, r, S, delta, Q, alpha, dQ/da, dQ/dr, sigma_inner, sigma_outer).
+
+    ``axial`` and ``radial`` are the ring's displacement at the ball [m]. S - A is formed as
+    (S^2 - A^2) / (S + A) with S^2 - A^2 expanded in the displacements, so a compression of
+    a few femtometres keeps full relative precision (S - A itself would cancel to ulp(A)).
+    """
+    big_a = params[_A]
+    cos0 = math.cos(params[_ALPHA0])
+    pd = params[_PD]
+    a0 = sign * big_a * math.sin(params[_ALPHA0])
+    r0 = big_a * cos0 - 0.5 * pd
+    a = a0 + axial
+    r = r0 + radial
     s_len = math.sqrt(a * a + r * r)
-    delta = s_len - params[_A]
+    # (s a0)^2 + r0^2 - A^2 = Pd (Pd/4 - A cos(alpha0)) exactly (a0 = 0 only when alpha0 = 0)
+    excess = pd * (0.25 * pd - big_a * cos0) + axial * (2.0 * a0 + axial) + radial * (2.0 * r0 + radial)
+    delta = excess / (s_len + big_a)
     sigma = sign if sign != 0.0 else 1.0
     alpha = math.atan2(sigma * a, r)
     if delta <= 0.0:
-        return s_len, delta, 0.0, alpha, 0.0, 0.0, 0.0, 0.0
+        return a, r, s_len, delta, 0.0, alpha, 0.0, 0.0, 0.0, 0.0
     x = abs(alpha)
     k, dk = _table(params, 0, x)
     if alpha < 0.0:
@@ -227,11 +242,11 @@ def _pair(a, r, sign, params, with_stress=True):
     dq_da = dk * dalpha_da * delta * root + 1.5 * k * root * a / s_len
     dq_dr = dk * dalpha_dr * delta * root + 1.5 * k * root * r / s_len
     if not with_stress:
-        return s_len, delta, q, alpha, dq_da, dq_dr, 0.0, 0.0
+        return a, r, s_len, delta, q, alpha, dq_da, dq_dr, 0.0, 0.0
     cube = q ** (1.0 / 3.0)
     c_i, _ = _table(params, 1, x)
     c_o, _ = _table(params, 2, x)
-    return s_len, delta, q, alpha, dq_da, dq_dr, c_i * cube, c_o * cube
+    return a, r, s_len, delta, q, alpha, dq_da, dq_dr, c_i * cube, c_o * cube
 
 
 @numba.njit(cache=True)
@@ -243,8 +258,6 @@ def accumulate(disp, params, force, jac, with_jac, with_stress=True):
     """
     z = int(params[_Z])
     n_pairs = int(params[_NP])
-    a0 = params[_A] * math.sin(params[_ALPHA0])
-    r0 = params[_A] * math.cos(params[_ALPHA0]) - 0.5 * params[_PD]
     ric = params[_RIC]
     max_load = 0.0
     max_stress = 0.0
@@ -255,15 +268,14 @@ def accumulate(disp, params, force, jac, with_jac, with_stress=True):
         ga3 = ric * sphi
         ga4 = -ric * cphi
         axial = disp[0] + ga3 * disp[3] + ga4 * disp[4]
-        radial = r0 + disp[1] * cphi + disp[2] * sphi
+        radial = disp[1] * cphi + disp[2] * sphi
         for k in range(n_pairs):
             sign = params[int(params[_SIGNS]) + k]
-            a = sign * a0 + axial
-            s_len, _, q, _, dq_da, dq_dr, sig_i, sig_o = _pair(a, radial, sign, params, with_stress)
+            a, r, s_len, _, q, _, dq_da, dq_dr, sig_i, sig_o = _pair(sign, axial, radial, params, with_stress)
             if q <= 0.0:
                 continue
             sn = a / s_len
-            cs = radial / s_len
+            cs = r / s_len
             fz = -q * sn
             fr = -q * cs
             force[0] += fz
@@ -356,8 +368,6 @@ def radial_support(dx: float, dy: float, params: np.ndarray) -> tuple[float, flo
     """
     z = int(params[_Z])
     n_pairs = int(params[_NP])
-    a0 = params[_A] * math.sin(params[_ALPHA0])
-    r0 = params[_A] * math.cos(params[_ALPHA0]) - 0.5 * params[_PD]
     fx = 0.0
     fy = 0.0
     max_load = 0.0
@@ -365,14 +375,13 @@ def radial_support(dx: float, dy: float, params: np.ndarray) -> tuple[float, flo
     for j in range(z):
         cphi = params[int(params[_COS]) + j]
         sphi = params[int(params[_SIN]) + j]
-        radial = r0 + dx * cphi + dy * sphi
+        radial = dx * cphi + dy * sphi
         for k in range(n_pairs):
             sign = params[int(params[_SIGNS]) + k]
-            a = sign * a0
-            s_len, _, q, _, _, _, sig_i, sig_o = _pair(a, radial, sign, params)
+            _, r, s_len, _, q, _, _, _, sig_i, sig_o = _pair(sign, 0.0, radial, params)
             if q <= 0.0:
                 continue
-            fr = -q * radial / s_len
+            fr = -q * r / s_len
             fx += fr * cphi
             fy += fr * sphi
             if q > max_load:
@@ -466,11 +475,15 @@ def ballset_state(displacement: np.ndarray, params: np.ndarray) -> BallSetState:
     cphi, sphi = np.cos(phi), np.sin(phi)
     ud = u[..., None, :]
     axial = ud[..., 0] + ric * (ud[..., 3] * sphi - ud[..., 4] * cphi)
-    radial = r0 + ud[..., 1] * cphi + ud[..., 2] * sphi
+    d_radial = ud[..., 1] * cphi + ud[..., 2] * sphi
+    radial = r0 + d_radial
     a = signs * a0 + axial[..., None]
     r = np.broadcast_to(radial[..., None], a.shape)
     s_len = np.sqrt(a * a + r * r)
-    delta = s_len - big_a
+    pd, cos0 = head["diametral_clearance"], math.cos(head["contact_angle"])
+    excess = (pd * (0.25 * pd - big_a * cos0) + axial[..., None] * (2.0 * signs * a0 + axial[..., None])
+              + (d_radial * (2.0 * r0 + d_radial))[..., None])
+    delta = excess / (s_len + big_a)
     sigma = np.where(signs != 0.0, signs, 1.0)
     alpha = np.arctan2(sigma * a, r)
     x = np.abs(alpha)
