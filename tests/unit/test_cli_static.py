@@ -1,0 +1,101 @@
+"""``auxbearing static`` and ``static-study`` from the command line."""
+
+import json
+from pathlib import Path
+
+import pytest
+import xarray as xr
+from click.testing import CliRunner
+
+from auxbearing.cli.main import cli
+
+EXAMPLE = Path(__file__).parents[2] / "examples" / "my_bearing.toml"
+TOP_KEYS = ["axial_displacement_um", "radial_displacement_um", "tilt_mrad", "max_contact_load_N",
+            "max_stress_MPa", "safety_factor_s0", "residual_N", "balls"]
+PAIR_KEYS = ["load_N", "contact_angle_deg", "max_stress_inner_MPa", "max_stress_outer_MPa"]
+
+
+def run(*args):
+    return CliRunner().invoke(cli, list(args))
+
+
+def test_static_json_has_exactly_the_issue_keys():
+    result = run("static", "--bearing", "QJ202", "--radial", "1000", "--axial", "500", "--moment", "0", "--json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    assert list(data) == TOP_KEYS
+    assert len(data["balls"]) == 11
+    for ball in data["balls"]:
+        assert list(ball) == ["azimuth_deg", "pairs"]
+        assert len(ball["pairs"]) == 2
+        assert all(list(pair) == PAIR_KEYS for pair in ball["pairs"])
+    assert data["balls"][1]["azimuth_deg"] == pytest.approx(360 / 11)
+    assert data["residual_N"] <= 1e-9 * 1000
+    assert data["max_stress_MPa"] == pytest.approx(max(
+        max(p["max_stress_inner_MPa"], p["max_stress_outer_MPa"]) for b in data["balls"] for p in b["pairs"]))
+    assert data["safety_factor_s0"] == pytest.approx((4200 / data["max_stress_MPa"]) ** 3)
+
+
+def test_loads_take_units():
+    a = json.loads(run("static", "--radial", "1 kN", "--axial", "0.5 kN", "--moment", "2 N*m", "--json").output)
+    b = json.loads(run("static", "--radial", "1000", "--axial", "500", "--moment", "2", "--json").output)
+    assert a["max_stress_MPa"] == pytest.approx(b["max_stress_MPa"], rel=1e-12)
+    c = json.loads(run("static", "--radial", "1000", "--axial", "500", "--moment", "2000 N*mm", "--json").output)
+    assert c["tilt_mrad"] == pytest.approx(b["tilt_mrad"], rel=1e-9)
+
+
+def test_toml_bearing_and_readable_table():
+    result = run("static", "--bearing", str(EXAMPLE), "--radial", "1000")
+    assert result.exit_code == 0, result.output
+    assert "Max contact stress" in result.output and "MPa" in result.output and "s0" in result.output
+
+
+def test_angular_contact_located_reports_reaction():
+    result = run("static", "--bearing", "7202", "--radial", "1000", "--axial-condition", "located", "--tilt", "fixed")
+    assert result.exit_code == 0, result.output
+    assert "Axial reaction" in result.output
+    data = json.loads(run("static", "--bearing", "7202", "--radial", "1000", "--axial-condition", "located",
+                          "--json").output)
+    assert data["axial_displacement_um"] == 0.0
+    assert len(data["balls"][0]["pairs"]) == 1
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--bearing", "7202", "--radial", "1000"], "error: axial = 0.0: a single angular contact bearing"),
+        (["--radial", "5 kg"], "error: --radial = '5 kg': unit kilogram is not a force"),
+        (["--moment", "3 N"], "error: --moment = '3 N': unit newton is not a moment"),
+        (["--bearing", "nope"], "error: bearing = 'nope': unknown"),
+        (["--ball-constant", "abc"], "error: ball_constant = 'abc'"),
+    ],
+)
+def test_user_mistakes_print_one_line_and_exit_2(args, message):
+    result = run("static", *args)
+    assert result.exit_code == 2
+    assert result.output.strip().startswith(message)
+    assert len(result.output.strip().splitlines()) == 1
+
+
+def test_help_names_units():
+    text = run("static", "--help").output
+    assert "N*m" in text and "'1 kN'" in text and "located" in text
+
+
+def test_static_study_writes_data_and_figures(tmp_path):
+    out = tmp_path / "static"
+    result = run("static-study", "--out", str(out), "--json")
+    assert result.exit_code == 0, result.output
+    for name in ("fig6_radial.nc", "fig6_axial.nc", "fig7.nc", "fig8.nc", "stribeck.nc",
+                 "fig6_contact_angles.png", "fig7_displacements.png", "fig8_max_stress.png", "static_summary.json"):
+        assert (out / name).stat().st_size > 0, name
+    with xr.open_dataset(out / "fig8.nc") as ds:
+        assert ds["max_stress"].attrs["units"] == "Pa"
+        assert set(ds["max_stress"].dims) == {"bearing", "radial_load"}
+        assert "auxbearing_version" in ds.attrs
+    with xr.open_dataset(out / "fig6_radial.nc") as ds:
+        assert ds["contact_angle"].attrs["units"] == "rad"
+    summary = json.loads((out / "static_summary.json").read_text())
+    assert summary["angular_exceeds_four_point_everywhere"] is True
+    assert summary["provenance"]["auxbearing_version"]
+    assert json.loads(result.output)["out"] == str(out)
