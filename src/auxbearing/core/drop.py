@@ -28,7 +28,7 @@ t = z x n the counter-clockwise tangent):
 * ball set: F_e is the radial force of THE shared ball-set model (:mod:`auxbearing.core.ballset`,
   Eq. 22, which is the radial ball-set force, NOTES item 4; four-point and angular contact
   differ only through the geometry packed in its parameters, NOTES item 8). The right-hand
-  side calls its force-only ``accumulate`` at zero axial and tilt displacement (the same pair
+  side calls its force-only ``radial_force`` (zero axial and tilt displacement, the same pair
   loads as ``radial_support``, without the stresses); the outputs and the peak stress use
   ``radial_support`` (NOTES item 9). Plus isotropic viscous damping -C_b v_b. Eq. 23
   damps only the radial rate d|r_b|/dt, whose direction is undefined at the centre where the
@@ -50,7 +50,7 @@ import numpy as np
 from numba import njit
 
 from auxbearing.core import integrate as _ig
-from auxbearing.core.ballset import accumulate, radial_support
+from auxbearing.core.ballset import radial_force, radial_support
 
 # Parameter vector layout (filled by auxbearing.analysis.drop.build_model).
 (P_MR, P_JR, P_E, P_MB, P_JB, P_R, P_S, P_KL, P_CL, P_CB, P_MU1, P_MU2, P_VEPS, P_G, P_RI,
@@ -135,24 +135,18 @@ def rhs(y, p, bp, out):
     >>> float(d[7]), float(d[10])  # free fall of the rotor; the race at rest in the centre
     (-9.81, -9.81)
     """
-    _rhs(y, p, bp, out, np.zeros(5), np.zeros(5), np.zeros((5, 5)))
+    _rhs(y, p, bp, out)
 
 
 @njit(cache=True)
-def _rhs(y, p, bp, out, disp, force, jac):
-    """:func:`rhs` with scratch arrays; returns (delta, F_n, largest ball load) for bookkeeping.
+def _rhs(y, p, bp, out):
+    """:func:`rhs` returning (delta, F_n, largest ball load) for bookkeeping.
 
-    The ball-set force comes from ``accumulate`` of the shared model with the stress left out
-    (the same pair loads as ``radial_support``, which the outputs use for the stress).
+    The ball-set force comes from ``radial_force`` of the shared model, the force-only form of
+    ``radial_support`` (same pair loads), which the outputs use for the stress.
     """
     delta, fn, ft, _, nx, ny = _rotor_race(y, p)
-    disp[1] = y[3]
-    disp[2] = y[4]
-    for i in range(5):
-        force[i] = 0.0
-    qmax, _ = accumulate(disp, bp, force, jac, False, False)
-    fex = force[1]
-    fey = force[2]
+    fex, fey, qmax = radial_force(y[3], y[4], bp)
     fcx = -fn * nx - ft * ny  # contact force ON the rotor (zero without contact)
     fcy = -fn * ny + ft * nx
     # rotor: Newton-Euler about the mass centre G = O + e (cos th, sin th)
@@ -330,12 +324,9 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
     err = np.empty(n)
     tmp = np.empty(n)
     coeff = np.empty((5, n))
-    disp = np.zeros(5)
-    force = np.zeros(5)
-    jac = np.zeros((5, 5))
     prev_coeff = np.zeros((5, n))
     prev_coeff[0, :] = y
-    _rhs(y, p, bp, k1, disp, force, jac)
+    _rhs(y, p, bp, k1)
     stats[S_NRHS] += 1.0
     t = t0
     h = stats[S_H]
@@ -355,24 +346,24 @@ def integrate(y, t0, t1, p, bp, rtol, atol, max_step, grid_dt, k_next, grid, sta
             h = t1 - t
         for i in range(n):
             yt[i] = y[i] + h * _ig.A21 * k1[i]
-        _rhs(yt, p, bp, k2, disp, force, jac)
+        _rhs(yt, p, bp, k2)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A31 * k1[i] + _ig.A32 * k2[i])
-        _rhs(yt, p, bp, k3, disp, force, jac)
+        _rhs(yt, p, bp, k3)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A41 * k1[i] + _ig.A42 * k2[i] + _ig.A43 * k3[i])
-        _rhs(yt, p, bp, k4, disp, force, jac)
+        _rhs(yt, p, bp, k4)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A51 * k1[i] + _ig.A52 * k2[i] + _ig.A53 * k3[i] + _ig.A54 * k4[i])
-        _rhs(yt, p, bp, k5, disp, force, jac)
+        _rhs(yt, p, bp, k5)
         for i in range(n):
             yt[i] = y[i] + h * (_ig.A61 * k1[i] + _ig.A62 * k2[i] + _ig.A63 * k3[i] + _ig.A64 * k4[i]
                                 + _ig.A65 * k5[i])
-        _rhs(yt, p, bp, k6, disp, force, jac)
+        _rhs(yt, p, bp, k6)
         for i in range(n):
             y1[i] = y[i] + h * (_ig.B1 * k1[i] + _ig.B3 * k3[i] + _ig.B4 * k4[i] + _ig.B5 * k5[i]
                                 + _ig.B6 * k6[i])
-        delta1, fn1, q1 = _rhs(y1, p, bp, k7, disp, force, jac)
+        delta1, fn1, q1 = _rhs(y1, p, bp, k7)
         stats[S_NRHS] += 6.0
         for i in range(n):
             err[i] = h * (_ig.E1 * k1[i] + _ig.E3 * k3[i] + _ig.E4 * k4[i] + _ig.E5 * k5[i]
