@@ -26,3 +26,4 @@ bench: $(STAMP)
 
 clean:
 	rm -rf $(VENV) $(OUT) out .pytest_cache .ruff_cache
+	find src -name "*.nbi" -o -name "*.nbc" | xargs rm -f  # numba caches do not see edits in imported modules
