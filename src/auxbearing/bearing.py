@@ -148,6 +148,11 @@ class BearingGeometry:
         return BEARING_TYPES[self.type]["axial_signs"]
 
     @property
+    def contact_compliance(self) -> float:
+        """Compliance sum eta = (1 - nu_ball^2)/E_ball + (1 - nu_ring^2)/E_ring [1/Pa] (source paper Eq. 3)."""
+        return self.ball_material.compliance + self.ring_material.compliance
+
+    @property
     def pairs_per_ball(self) -> int:
         """Contact pairs a ball can form: 2 for four-point, 1 otherwise."""
         return len(self.axial_signs)

@@ -41,7 +41,7 @@ _VARIABLES = {
 
 def compliance(bearing: BearingGeometry) -> float:
     """Eta = (1 - nu_ball^2)/E_ball + (1 - nu_ring^2)/E_ring [1/Pa], source paper Eq. 3."""
-    return bearing.ball_material.compliance + bearing.ring_material.compliance
+    return bearing.contact_compliance
 
 
 def contact_load(bearing: BearingGeometry, ball_load: float, contact_angle: float | None = None) -> float:

@@ -27,6 +27,7 @@ import xarray as xr
 from auxbearing import __version__
 from auxbearing.analysis.contact import ball_constant as contact_ball_constant
 from auxbearing.analysis.drop_params import PARAMETERS, DropCase, Param, Rotor, convert, from_mapping, read_config
+from auxbearing.analysis.static import safety_factor
 from auxbearing.bearing import BearingGeometry, load_bearing
 from auxbearing.core import drop as cd
 from auxbearing.core.ballset import ballset_state, kernel_params
@@ -261,18 +262,17 @@ def _dataset(bearing, rotor, case, model, grid, contact) -> xr.Dataset:
 
 #: ISO 76:2006 static load rating of ball bearings: the load giving 4200 MPa at the most
 #: loaded contact. Since sigma_max ~ Q^(1/3) (Eq. 8), s0 = C0/P0 = (4200 MPa / sigma_max)^3.
-ISO76_REFERENCE_STRESS = 4200e6
 
 
 def static_safety_factor(max_stress: float) -> float | None:
-    """s0 = (4200 MPa / sigma_max)^3 (ISO 76:2006 for ball bearings), None without contact.
+    """s0 of :func:`auxbearing.analysis.static.safety_factor` for JSON: None without contact.
 
     Examples
     --------
     >>> round(static_safety_factor(2100e6), 3)
     8.0
     """
-    return (ISO76_REFERENCE_STRESS / max_stress) ** 3 if max_stress > 0.0 else None
+    return float(safety_factor(max_stress)) if max_stress > 0.0 else None
 
 
 def detect_whirl(t: np.ndarray, x: np.ndarray, y: np.ndarray, clearance: float, spin: float = 1.0,

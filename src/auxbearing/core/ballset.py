@@ -66,13 +66,9 @@ DOF_NAMES = ("axial", "x", "y", "tilt_x", "tilt_y")
 LOAD_NAMES = ("Fa", "Fx", "Fy", "Mx", "My")
 
 
-def _compliance(bearing: BearingGeometry) -> float:
-    return bearing.ball_material.compliance + bearing.ring_material.compliance
-
-
 def _exact_tables(bearing: BearingGeometry, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """K_b, C_i, C_o at contact angles ``alpha`` from the exact Hertz solution."""
-    eta = _compliance(bearing)
+    eta = bearing.contact_compliance
     d, dm = bearing.ball_diameter, bearing.pitch_diameter
     s_i, f_i = hertz.ball_raceway_curvature(d, dm, bearing.inner_groove_ratio, alpha, "inner")
     s_o, f_o = hertz.ball_raceway_curvature(d, dm, bearing.outer_groove_ratio, alpha, "outer")
