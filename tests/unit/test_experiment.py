@@ -5,6 +5,8 @@ import math
 import numpy as np
 import pytest
 import xarray as xr
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from auxbearing import get_bearing
 from auxbearing.analysis.drop import DropCase, Rotor, build_model, run_drop
@@ -19,6 +21,7 @@ from auxbearing.analysis.experiment import (
 )
 from auxbearing.analysis.experiment_io import read_csv, read_measured, read_netcdf
 from auxbearing.analysis.experiment_run import peak_table
+from auxbearing.core.ballset import ballset_state
 from auxbearing.errors import InputError
 
 HEADER = "time [s], x [um], y [um], speed [rpm]\n"
@@ -199,3 +202,23 @@ def test_peak_table_differences():
                         "sim fitted": {"peak_contact_force_N": 110.0, "impacts": 5, "whirl": "none"}})
     assert table["columns"][-1] == "Δ fitted"
     assert table["rows"][0][1:] == ["100", "110", "+10.0 %"]
+
+
+@settings(max_examples=25, deadline=None)
+@given(excursion=st.floats(0.05e-6, 30e-6), angle=st.floats(-math.pi, math.pi))
+def test_series_split_balances_and_grows(excursion, angle):
+    """Line contact and ball set carry the same force, and more excursion means more force."""
+    model = build_model(get_bearing("QJ202"), Rotor(), DropCase())
+    s = 200e-6
+    r = np.array([s + excursion, s + 1.1 * excursion])
+    c = contact_from_orbit(r * math.cos(angle), r * math.sin(angle), s, model.line_stiffness, model.ballset)
+    u = c["race_displacement"]
+    assert np.all((u > 0) & (u < r - s))
+    line = model.line_stiffness * (r - s - u) ** (10 / 9)
+    assert c["elastic_force"] == pytest.approx(line, rel=1e-9)
+    disp = np.zeros((2, 5))
+    disp[:, 1], disp[:, 2] = u * math.cos(angle), u * math.sin(angle)
+    ball = -(ballset_state(disp, model.ballset).force[:, 1:3] @ [math.cos(angle), math.sin(angle)])
+    assert line == pytest.approx(ball, rel=1e-6)
+    assert c["elastic_force"][1] > c["elastic_force"][0]
+    assert c["max_ball_stress"][1] > c["max_ball_stress"][0]

@@ -117,6 +117,9 @@ class _Problem:
         self.fitted = self.tau <= options.window
         self.measured = np.stack([orbit.x.values[keep], orbit.y.values[keep]], axis=1)[self.fitted]
         self.sigma = max(info["noise_filtered_m"], 2e-8)
+        # the race bore is fixed: a trial clearance moves the journal radius with it (r = bore/2 - s)
+        if bearing.bore is not None and rotor.radius is not None:
+            rotor = replace(rotor, radius=None)
         self.bearing, self.rotor, self.case = bearing, rotor, case
         self.start = (info["start_x_m"], info["start_y_m"])
         self.duration = options.window + tail + 2e-3
