@@ -18,6 +18,7 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
+from auxbearing.errors import InputError
 
 
 def provenance(inputs: dict | None = None) -> dict:
@@ -90,8 +91,15 @@ def save_figure(fig, stem: str | Path, formats: tuple[str, ...] = ("png",)) -> l
 def atomic_output_dir(target: str | Path) -> Iterator[Path]:
     """Yield a scratch folder; on success its files replace those in ``target``, on error it vanishes."""
     target = Path(target)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    scratch = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
+    # Every check that can fail on the file system happens here, before any work is done,
+    # so a bad --out never costs a finished computation.
+    if target.exists() and not target.is_dir():
+        raise InputError(f"out = '{target}': exists and is not a folder; give a folder path")
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        scratch = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
+    except OSError as err:
+        raise InputError(f"out = '{target}': cannot create the output folder here ({err.strerror})") from None
     try:
         yield scratch
     except BaseException:

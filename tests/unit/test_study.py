@@ -10,6 +10,7 @@ from auxbearing.analysis.claims import VERDICTS
 from auxbearing.analysis.study_config import load_study_config
 from auxbearing.cli.main import cli
 from auxbearing.errors import InputError
+from auxbearing.io import atomic_output_dir
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "my_study.toml"
 
@@ -79,3 +80,17 @@ def test_every_subcommand_has_help(command):
     result = CliRunner().invoke(cli, [command, "--help"])
     assert result.exit_code == 0
     assert "Usage" in result.output
+
+
+def test_output_folder_that_cannot_be_made_is_one_line_exit_2(tmp_path):
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a folder")
+    # A parent that is a file: the folder cannot be created; said before any work is done.
+    result = CliRunner().invoke(cli, ["study", "--stage", "contact", "--out", str(blocker / "out"), "--quiet"])
+    assert result.exit_code == 2
+    assert result.output.startswith(f"error: out = '{blocker / 'out'}': cannot create the output folder")
+    assert "Traceback" not in result.output
+    # The target itself is a file (the CLI's option type says so first; the API says it too).
+    with pytest.raises(InputError, match="exists and is not a folder"):
+        with atomic_output_dir(blocker):
+            pass

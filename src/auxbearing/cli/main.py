@@ -31,6 +31,11 @@ class _Group(click.Group):
         except ConvergenceError as err:
             click.echo(f"error: {err}", err=True)
             ctx.exit(1)
+        except OSError as err:
+            # A full disk or a read-only folder is the machine's state, not a bug: one line.
+            where = f" '{err.filename}'" if err.filename else ""
+            click.echo(f"error: file{where}: {err.strerror or err}", err=True)
+            ctx.exit(EXIT_USER_ERROR)
 
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(self.commands)
