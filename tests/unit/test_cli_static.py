@@ -99,3 +99,18 @@ def test_static_study_writes_data_and_figures(tmp_path):
     assert summary["angular_exceeds_four_point_everywhere"] is True
     assert summary["provenance"]["auxbearing_version"]
     assert json.loads(result.output)["out"] == str(out)
+
+
+def test_out_of_range_load_is_flagged_on_stderr_and_json_stays_clean():
+    # 200 N*m on a 15 mm bore bearing: sigma_max ~ 4.9 GPa > 4200 MPa (ISO 76).
+    result = run("static", "--bearing", "QJ202", "--radial", "500", "--moment", "200", "--json")
+    assert result.exit_code == 0
+    data = json.loads(result.stdout)
+    assert data["safety_factor_s0"] < 1
+    assert result.stderr.startswith("warning: max contact stress")
+    assert "ISO 76" in result.stderr and "tilt" not in result.stderr
+    # 1e6 N*m: tilt far outside the small-tilt kinematics as well.
+    huge = run("static", "--bearing", "QJ202", "--moment", "1e6", "--json")
+    assert huge.stderr.count("warning:") == 2 and "small-tilt" in huge.stderr
+    calm = run("static", "--bearing", "QJ202", "--radial", "1000", "--moment", "5", "--json")
+    assert calm.stderr == ""

@@ -153,3 +153,17 @@ def test_regression_qj202_combined_load():
 def test_stribeck_discrete_constant():
     assert an.stribeck_discrete_constant(11) == pytest.approx(11 / (1 + 2 * (np.cos(2 * np.pi / 11) ** 2.5
                                                                               + np.cos(4 * np.pi / 11) ** 2.5)))
+
+
+def test_validity_warnings_follow_the_stated_limits():
+    assert an.stress_warning(4200e6) is None and "s0 = 0.512" in an.stress_warning(5250e6)
+    ds = an.load_distribution("QJ202", radial=500, moment=[5.0, 200.0, 1e6])
+    arm = ds.attrs["moment_arm_m"]
+    for case in range(3):
+        c = ds.isel(case=case)
+        tilt = float(np.hypot(c["tilt_x"], c["tilt_y"]))
+        beyond_tilt = arm * tilt**2 / 2 > an.SMALL_TILT_LIMIT * float(c["compression"].max())
+        found = an.validity_warnings(ds, case)
+        assert any("small-tilt" in w for w in found) == beyond_tilt
+        assert any("ISO 76" in w for w in found) == (float(c["max_stress"]) > 4200e6)
+    assert an.validity_warnings(ds, 0) == [] and len(an.validity_warnings(ds, 2)) == 2

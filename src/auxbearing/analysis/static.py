@@ -71,6 +71,52 @@ def safety_factor(max_stress: np.ndarray | float) -> np.ndarray:
         return np.where(sigma > 0.0, (ISO76_BALL_STRESS / np.where(sigma > 0.0, sigma, 1.0)) ** 3, np.inf)
 
 
+#: Largest neglected second-order tilt displacement r_ic theta^2 / 2, as a fraction of the largest
+#: pair compression, before a result is flagged: the ball-set kinematics are linear in the tilt.
+SMALL_TILT_LIMIT = 0.01
+
+
+def stress_warning(max_stress: float) -> str | None:
+    """A sentence when sigma_max exceeds ISO 76's 4200 MPa (s0 < 1), else None.
+
+    Above it the raceway deforms permanently (ISO 76:2006 defines 4200 MPa as the stress that
+    leaves a permanent deformation of 1e-4 D), so the elastic Hertz values are upper-bound
+    estimates, not predictions.
+
+    >>> stress_warning(2000e6) is None
+    True
+    >>> stress_warning(4500e6)[:40]
+    'max contact stress 4500 MPa exceeds the '
+    """
+    if not max_stress > ISO76_BALL_STRESS:
+        return None
+    s0 = float(safety_factor(max_stress))
+    return (f"max contact stress {max_stress / 1e6:.0f} MPa exceeds the {ISO76_BALL_STRESS / 1e6:.0f} MPa of ISO 76 "
+            f"(s0 = {s0:.3g} < 1): the raceways deform permanently and the elastic Hertz values are estimates only")
+
+
+def validity_warnings(ds: xr.Dataset, case: int = 0) -> list[str]:
+    """What makes one load case of :func:`load_distribution` leave the model's range, as sentences.
+
+    Two limits: the ISO 76 stress (:func:`stress_warning`) and the small-tilt kinematics of
+    :mod:`auxbearing.core.ballset`, whose curvature-centre distance is linear in the tilt; the
+    neglected term r_ic theta^2 / 2 is compared with the largest pair compression.
+
+    >>> validity_warnings(load_distribution("QJ202", radial=1000, moment=5))
+    []
+    """
+    c = ds.isel(case=case)
+    found = [w for w in (stress_warning(float(c["max_stress"])),) if w]
+    tilt = float(np.hypot(c["tilt_x"], c["tilt_y"]))
+    neglected = ds.attrs["moment_arm_m"] * tilt**2 / 2.0
+    compression = float(c["compression"].max())
+    if neglected > SMALL_TILT_LIMIT * compression:
+        found.append(f"tilt {tilt * 1e3:.3g} mrad is beyond the model's small-tilt kinematics: the neglected "
+                     f"r_ic theta^2/2 = {neglected * 1e6:.3g} um is {100 * neglected / max(compression, 1e-300):.3g} % "
+                     f"of the largest compression ({compression * 1e6:.3g} um)")
+    return found
+
+
 def stribeck_discrete_constant(ball_count: int) -> float:
     """Z / sum(cos^2.5 phi_j) over the loaded half, a ball on the load line (rigid rings, Pd = 0).
 

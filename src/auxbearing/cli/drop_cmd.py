@@ -7,6 +7,7 @@ the ``[rotor]`` / ``[drop]`` tables of a ``--config`` TOML file; options win ove
 
 from __future__ import annotations
 
+import contextlib
 import functools
 from dataclasses import replace
 from pathlib import Path
@@ -18,6 +19,7 @@ from rich.table import Table
 
 from auxbearing.analysis.drop import PAPER_DROP, DropCase, Rotor, drop_compare, read_config, run_drop
 from auxbearing.analysis.drop_params import PARAMETERS, Param, check, convert, display_value
+from auxbearing.analysis.static import stress_warning
 from auxbearing.cli.common import bearing_option, echo_json, json_option, out_option, resolve_bearing
 from auxbearing.errors import InputError
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
@@ -137,19 +139,24 @@ def drop_command(ctx, bearing_spec, config, params, out_dir, as_json, quiet):
     ("0.2mm", "6000rpm"); plain numbers use the unit named in each option's help.
     """
     bearing, rotor, case = build_inputs(ctx, bearing_spec, config, params)
-    with _progress(quiet) as bar:
-        task = bar.add_task(f"drop on {bearing.name} (first run compiles)", total=1.0)
-        ds, summary = run_drop(bearing, rotor, case, progress=lambda f: bar.update(task, completed=f))
-    if out_dir is not None:
-        from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress
+    # The output folder is checked before the integration, so a bad --out costs no run.
+    with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
+        with _progress(quiet) as bar:
+            task = bar.add_task(f"drop on {bearing.name} (first run compiles)", total=1.0)
+            ds, summary = run_drop(bearing, rotor, case, progress=lambda f: bar.update(task, completed=f))
+        if tmp is not None:
+            from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress
 
-        inputs = {"bearing": bearing.describe(), "rotor": rotor.describe(), "drop": case.describe()}
-        with atomic_output_dir(out_dir) as tmp:
+            inputs = {"bearing": bearing.describe(), "rotor": rotor.describe(), "drop": case.describe()}
             save_dataset(ds, tmp / "drop.nc", inputs)
             save_figure(plot_orbit_force(ds, PAPER_DROP.get(bearing.name)), tmp / "drop_orbit_force")
             save_figure(plot_speeds_stress(ds), tmp / "drop_speeds_stress")
             write_json(summary, tmp / "drop_summary.json", inputs)
+    if out_dir is not None:
         summary = {**summary, "out": str(out_dir)}
+    warning = stress_warning(summary["peak_ball_stress_MPa"] * 1e6)
+    if warning:
+        click.echo(f"warning: {warning}", err=True)
     if as_json:
         echo_json(summary)
         return

@@ -7,7 +7,14 @@ from rich.console import Console
 from rich.progress import Progress
 from rich.table import Table
 
-from auxbearing.analysis.static import AXIAL_CONDITIONS, TILT_CONDITIONS, load_distribution, static_study, summary
+from auxbearing.analysis.static import (
+    AXIAL_CONDITIONS,
+    TILT_CONDITIONS,
+    load_distribution,
+    static_study,
+    summary,
+    validity_warnings,
+)
 from auxbearing.cli.common import bearing_option, echo_json, json_option, out_option, quantity, resolve_bearing
 
 
@@ -43,6 +50,8 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     }
     ds = load_distribution(bearing, **loads, axial_condition=axial_condition, tilt=tilt, ball_constant=ball_constant)
     result = summary(ds)
+    for warning in validity_warnings(ds):
+        click.echo(f"warning: {warning}", err=True)
     if as_json:
         echo_json(result)
         return
