@@ -9,6 +9,7 @@ from __future__ import annotations
 import contextlib
 import json
 import math
+import os
 import shutil
 import tempfile
 from collections.abc import Iterator
@@ -87,14 +88,27 @@ def save_figure(fig, stem: str | Path, formats: tuple[str, ...] = ("png",)) -> l
     return paths
 
 
+def check_output_dir(target: str | Path) -> Path:
+    """``target`` as a Path if an output folder can be made there, else a one-line InputError.
+
+    Called where the command line reads ``--out``, before any work, so that a bad folder never
+    costs a finished computation; :func:`atomic_output_dir` checks again when it writes.
+    """
+    target = Path(target)
+    if target.exists() and not target.is_dir():
+        raise InputError(f"out = '{target}': exists and is not a folder; give a folder path")
+    existing = next(p for p in (target, *target.parents) if p.exists())
+    if not existing.is_dir():
+        raise InputError(f"out = '{target}': '{existing}' is a file, so no folder can be made below it")
+    if not os.access(existing, os.W_OK | os.X_OK):
+        raise InputError(f"out = '{target}': '{existing}' is not writable")
+    return target
+
+
 @contextlib.contextmanager
 def atomic_output_dir(target: str | Path) -> Iterator[Path]:
     """Yield a scratch folder; on success its files replace those in ``target``, on error it vanishes."""
-    target = Path(target)
-    # Every check that can fail on the file system happens here, before any work is done,
-    # so a bad --out never costs a finished computation.
-    if target.exists() and not target.is_dir():
-        raise InputError(f"out = '{target}': exists and is not a folder; give a folder path")
+    target = check_output_dir(target)
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
         scratch = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))

@@ -85,12 +85,34 @@ def test_every_subcommand_has_help(command):
 def test_output_folder_that_cannot_be_made_is_one_line_exit_2(tmp_path):
     blocker = tmp_path / "a_file"
     blocker.write_text("not a folder")
-    # A parent that is a file: the folder cannot be created; said before any work is done.
+    # A parent that is a file: the folder cannot be created; said while the options are read.
     result = CliRunner().invoke(cli, ["study", "--stage", "contact", "--out", str(blocker / "out"), "--quiet"])
     assert result.exit_code == 2
-    assert result.output.startswith(f"error: out = '{blocker / 'out'}': cannot create the output folder")
+    assert result.output.startswith(f"error: out = '{blocker / 'out'}': '{blocker}' is a file")
     assert "Traceback" not in result.output
     # The target itself is a file (the CLI's option type says so first; the API says it too).
     with pytest.raises(InputError, match="exists and is not a folder"):
         with atomic_output_dir(blocker):
+            pass
+
+
+@pytest.mark.parametrize("command", [["contact-sweep"], ["static-study"], ["drop-compare"], ["drop"],
+                                     ["experiment", "--measured", "x.csv"]])
+def test_every_out_option_is_checked_before_work(tmp_path, command):
+    blocker = tmp_path / "a_file"
+    blocker.write_text("")
+    result = CliRunner().invoke(cli, [*command, "--out", str(blocker / "out")])
+    assert result.exit_code == 2
+    assert result.output.count("\n") == 1 and "is a file, so no folder can be made" in result.output
+
+
+def test_output_folder_the_system_refuses_is_one_line(tmp_path, monkeypatch):
+    import tempfile
+
+    def refuse(*args, **kwargs):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(tempfile, "mkdtemp", refuse)
+    with pytest.raises(InputError, match="cannot create the output folder here \\(Permission denied\\)"):
+        with atomic_output_dir(tmp_path / "out"):
             pass

@@ -7,7 +7,7 @@ from pathlib import Path
 import click
 
 from auxbearing.bearing import BearingGeometry, bearing_names, load_bearing
-from auxbearing.io import dumps
+from auxbearing.io import check_output_dir, dumps
 from auxbearing.units import to_si
 
 
@@ -24,11 +24,17 @@ def json_option():
     return click.option("--json", "as_json", is_flag=True, help="Print one JSON object (for scripts).")
 
 
+def checked_out_dir(ctx: click.Context, param: click.Parameter, value: Path | None) -> Path | None:
+    """Click callback: refuse an output folder that cannot be made before the command does any work."""
+    # An InputError here reaches the group's one-line handler (click parses inside Group.invoke).
+    return None if value is None else check_output_dir(value)
+
+
 def out_option(default: str):
     """``--out``: output folder."""
     return click.option(
         "--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=default,
-        show_default=True, help="Output folder (created; files in it are replaced).",
+        show_default=True, callback=checked_out_dir, help="Output folder (created; files in it are replaced).",
     )
 
 

@@ -20,7 +20,14 @@ from rich.table import Table
 from auxbearing.analysis.drop import PAPER_DROP, DropCase, Rotor, drop_compare, read_config, run_drop
 from auxbearing.analysis.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.analysis.static import stress_warning
-from auxbearing.cli.common import bearing_option, echo_json, json_option, out_option, resolve_bearing
+from auxbearing.cli.common import (
+    bearing_option,
+    checked_out_dir,
+    echo_json,
+    json_option,
+    out_option,
+    resolve_bearing,
+)
 from auxbearing.errors import InputError
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
 
@@ -126,6 +133,7 @@ def _fmt(fmt: str, value) -> str:
 @config_option()
 @parameter_options
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
+              callback=checked_out_dir,
               help="Write drop.nc, the Fig. 10-11 style figures and drop_summary.json into this folder.")
 @json_option()
 @quiet_option()

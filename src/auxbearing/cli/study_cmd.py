@@ -12,7 +12,7 @@ from rich.table import Table
 from auxbearing.analysis.study import STAGES, run_study
 from auxbearing.analysis.study_config import load_study_config
 from auxbearing.bearing import bearing_names, get_bearing
-from auxbearing.cli.common import echo_json, json_option
+from auxbearing.cli.common import checked_out_dir, echo_json, json_option
 from auxbearing.materials import get_material, material_names
 
 _STUDY_HELP = """Reproduce the whole paper into a report with a claims check.
@@ -37,7 +37,7 @@ CONFIG is an optional TOML file; every section is optional and defaults to the p
 @click.option("--config", "config_path", type=click.Path(path_type=Path), default=None,
               help="Study TOML (every section optional; defaults are the paper's).")
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=Path("study"),
-              show_default=True, help="Output folder.")
+              show_default=True, callback=checked_out_dir, help="Output folder.")
 @click.option("--stage", "stages", multiple=True, type=click.Choice([key for key, _, _ in STAGES]),
               help="Run only these stages (repeatable). Default: all.")
 @click.option("--quiet", is_flag=True, help="No progress output (for scripts).")
