@@ -1,7 +1,7 @@
 """The drop model against what the source paper prints (Sec. II.D, Table II) and NOTES.md.
 
 The paper leaves the clearance, the rotor radius, the unbalance phase and the friction law
-near zero slip unstated (see auxbearing.analysis.drop.UNSTATED), so its peak force and stress
+near zero slip unstated (see auxbearing.analysis.drop_paper.UNSTATED), so its peak force and stress
 support only its qualitative claims and the order of magnitude; the constants of Table II that
 follow from geometry are checked tightly.
 """
@@ -11,6 +11,7 @@ from scipy.optimize import brentq
 
 from auxbearing import get_bearing
 from auxbearing.analysis import drop as ad
+from auxbearing.analysis import drop_paper as dp
 from auxbearing.core.ballset import kernel_params, radial_support
 from auxbearing.core.hertz import line_contact_constant
 
@@ -36,12 +37,12 @@ def test_table_ii_ball_constant_only_plausible_in_n_per_mm_1_5():
     the same order as with Hertz's K_b (8.05e9 N/m^1.5 at 35 deg)."""
     qj = get_bearing("QJ202")
     assert 0.3e-3 < _sag(qj, 5.42e5) < 0.8e-3
-    assert _sag(qj, ad.PAPER_BALL_CONSTANT) < 2e-6
+    assert _sag(qj, dp.PAPER_BALL_CONSTANT) < 2e-6
     assert _sag(qj, None) < 2e-6
-    assert ad.PAPER_BALL_CONSTANT == pytest.approx(1.714e10, rel=1e-3)
+    assert dp.PAPER_BALL_CONSTANT == pytest.approx(1.714e10, rel=1e-3)
 
 
-@pytest.mark.parametrize("ball_constant", [None, ad.PAPER_BALL_CONSTANT])
+@pytest.mark.parametrize("ball_constant", [None, dp.PAPER_BALL_CONSTANT])
 def test_four_point_bearing_takes_more_force_but_less_stress(ball_constant):
     """Sec. II.D: "the maximum collision force of 618 N is about 1.58 times that of angular contact
     bearing [391 N]. However, the maximum stress of 1483 MPa ... decreases ... compared with
@@ -56,4 +57,4 @@ def test_four_point_bearing_takes_more_force_but_less_stress(ball_constant):
     assert four["peak_ball_stress_MPa"] < angular["peak_ball_stress_MPa"]
     for ours, name, factor in ((four, "QJ202", 1.5), (angular, "7202", 2.0)):
         for key in ("peak_contact_force_N", "peak_ball_stress_MPa"):
-            assert 1 / factor < ours[key] / ad.PAPER_DROP[name][key] < factor
+            assert 1 / factor < ours[key] / dp.PAPER_DROP[name][key] < factor

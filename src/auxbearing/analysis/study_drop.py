@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from auxbearing.analysis.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
-from auxbearing.analysis.drop import PAPER_DROP, DropCase, Rotor, drop_compare, from_mapping, run_drop, sweep_dataset
+from auxbearing.analysis.drop import DropCase, Rotor, from_mapping, run_drop
+from auxbearing.analysis.drop_paper import PAPER_DROP, drop_compare, sweep_dataset
 from auxbearing.analysis.report_model import Figure, Section
 from auxbearing.bearing import BearingGeometry
 from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress, plot_sweep

@@ -7,7 +7,7 @@ import xarray as xr
 
 from auxbearing.analysis.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.analysis.report_model import Figure, Section
-from auxbearing.analysis.static import static_study
+from auxbearing.analysis.static_paper import static_study
 from auxbearing.bearing import BearingGeometry
 
 

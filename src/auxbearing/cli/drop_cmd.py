@@ -17,7 +17,8 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from auxbearing.analysis.drop import PAPER_DROP, DropCase, Rotor, drop_compare, read_config, run_drop
+from auxbearing.analysis.drop import DropCase, Rotor, read_config, run_drop
+from auxbearing.analysis.drop_paper import PAPER_DROP, drop_compare
 from auxbearing.analysis.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.analysis.static import stress_warning
 from auxbearing.cli.common import (

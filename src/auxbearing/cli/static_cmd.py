@@ -11,10 +11,10 @@ from auxbearing.analysis.static import (
     AXIAL_CONDITIONS,
     TILT_CONDITIONS,
     load_distribution,
-    static_study,
     summary,
     validity_warnings,
 )
+from auxbearing.analysis.static_paper import static_study
 from auxbearing.cli.common import bearing_option, echo_json, json_option, out_option, quantity, resolve_bearing
 
 

@@ -1,7 +1,7 @@
 """Figures of the rotor drop in the manner of Fig. 10-11 of the source paper, and the sweep.
 
 Each function takes the Dataset of :func:`auxbearing.analysis.drop.run_drop` (or the sweep of
-:func:`auxbearing.analysis.drop.sweep_dataset`) and returns a new
+:func:`auxbearing.analysis.drop_paper.sweep_dataset`) and returns a new
 :class:`matplotlib.figure.Figure`; nothing global (pyplot state, rcParams) is touched.
 """
 
@@ -107,7 +107,7 @@ def plot_sweep(sweep: xr.Dataset, paper: dict | None = None) -> Figure:
     Parameters
     ----------
     sweep : xarray.Dataset
-        :func:`auxbearing.analysis.drop.sweep_dataset`.
+        :func:`auxbearing.analysis.drop_paper.sweep_dataset`.
     paper : dict, optional
         The paper's peaks per bearing, drawn as horizontal dotted lines.
     """
