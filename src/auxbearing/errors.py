@@ -26,7 +26,9 @@ class InputError(ValueError):
 class ConvergenceError(RuntimeError):
     """A solver did not reach its tolerance; carries what it reached so nothing is hidden."""
 
-    def __init__(self, message: str, residual: float, iterations: int) -> None:
+    def __init__(self, message: str, residual: float, iterations: int, case: int | None = None) -> None:
         super().__init__(f"{message} (residual {residual:.3g}, {iterations} iterations)")
+        self.message = message
         self.residual = residual
         self.iterations = iterations
+        self.case = case  #: index of the failing case in a batch, when there is one

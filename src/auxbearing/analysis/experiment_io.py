@@ -19,21 +19,20 @@ regard to case; ``t`` is an alias of ``time``, ``omega`` and ``rpm`` of ``speed`
 
 from __future__ import annotations
 
-import math
-import re
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
 from auxbearing.errors import InputError
-from auxbearing.units import to_si
+from auxbearing.unit_csv import Column, read_unit_csv, unit_scale
 
 #: Dimension of each channel (keys of :data:`auxbearing.units.SI_UNITS`), required or not.
 CHANNELS = {"time": ("time", True), "x": ("length", True), "y": ("length", True),
             "speed": ("angular_speed", False)}
 _ALIASES = {"t": "time", "omega": "speed", "rpm": "speed", "spin": "speed"}
-_HEADER = re.compile(r"^\s*([A-Za-z_][\w\-]*)\s*(?:\[([^\]]*)\])?\s*$")
+_CSV_COLUMNS = {name: Column(dimension, required, {"time": "s", "speed": "rpm"}.get(name, "um"))
+                for name, (dimension, required) in CHANNELS.items()}
 #: Fewest samples a drop record must have.
 MIN_SAMPLES = 64
 #: Largest relative spread of the sampling interval accepted as uniform sampling.
@@ -41,11 +40,6 @@ UNIFORM_TOLERANCE = 0.01
 #: Slowest sampling that can still see an impact: the rotor/race contact lasts about 0.2 ms
 #: (half the ~0.4 ms contact period, NOTES item 7), so below 5 kHz an impact is one sample or none.
 MIN_SAMPLING_RATE = 5e3
-
-
-def _unit_scale(column: str, unit: str, dimension: str) -> float:
-    """SI value of one ``unit`` of ``column``; the error names the column."""
-    return to_si(f"column {column!r} unit", f"1 {unit}", dimension)
 
 
 def _channel(name: str) -> str | None:
@@ -80,81 +74,10 @@ def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: s
         missing unit, a field that is not a number, a missing value, time not increasing,
         non-uniform or too slow sampling, too few samples.
     """
-    path = Path(path)
-    if not path.is_file():
-        raise InputError.for_field("measured file", str(path), "not found")
-    units = {(_channel(k) or k): v for k, v in (units or {}).items()}
-    meta: dict[str, str] = {}
-    header: list[str] | None = None
-    header_line = 0
-    rows: list[list[str]] = []
-    line_numbers: list[int] = []
-    with path.open(encoding="utf-8-sig") as handle:
-        for number, line in enumerate(handle, start=1):
-            text = line.strip()
-            if not text:
-                continue
-            if text.startswith("#"):
-                key, sep, value = text.lstrip("#").partition("=")
-                if sep and key.strip():
-                    meta[key.strip()] = value.strip()
-                continue
-            if header is None:
-                if delimiter is None:
-                    delimiter = "," if "," in text else (";" if ";" in text else None)
-                header = [h.strip() for h in (text.split(delimiter) if delimiter else text.split())]
-                header_line = number
-                continue
-            fields = [f.strip() for f in (text.split(delimiter) if delimiter else text.split())]
-            if len(fields) != len(header):
-                raise InputError(f"{path.name}: line {number}: {len(fields)} fields, the header (line "
-                                 f"{header_line}) has {len(header)}")
-            rows.append(fields)
-            line_numbers.append(number)
-    if header is None:
-        raise InputError.for_field("measured file", str(path), "has no header line such as 'time [s], x [um], y [um]'")
-    columns: dict[str, tuple[int, float]] = {}
-    for index, label in enumerate(header):
-        match = _HEADER.match(label)
-        name = match.group(1) if match else label
-        channel = _channel(name)
-        if channel is None:
-            continue  # other channels (e.g. a trigger) are allowed and ignored
-        if channel in columns:
-            raise InputError(f"{path.name}: column {label!r}: channel {channel!r} appears twice in the header")
-        unit = (match.group(2) or "").strip() if match else ""
-        option = units.get(channel)
-        if option and unit and _unit_scale(label, unit, CHANNELS[channel][0]) != _unit_scale(
-                label, option, CHANNELS[channel][0]):
-            raise InputError(f"{path.name}: column {label!r}: header unit {unit!r} contradicts the option {option!r}")
-        unit = unit or option or ""
-        if not unit:
-            raise InputError(f"{path.name}: column {label!r} (line {header_line}) has no unit: write e.g. "
-                             f"'{name} [{'s' if channel == 'time' else 'rpm' if channel == 'speed' else 'um'}]' "
-                             f"or give it as an option")
-        columns[channel] = (index, _unit_scale(label, unit, CHANNELS[channel][0]))
-    for channel, (_, required) in CHANNELS.items():
-        if required and channel not in columns:
-            raise InputError(f"{path.name}: no {channel!r} column in the header (line {header_line}); "
-                             f"found {', '.join(header)}")
-    data = {}
-    for channel, (index, scale) in columns.items():
-        values = np.empty(len(rows))
-        for k, row in enumerate(rows):
-            text = row[index]
-            if text == "" or text.lower() in ("nan", "na", "null", "none"):
-                raise InputError(f"{path.name}: column {header[index]!r}, line {line_numbers[k]}: missing value")
-            try:
-                values[k] = float(text)
-            except ValueError:
-                raise InputError(f"{path.name}: column {header[index]!r}, line {line_numbers[k]}: "
-                                 f"{text!r} is not a number") from None
-            if not math.isfinite(values[k]):
-                raise InputError(f"{path.name}: column {header[index]!r}, line {line_numbers[k]}: "
-                                 f"{text!r} is not finite")
-        data[channel] = values * scale
-    where = [f"line {n}" for n in line_numbers]
-    return _checked(data, where, path.name, {h: h for h in header}, meta)
+    table = read_unit_csv(path, _CSV_COLUMNS, file_field="measured file", aliases=_ALIASES, units=units,
+                          delimiter=delimiter)
+    return _checked(table.data, [f"line {n}" for n in table.lines], Path(path).name,
+                    {h: h for h in table.header}, table.meta)
 
 
 def read_netcdf(path: str | Path, units: dict[str, str] | None = None) -> xr.Dataset:
@@ -191,7 +114,7 @@ def read_netcdf(path: str | Path, units: dict[str, str] | None = None) -> xr.Dat
         bad = np.nonzero(~np.isfinite(values))[0]
         if bad.size:
             raise InputError(f"{path.name}: variable {names[channel]!r}, index {bad[0]}: missing value")
-        data[channel] = values * _unit_scale(names[channel], unit, dimension)
+        data[channel] = values * unit_scale(names[channel], unit, dimension)
     sizes = {c: v.size for c, v in data.items()}
     if len(set(sizes.values())) != 1:
         raise InputError(f"{path.name}: channels have different lengths {sizes}")

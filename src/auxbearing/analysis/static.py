@@ -35,7 +35,7 @@ from auxbearing import __version__
 from auxbearing.bearing import BearingGeometry, load_bearing
 from auxbearing.core import ballset
 from auxbearing.core.static import DEFAULT_TOL, solve_cases
-from auxbearing.errors import InputError
+from auxbearing.errors import ConvergenceError, InputError
 from auxbearing.units import to_si, ureg
 
 #: ISO 76:2006 permissible contact stress at C0 for ball bearings (not self-aligning) [Pa].
@@ -172,6 +172,7 @@ def solve_loads(
     tilt: str = "free",
     ball_constant: object = None,
     tol: float = DEFAULT_TOL,
+    case_names: Sequence[str] | None = None,
 ) -> xr.Dataset:
     """Load distribution for 5-DOF load cases (SI) on one bearing (source paper Eq. 10-16).
 
@@ -187,6 +188,9 @@ def solve_loads(
         K_b override [N/m^1.5] or with units ("5.42e5 N/mm**1.5").
     tol : float
         Relative residual tolerance of the solver.
+    case_names : sequence of str, optional
+        How errors name each case ("line 7" of a loads file); default "load case i" when
+        there is more than one case.
 
     Returns
     -------
@@ -199,6 +203,9 @@ def solve_loads(
     loads = np.atleast_2d(np.asarray(loads, dtype=float))
     if loads.ndim != 2 or loads.shape[1] != 5 or not np.all(np.isfinite(loads)):
         raise InputError.for_field("loads", loads.shape, "must be finite (Fa, Fx, Fy, Mx, My) rows")
+    if case_names is None:
+        case_names = [f"load case {i}" for i in range(loads.shape[0])] if loads.shape[0] > 1 else [""]
+    where = [f" ({name})" if name else "" for name in case_names]
     k_override = _ball_constant(ball_constant)
     params = ballset.kernel_params(bearing, k_override)
     free = (axial_condition == "free", True, True, tilt == "free", tilt == "free")
@@ -208,19 +215,25 @@ def solve_loads(
         if np.any(needs):
             i = int(np.flatnonzero(needs)[0])
             raise InputError.for_field(
-                "axial", float(loads[i, 0]),
+                "axial" + where[i], float(loads[i, 0]),
                 f"a single {bearing.label} bearing with a free ring needs an axial load > 0 N pressing the balls "
                 "into their contact side to carry a radial load or moment; give one, or hold the ring "
                 "axially (axial_condition 'located', --axial-condition located) to get the axial reaction",
             )
-    sol = solve_cases(loads, params, free=free, tol=tol)
+    try:
+        sol = solve_cases(loads, params, free=free, tol=tol)
+    except ConvergenceError as err:
+        if err.case is None or not case_names[err.case]:
+            raise
+        raise ConvergenceError(f"{case_names[err.case]}: {err.message}", err.residual, err.iterations,
+                               err.case) from None
     ds = _dataset(bearing, params, loads, sol, axial_condition, tilt, tol, k_override)
     if one_sided:
         bad = (ds["load"] > 0.0) & (ds["contact_angle"] <= 0.0)
         if bool(bad.any()):
             i = int(np.flatnonzero(bad.any(("ball", "pair")).values)[0])
             raise InputError.for_field(
-                "loads", [float(v) for v in loads[i]],
+                "loads" + where[i], [float(v) for v in loads[i]],
                 f"no equilibrium on the contact side of this {bearing.label} bearing: the balls would run past "
                 "the groove bottom (loaded contact angle <= 0); raise the axial load or locate the ring axially",
             )
@@ -237,6 +250,7 @@ def load_distribution(
     tilt: str = "free",
     ball_constant: object = None,
     tol: float = DEFAULT_TOL,
+    case_names: Sequence[str] | None = None,
 ) -> xr.Dataset:
     """The paper's planar load distribution under (Fa, Fr, M), batched (source paper Eq. 14, 16).
 
@@ -248,7 +262,7 @@ def load_distribution(
         Sequences broadcast against each other into load cases.
     moment : float, str or sequence
         M [N m] tilting the ring in the plane of the radial load (My = -M, see module docstring).
-    axial_condition, tilt, ball_constant, tol
+    axial_condition, tilt, ball_constant, tol, case_names
         As :func:`solve_loads`.
 
     Returns
@@ -275,7 +289,8 @@ def load_distribution(
             "loads", (fa.size, fr.size, mm.size), "axial, radial, moment lengths must broadcast") from None
     loads = np.zeros((fa.size, 5))
     loads[:, 0], loads[:, 1], loads[:, 4] = fa, fr, -mm
-    ds = solve_loads(bearing, loads, axial_condition=axial_condition, tilt=tilt, ball_constant=ball_constant, tol=tol)
+    ds = solve_loads(bearing, loads, axial_condition=axial_condition, tilt=tilt, ball_constant=ball_constant, tol=tol,
+                     case_names=case_names)
     ds["radial_load"] = ("case", fr.astype(float), {"units": "N", "long_name": "Radial load Fr (along +x)"})
     ds["moment"] = ("case", mm.astype(float), {"units": "N*m", "long_name": "Moment M of source paper Eq. 14"})
     ds["tilt"] = ("case", -ds["tilt_y"].values, {"units": "rad", "long_name": "Tilt theta of source paper Eq. 10"})

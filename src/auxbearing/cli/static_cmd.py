@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+import contextlib
+from pathlib import Path
+
 import click
 from rich.console import Console
 from rich.progress import Progress
 from rich.table import Table
 
+from auxbearing import __version__
 from auxbearing.analysis.static import (
     AXIAL_CONDITIONS,
     TILT_CONDITIONS,
@@ -14,8 +18,35 @@ from auxbearing.analysis.static import (
     summary,
     validity_warnings,
 )
+from auxbearing.analysis.static_cases import RESULT_COLUMNS, case_rows, load_cases, worst_case, write_rows_csv
 from auxbearing.analysis.static_paper import static_study
-from auxbearing.cli.common import bearing_option, echo_json, json_option, out_option, quantity, resolve_bearing
+from auxbearing.cli.common import (
+    bearing_option,
+    checked_out_dir,
+    echo_json,
+    json_option,
+    out_option,
+    quantity,
+    resolve_bearing,
+)
+from auxbearing.io import atomic_output_dir, save_dataset, write_json
+
+
+def _condition_options(command):
+    """--axial-condition, --tilt, --ball-constant: how the ring is held and which K_b (static, static-cases)."""
+    for option in reversed((
+        click.option("--axial-condition", type=click.Choice(AXIAL_CONDITIONS), default="free", show_default=True,
+                     help="free: the axial load is given (source paper Eq. 14/16); located: the ring is held at "
+                          "zero axial displacement and the axial reaction is reported (needed for a single "
+                          "angular-contact bearing under pure radial load)."),
+        click.option("--tilt", type=click.Choice(TILT_CONDITIONS), default="free", show_default=True,
+                     help="free: the moment is given (Eq. 14); fixed: the ring is kept square, moment reaction "
+                          "reported."),
+        click.option("--ball-constant", default=None, metavar="K",
+                     help="Override the Hertz ball constant K_b, e.g. '1.71e10 N/m**1.5' (stresses stay Hertz)."),
+    )):
+        command = option(command)
+    return command
 
 
 @click.command("static")
@@ -26,14 +57,7 @@ from auxbearing.cli.common import bearing_option, echo_json, json_option, out_op
               help="Axial load Fa on the inner ring: a number in N, or with a unit ('500 N').")
 @click.option("--moment", default="0", show_default=True, metavar="MOMENT",
               help="Tilting moment M in the plane of the radial load: a number in N*m, or with a unit ('2 N*m').")
-@click.option("--axial-condition", type=click.Choice(AXIAL_CONDITIONS), default="free", show_default=True,
-              help="free: the axial load is given (source paper Eq. 14/16); located: the ring is held at zero "
-                   "axial displacement and the axial reaction is reported (needed for a single angular-contact "
-                   "bearing under pure radial load).")
-@click.option("--tilt", type=click.Choice(TILT_CONDITIONS), default="free", show_default=True,
-              help="free: the moment is given (Eq. 14); fixed: the ring is kept square, moment reaction reported.")
-@click.option("--ball-constant", default=None, metavar="K",
-              help="Override the Hertz ball constant K_b, e.g. '1.71e10 N/m**1.5' (stresses stay Hertz).")
+@_condition_options
 @json_option()
 def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, ball_constant, as_json):
     """Quasi-static load distribution of the ball set under Fa, Fr and M (source paper Eq. 9-16).
@@ -115,4 +139,59 @@ def static_study_command(bearing_4pt, bearing_ac, out_dir, as_json):
     click.echo(f"Wrote Fig. 6-8 data and figures in {out_dir}/")
 
 
-COMMANDS = [static_command, static_study_command]
+#: Most case rows printed as a table; the files hold all of them.
+_PRINTED_CASES = 40
+
+
+@click.command("static-cases")
+@bearing_option()
+@click.option("--loads", "loads_path", required=True, type=click.Path(dir_okay=False, path_type=Path),
+              metavar="FILE.csv", help="Load cases, one per row, units in the header: 'axial [N], radial [kN], "
+                                       "moment [N*m]' or the 5-DOF 'axial, force_x, force_y, moment_x, moment_y'.")
+@_condition_options
+@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
+              callback=checked_out_dir, help="Write static_cases.nc, static_cases.csv and static_cases.json here.")
+@json_option()
+def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_constant, out_dir, as_json):
+    """Every load case of a CSV file (a duty cycle, a load spectrum) in one batched solve.
+
+    Prints per case the ring displacements, the largest contact load, the max Hertz stress and
+    s0, names the worst case, and flags cases outside the model's range (stderr). Missing
+    columns are zero; the CSV format is that of a measured drop (units in brackets, '#' comments).
+    """
+    bearing = resolve_bearing(bearing_spec)
+    with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
+        ds = load_cases(bearing, loads_path, axial_condition=axial_condition, tilt=tilt,
+                        ball_constant=ball_constant)
+        rows = case_rows(ds)
+        worst = worst_case(rows)
+        result = {"bearing": bearing.name, "loads_file": str(loads_path), "cases": len(rows),
+                  "cases_with_warnings": sum(bool(r["warnings"]) for r in rows), "worst": worst, "results": rows}
+        if tmp is not None:
+            inputs = {"bearing": bearing.describe(), "loads_file": str(loads_path), "axial_condition": axial_condition,
+                      "tilt": tilt, "ball_constant": ball_constant}
+            save_dataset(ds, tmp / "static_cases.nc", inputs)
+            write_rows_csv(rows, tmp / "static_cases.csv", f"auxbearing {__version__}: {bearing.name}, "
+                                                            f"cases of {loads_path}")
+            write_json(result, tmp / "static_cases.json", inputs)
+    for row in rows:
+        for warning in row["warnings"]:
+            click.echo(f"warning: case on line {row['line']}: {warning}", err=True)
+    if as_json:
+        echo_json({**result, "out": str(out_dir) if out_dir is not None else None})
+        return
+    table = Table(title=f"{bearing.name} ({bearing.label}): {len(rows)} load cases from {loads_path}")
+    for *_, short in RESULT_COLUMNS:
+        table.add_column(short, justify="right")
+    for row in rows[:_PRINTED_CASES]:
+        table.add_row(*[fmt.format(row[key]) for key, _, fmt, _ in RESULT_COLUMNS])
+    Console().print(table)
+    if len(rows) > _PRINTED_CASES:
+        click.echo(f"... {len(rows) - _PRINTED_CASES} more cases" + (" in the files" if out_dir else "; use --out"))
+    click.echo(f"Worst case: line {worst['line']}, max stress {worst['max_stress_MPa']:.1f} MPa, "
+               f"s0 {worst['safety_factor_s0']:.3g}")
+    if out_dir is not None:
+        click.echo(f"Wrote static_cases.nc, static_cases.csv and static_cases.json in {out_dir}/")
+
+
+COMMANDS = [static_command, static_study_command, static_cases_command]

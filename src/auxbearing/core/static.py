@@ -414,6 +414,6 @@ def solve_cases(
         raise ConvergenceError(
             f"static equilibrium not reached for load case {i} (Fa, Fx, Fy, Mx, My) = ({load_text}) "
             f"[N, N m]: {STATUS_TEXT[int(status[i])]}; relative residual {rel[i]:.3g} > {tol:g}",
-            float(res[i]), int(its[i]),
+            float(res[i]), int(its[i]), i,
         )
     return StaticSolution(u, res, rel, its, status)

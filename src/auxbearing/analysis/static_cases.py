@@ -1,0 +1,153 @@
+"""A table of load cases (a duty cycle, a load spectrum) through the batched static solver.
+
+The CSV has one load case per row and its units in the header, read by
+:func:`auxbearing.unit_csv.read_unit_csv` (the same rules as a measured drop)::
+
+    # duty cycle of the touchdown bearing
+    axial [N], radial [kN], moment [N*m]
+    0,   0.5, 0
+    200, 1.0, 2
+
+Columns are either the paper's planar loads ``axial`` (Fa), ``radial`` (Fr), ``moment`` (M)
+or the 5-DOF loads ``axial``, ``force_x``, ``force_y``, ``moment_x``, ``moment_y`` (short
+names ``Fa``, ``Fr``, ``M``, ``Fx``, ``Fy``, ``Mx``, ``My``); a missing column is zero. Every case
+is solved in one batched Newton call (:func:`auxbearing.analysis.static.solve_loads`).
+"""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from auxbearing.analysis.static import load_distribution, solve_loads, validity_warnings
+from auxbearing.bearing import BearingGeometry
+from auxbearing.errors import InputError
+from auxbearing.unit_csv import Column, read_unit_csv
+
+PLANAR = ("axial", "radial", "moment")
+FIVE_DOF = ("axial", "force_x", "force_y", "moment_x", "moment_y")
+LOAD_COLUMNS = {
+    "axial": Column("force", False, "N"),
+    "radial": Column("force", False, "N"),
+    "moment": Column("moment", False, "N*m"),
+    "force_x": Column("force", False, "N"),
+    "force_y": Column("force", False, "N"),
+    "moment_x": Column("moment", False, "N*m"),
+    "moment_y": Column("moment", False, "N*m"),
+}
+ALIASES = {"fa": "axial", "fr": "radial", "m": "moment", "fx": "force_x", "fy": "force_y",
+           "mx": "moment_x", "my": "moment_y"}
+#: Columns of the results table: key, CSV header with unit, format, short console header.
+RESULT_COLUMNS = (
+    ("line", "line", "{:d}", "line"),
+    ("axial_displacement_um", "axial_displacement [um]", "{:.4f}", "δa [µm]"),
+    ("radial_displacement_um", "radial_displacement [um]", "{:.4f}", "δr [µm]"),
+    ("tilt_mrad", "tilt [mrad]", "{:.5f}", "θ [mrad]"),
+    ("max_contact_load_N", "max_contact_load [N]", "{:.2f}", "Q max [N]"),
+    ("max_stress_MPa", "max_stress [MPa]", "{:.1f}", "σ max [MPa]"),
+    ("safety_factor_s0", "safety_factor_s0 [1]", "{:.4g}", "s0"),
+    ("residual_N", "residual [N]", "{:.1e}", "resid. [N]"),
+)
+
+
+def read_load_cases(path: str | Path) -> tuple[dict[str, np.ndarray], list[int]]:
+    """Load columns [N, N m] by name and the file line of each case.
+
+    Raises
+    ------
+    InputError
+        As :func:`auxbearing.unit_csv.read_unit_csv` (an unknown column is an error here, so a
+        misspelt load is never dropped silently), plus: no load column, planar and 5-DOF
+        columns mixed, no rows.
+    """
+    table = read_unit_csv(path, LOAD_COLUMNS, file_field="loads file", aliases=ALIASES, unknown="error")
+    name = Path(path).name
+    if not table.data:
+        raise InputError(f"{name}: no load column in the header (line {table.header_line}); write e.g. "
+                         "'axial [N], radial [N], moment [N*m]'")
+    planar = {"radial", "moment"} & set(table.data)
+    spatial = set(FIVE_DOF[1:]) & set(table.data)
+    if planar and spatial:
+        raise InputError(f"{name}: columns {', '.join(sorted(planar))} (planar) and {', '.join(sorted(spatial))} "
+                         "(5-DOF) mixed; use axial, radial, moment or axial, force_x, force_y, moment_x, moment_y")
+    if not table.lines:
+        raise InputError(f"{name}: no load cases below the header (line {table.header_line})")
+    return table.data, table.lines
+
+
+def load_cases(bearing: BearingGeometry | str, path: str | Path, **options) -> xr.Dataset:
+    """Solve every load case of a CSV file on one bearing.
+
+    Parameters
+    ----------
+    bearing : BearingGeometry or str
+    path : path
+        The CSV (format in the module docstring).
+    **options
+        ``axial_condition``, ``tilt``, ``ball_constant``, ``tol`` of
+        :func:`auxbearing.analysis.static.solve_loads`; errors name the file line of the case.
+
+    Returns
+    -------
+    xarray.Dataset
+        That of :func:`~auxbearing.analysis.static.load_distribution` (planar columns) or
+        :func:`~auxbearing.analysis.static.solve_loads` (5-DOF columns), plus ``line``, the file
+        line of each case, and ``source_file`` in attrs.
+    """
+    data, lines = read_load_cases(path)
+    n = len(lines)
+    options.setdefault("case_names", [f"{Path(path).name}: line {line}" for line in lines])
+    column = {k: data.get(k, np.zeros(n)) for k in LOAD_COLUMNS}
+    if set(data) <= set(PLANAR):
+        ds = load_distribution(bearing, axial=column["axial"], radial=column["radial"], moment=column["moment"],
+                               **options)
+    else:
+        ds = solve_loads(bearing, np.column_stack([column[k] for k in FIVE_DOF]), **options)
+    ds["line"] = ("case", np.asarray(lines), {"units": "1", "long_name": "Line of the case in the loads file"})
+    ds.attrs["source_file"] = str(path)
+    return ds
+
+
+def case_rows(ds: xr.Dataset) -> list[dict]:
+    """One mapping per case in display units (the results table), with its validity warnings."""
+    radial = np.hypot(ds["displacement_x"].values, ds["displacement_y"].values)
+    tilt = np.hypot(ds["tilt_x"].values, ds["tilt_y"].values)
+    rows = []
+    for i in range(ds.sizes["case"]):
+        rows.append({
+            "line": int(ds["line"][i]),
+            "axial_displacement_um": float(ds["axial_displacement"][i]) * 1e6,
+            "radial_displacement_um": float(radial[i]) * 1e6,
+            "tilt_mrad": float(tilt[i]) * 1e3,
+            "max_contact_load_N": float(ds["max_contact_load"][i]),
+            "max_stress_MPa": float(ds["max_stress"][i]) / 1e6,
+            "safety_factor_s0": float(ds["safety_factor_s0"][i]),
+            "residual_N": float(ds["residual"][i]),
+            "warnings": validity_warnings(ds, i),
+        })
+    return rows
+
+
+def worst_case(rows: list[dict]) -> dict:
+    """The row with the highest max stress (lowest s0)."""
+    return max(rows, key=lambda r: r["max_stress_MPa"])
+
+
+def write_rows_csv(rows: list[dict], path: str | Path, comment: str = "") -> Path:
+    """The results table as CSV with units in the header (the input's own format).
+
+    Warnings go to a last column (quoted by :mod:`csv` where needed) so that a spreadsheet
+    shows them beside the case.
+    """
+    path = Path(path)
+    with path.open("w", encoding="utf-8", newline="") as handle:
+        if comment:
+            handle.write(f"# {comment}\n")
+        writer = csv.writer(handle, lineterminator="\n")
+        writer.writerow([*(label for _, label, _, _ in RESULT_COLUMNS), "warnings"])
+        for row in rows:
+            writer.writerow([*(fmt.format(row[key]) for key, _, fmt, _ in RESULT_COLUMNS), "; ".join(row["warnings"])])
+    return path
