@@ -96,3 +96,11 @@ def test_bad_sweep_range_leaves_no_output(tmp_path):
     assert result.exit_code == 2
     assert not out.exists()
     assert not list(tmp_path.iterdir())
+
+
+def test_stress_above_iso76_warns_on_stderr_only():
+    result = CliRunner().invoke(cli, ["contact", "--bearing", "QJ202", "--ball-load", "5 kN", "--json"])
+    assert result.exit_code == 0
+    assert json.loads(result.stdout)["inner"]["max_stress_MPa"] > 4200
+    assert result.stderr.startswith("warning: max contact stress") and "ISO 76" in result.stderr
+    assert CliRunner().invoke(cli, ["contact", "--ball-load", "1 kN", "--json"]).stderr == ""

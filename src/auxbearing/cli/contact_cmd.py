@@ -10,6 +10,7 @@ from rich.console import Console
 from rich.table import Table
 
 from auxbearing.analysis.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
+from auxbearing.analysis.static import stress_warning
 from auxbearing.cli.common import (
     bearing_option,
     echo_json,
@@ -51,6 +52,9 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
     bearing = resolve_bearing(bearing_spec, contact_angle, groove_ratio)
     load = quantity("--ball-load", ball_load, "force", "N")
     result = ball_contact(bearing, load, method=method)
+    warning = stress_warning(1e6 * max(result["inner"]["max_stress_MPa"], result["outer"]["max_stress_MPa"]))
+    if warning:
+        click.echo(f"warning: {warning}", err=True)
     if as_json:
         echo_json(result)
         return
