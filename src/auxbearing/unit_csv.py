@@ -20,6 +20,7 @@ from auxbearing.errors import InputError
 from auxbearing.units import to_si
 
 _HEADER = re.compile(r"^\s*([A-Za-z_][\w\-]*)\s*(?:\[([^\]]*)\])?\s*$")
+_WHITESPACE_HEADER_FIELD = re.compile(r"[^\s\[\]]+(?:\s*\[[^\]]*\])?")
 _MISSING = ("", "nan", "na", "null", "none")
 
 
@@ -108,7 +109,9 @@ def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: s
             if header is None:
                 if delimiter is None:
                     delimiter = "," if "," in text else (";" if ";" in text else None)
-                header = [h.strip() for h in (text.split(delimiter) if delimiter else text.split())]
+                # Whitespace-separated headers keep "name [unit]" together, even with a space before "[".
+                header = ([h.strip() for h in text.split(delimiter)] if delimiter
+                          else _WHITESPACE_HEADER_FIELD.findall(text))
                 header_line = number
                 continue
             fields = [f.strip() for f in (text.split(delimiter) if delimiter else text.split())]
