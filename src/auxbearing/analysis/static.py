@@ -205,6 +205,8 @@ def solve_loads(
         raise InputError.for_field("loads", loads.shape, "must be finite (Fa, Fx, Fy, Mx, My) rows")
     if case_names is None:
         case_names = [f"load case {i}" for i in range(loads.shape[0])] if loads.shape[0] > 1 else [""]
+    elif len(case_names) != loads.shape[0]:
+        raise InputError.for_field("case_names", len(case_names), f"must name each of the {loads.shape[0]} cases")
     where = [f" ({name})" if name else "" for name in case_names]
     k_override = _ball_constant(ball_constant)
     params = ballset.kernel_params(bearing, k_override)
