@@ -30,6 +30,13 @@ def checked_out_dir(ctx: click.Context, param: click.Parameter, value: Path | No
     return None if value is None else check_output_dir(value)
 
 
+def warn(*warnings: str | None, where: str = "") -> None:
+    """Print each non-empty warning as one ``warning: ...`` line on stderr (stdout stays clean JSON)."""
+    for text in warnings:
+        if text:
+            click.echo(f"warning: {where}{text}", err=True)
+
+
 def out_option(default: str):
     """``--out``: output folder."""
     return click.option(

@@ -18,6 +18,7 @@ from auxbearing.cli.common import (
     out_option,
     quantity,
     resolve_bearing,
+    warn,
 )
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
 from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
@@ -52,9 +53,7 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
     bearing = resolve_bearing(bearing_spec, contact_angle, groove_ratio)
     load = quantity("--ball-load", ball_load, "force", "N")
     result = ball_contact(bearing, load, method=method)
-    warning = stress_warning(1e6 * max(result["inner"]["max_stress_MPa"], result["outer"]["max_stress_MPa"]))
-    if warning:
-        click.echo(f"warning: {warning}", err=True)
+    warn(stress_warning(1e6 * max(result["inner"]["max_stress_MPa"], result["outer"]["max_stress_MPa"])))
     if as_json:
         echo_json(result)
         return

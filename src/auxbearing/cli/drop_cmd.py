@@ -28,6 +28,7 @@ from auxbearing.cli.common import (
     json_option,
     out_option,
     resolve_bearing,
+    warn,
 )
 from auxbearing.errors import InputError
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
@@ -163,9 +164,7 @@ def drop_command(ctx, bearing_spec, config, params, out_dir, as_json, quiet):
             write_json(summary, tmp / "drop_summary.json", inputs)
     if out_dir is not None:
         summary = {**summary, "out": str(out_dir)}
-    warning = stress_warning(summary["peak_ball_stress_MPa"] * 1e6)
-    if warning:
-        click.echo(f"warning: {warning}", err=True)
+    warn(stress_warning(summary["peak_ball_stress_MPa"] * 1e6))
     if as_json:
         echo_json(summary)
         return

@@ -28,6 +28,7 @@ from auxbearing.cli.common import (
     out_option,
     quantity,
     resolve_bearing,
+    warn,
 )
 from auxbearing.io import atomic_output_dir, save_dataset, write_json
 
@@ -74,8 +75,7 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     }
     ds = load_distribution(bearing, **loads, axial_condition=axial_condition, tilt=tilt, ball_constant=ball_constant)
     result = summary(ds)
-    for warning in validity_warnings(ds):
-        click.echo(f"warning: {warning}", err=True)
+    warn(*validity_warnings(ds))
     if as_json:
         echo_json(result)
         return
@@ -175,8 +175,7 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
                                                             f"cases of {loads_path}")
             write_json(result, tmp / "static_cases.json", inputs)
     for row in rows:
-        for warning in row["warnings"]:
-            click.echo(f"warning: case on line {row['line']}: {warning}", err=True)
+        warn(*row["warnings"], where=f"case on line {row['line']}: ")
     if as_json:
         echo_json({**result, "out": str(out_dir) if out_dir is not None else None})
         return
