@@ -8,6 +8,7 @@ means (``default_unit``); TOML values with a dimension must spell their unit ("6
 from __future__ import annotations
 
 import math
+import re
 from numbers import Real
 
 import pint
@@ -30,6 +31,16 @@ SI_UNITS: dict[str, str] = {
     "time": "s",
     "angular_speed": "rad/s",
     "damping": "N*s/m",
+    "density": "kg/m**3",
+    "specific_heat": "J/(kg*K)",
+    "thermal_conductivity": "W/(m*K)",
+    "thermal_expansion": "1/K",
+    "temperature": "K",
+    "power": "W",
+    "thermal_conductance": "W/K",
+    "heat_transfer_coefficient": "W/(m**2*K)",
+    "dynamic_viscosity": "Pa*s",
+    "kinematic_viscosity": "m**2/s",
     "dimensionless": "",
 }
 
@@ -61,6 +72,8 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
     0.610865
     >>> to_si("ball_load", 1000, "force", default_unit="N")
     1000.0
+    >>> round(to_si("ambient_temperature", "20 degC", "temperature"), 2)
+    293.15
     >>> to_si("ball_diameter", "6 kg", "length")
     Traceback (most recent call last):
     ...
@@ -101,6 +114,9 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
 def _parse_string(field: str, text: str, dimension: str, default_unit: str | None) -> pint.Quantity:
     try:
         parsed = ureg.Quantity(text.strip())
+    except pint.OffsetUnitCalculusError:
+        # "20 degC" is read by pint as 20 * degC, which it refuses for offset scales
+        parsed = _offset_quantity(field, text, dimension)
     except Exception:  # pint raises several unrelated types for malformed text
         raise InputError.for_field(
             field, text, f"cannot read it as a {_describe(dimension)} such as "
@@ -117,6 +133,20 @@ def _parse_string(field: str, text: str, dimension: str, default_unit: str | Non
     return parsed
 
 
+_NUMBER_AND_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.+?)\s*$")
+
+
+def _offset_quantity(field: str, text: str, dimension: str) -> pint.Quantity:
+    """A number followed by one offset unit ("20 degC"), built without pint's multiplication."""
+    match = _NUMBER_AND_UNIT.match(text)
+    try:
+        return Quantity(float(match.group(1)), match.group(2))
+    except Exception:  # no match, or a unit pint does not know
+        raise InputError.for_field(
+            field, text, f"cannot read it as a {_describe(dimension)} such as '{_example_value(dimension)}'"
+        ) from None
+
+
 _EXAMPLES = {
     "length": ("m, mm, um", "mm", "6 mm"),
     "angle": ("deg, rad", "deg", "35 deg"),
@@ -128,6 +158,16 @@ _EXAMPLES = {
     "time": ("s, ms", "s", "0.15 s"),
     "angular_speed": ("rpm, rad/s", "rpm", "6000 rpm"),
     "damping": ("N*s/m", "N*s/m", "1000 N*s/m"),
+    "density": ("kg/m^3, g/cm^3", "kg/m^3", "7810 kg/m^3"),
+    "specific_heat": ("J/(kg*K), J/(g*K)", "J/(kg*K)", "475 J/(kg*K)"),
+    "thermal_conductivity": ("W/(m*K)", "W/(m*K)", "46.6 W/(m*K)"),
+    "thermal_expansion": ("1/K, um/(m*K)", "1/K", "11.9e-6 1/K"),
+    "temperature": ("K, degC, degF", "degC", "20 degC"),
+    "power": ("W, kW", "W", "150 W"),
+    "thermal_conductance": ("W/K", "W/K", "0.5 W/K"),
+    "heat_transfer_coefficient": ("W/(m^2*K)", "W/(m^2*K)", "10 W/(m^2*K)"),
+    "dynamic_viscosity": ("Pa*s, mPa*s", "mPa*s", "20 mPa*s"),
+    "kinematic_viscosity": ("mm^2/s, cSt", "mm^2/s", "32 mm^2/s"),
     "dimensionless": ("a plain number", "", "0.52"),
 }
 
