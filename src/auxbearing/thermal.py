@@ -28,8 +28,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from auxbearing.analysis.contact import raceway_contact
 from auxbearing.bearing import BearingGeometry
+from auxbearing.contact import raceway_contact
 from auxbearing.core import thermal as kernel
 from auxbearing.core.bearing_friction import effusivity, heat_partition
 from auxbearing.errors import InputError
@@ -445,7 +445,9 @@ def build_network(
         expansion=np.array([shaft.thermal_expansion, ring.thermal_expansion, ball.thermal_expansion,
                             ring.thermal_expansion, frame.thermal_expansion]),
         ambient_temperature=ambient_temperature, journal_radius=journal_radius, bore_radius=bore_r,
-        inner_raceway_diameter=bearing.inner_raceway_diameter, outer_raceway_diameter=bearing.outer_raceway_diameter,
+        # groove bottoms placed so that d_o - d_i - 2 D = Pd (Harris & Kotzalas 2007, Essential Concepts, Ch. 2)
+        inner_raceway_diameter=bearing.inner_raceway_diameter - 0.5 * bearing.diametral_clearance,
+        outer_raceway_diameter=bearing.outer_raceway_diameter + 0.5 * bearing.diametral_clearance,
         ball_diameter=bearing.ball_diameter,
         journal_effusivity=effusivity(shaft.thermal_conductivity, shaft.density, shaft.specific_heat),
         race_effusivity=effusivity(ring.thermal_conductivity, ring.density, ring.specific_heat),

@@ -242,7 +242,7 @@ def sliding_friction_power(friction_coefficient, normal_force, slip_speed):
 
 @njit(cache=True)
 def effusivity(conductivity, density, specific_heat):
-    """Thermal effusivity e = sqrt(k rho c) [W s^(1/2)/(m^2 K)] (Incropera et al. 2007, Eq. 5.64 context).
+    """Thermal effusivity e = sqrt(k rho c) [W s^(1/2)/(m^2 K)] (Incropera et al. 2007, Sec. 5.7).
 
     Parameters
     ----------
