@@ -75,11 +75,6 @@ def natural_convection_coefficient(diameter: float, temperature_rise: float,
     diameter, temperature_rise, ambient_temperature : float
         D [m], surface minus ambient [K] (>= 0), T_a [K].
 
-    Returns
-    -------
-    float
-        h [W/(m^2 K)].
-
     Examples
     --------
     >>> round(natural_convection_coefficient(0.055, 20.0), 2)
@@ -103,11 +98,6 @@ def rotating_cylinder_coefficient(diameter: float, speed: float) -> float:
     diameter, speed : float
         D [m], spin speed omega [rad/s].
 
-    Returns
-    -------
-    float
-        h [W/(m^2 K)].
-
     Examples
     --------
     >>> round(rotating_cylinder_coefficient(0.015, 1047.2), 1)
@@ -127,11 +117,6 @@ def radiation_coefficient(emissivity: float, surface_temperature: float, ambient
         eps of the surface [-], in [0, 1]; the surroundings are large and black.
     surface_temperature, ambient_temperature : float
         T_s, T_a [K].
-
-    Returns
-    -------
-    float
-        h_r [W/(m^2 K)].
 
     Examples
     --------
@@ -155,11 +140,6 @@ def ball_race_conductance(bearing: BearingGeometry, contact_loads, race: str) ->
         Load on each ball/raceway contact of this race [N], >= 0.
     race : {"inner", "outer"}
 
-    Returns
-    -------
-    float
-        G [W/K].
-
     Examples
     --------
     >>> from auxbearing import get_bearing
@@ -182,6 +162,18 @@ class ThermalNetwork:
     ``ambient_conductances`` [W/K] and ``expansion`` alpha [1/K] are indexed by :data:`NODE_NAMES`.
     ``paths`` names each conductance for reports. ``journal_heat_share`` is the Charron share of the
     sliding heat that enters the journal (equal surface speeds).
+
+    Examples
+    --------
+    >>> from auxbearing import get_bearing
+    >>> net = build_network(get_bearing("QJ202"), 7.4e-3, contact_load=100.0, housing_to_ambient=1.0,
+    ...                     journal_to_ambient=0.5)
+    >>> q = net.heat_inputs(sliding_power=20.0, bearing_power=2.0)
+    >>> rise = net.steady_state(q) - net.ambient_temperature
+    >>> [round(float(x), 1) for x in rise]
+    [21.2, 70.1, 48.9, 26.6, 11.3]
+    >>> [round(x * 1e6, 2) for x in net.clearance_changes(net.ambient_temperature + rise)]
+    [4.66, -13.48]
     """
 
     capacities: np.ndarray
@@ -332,27 +324,23 @@ def build_network(
         Needs bore, outside_diameter, width and thermal data of both materials.
     journal_radius : float
         Rotor journal radius [m], at most the bore radius.
-    contact_load : float
-        Load on each loaded ball/raceway contact [N] sizing the contact ellipses (0: no path).
-    loaded_balls : int, optional
-        Balls carrying ``contact_load`` (default all); each has ``pairs_per_ball`` contacts per race.
+    contact_load, loaded_balls : float, int
+        Load [N] on each ball/raceway contact of ``loaded_balls`` balls (default all; ``pairs_per_ball``
+        contacts per race each) sizing the contact ellipses; 0 N leaves the balls without a path.
     journal_material, housing_material : Material or str
         Default the catalogue ``steel``.
-    journal_length : float, optional
-        Axial length of rotor lumped into the journal node [m]; default the bearing width.
-    journal_bore_radius : float
-        Bore of a hollow rotor [m].
+    journal_length, journal_bore_radius : float
+        Rotor length lumped into the journal node (default the bearing width) and bore of a hollow rotor [m].
     housing_outer_diameter, housing_length : float, optional
-        Default housing: a ring around the bearing whose wall equals the bearing section height
-        (outside diameter + outside diameter - bore), as wide as the bearing [m].
+        Default housing: a ring around the bearing with a wall as thick as the bearing section
+        ((outside diameter - bore) / 2) and as wide as the bearing [m].
     housing_mass, inner_race_mass, outer_race_mass : float, optional
-        Replace the masses from the envelope [kg].
-    housing_to_ambient : float, optional
-        Replace the housing's convection and radiation by this conductance [W/K].
-    journal_to_ambient : float
-        Extra journal conductance to ambient, e.g. into the rest of the rotor [W/K].
+        Replace the envelope masses [kg].
+    housing_to_ambient, journal_to_ambient : float
+        Housing conductance to ambient replacing convection and radiation; extra journal conductance
+        to ambient, e.g. into the rest of the rotor [W/K].
     convection_coefficient : float, optional
-        Use this h [W/(m^2 K)] for journal and housing instead of the correlations (ignored in vacuum).
+        h for journal and housing instead of the correlations [W/(m^2 K)]; ignored in vacuum.
     vacuum : bool
         No convection at all.
     emissivity : float

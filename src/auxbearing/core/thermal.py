@@ -257,11 +257,6 @@ def radial_growth(expansion, radius, temperature_rise):
     expansion, radius, temperature_rise : float
         alpha [1/K], R [m], dT [K].
 
-    Returns
-    -------
-    float
-        dR [m].
-
     Examples
     --------
     >>> round(radial_growth(11.9e-6, 7.5e-3, 100.0) * 1e6, 4)
@@ -284,11 +279,6 @@ def journal_clearance_change(ring_expansion, bore_radius, ring_rise, journal_exp
         Inner ring: alpha [1/K], bore radius [m], temperature rise [K].
     journal_expansion, journal_radius, journal_rise : float
         Journal: alpha [1/K], radius [m], temperature rise [K].
-
-    Returns
-    -------
-    float
-        dc [m]; negative when the gap closes.
 
     Examples
     --------
@@ -373,11 +363,6 @@ def constriction_resistance(semi_major, semi_minor, conductivity):
     conductivity : float
         k of the body [W/(m K)].
 
-    Returns
-    -------
-    float
-        R [K/W].
-
     Examples
     --------
     >>> round(constriction_resistance(1e-3, 1e-3, 50.0), 6)
@@ -399,11 +384,6 @@ def contact_conductance(semi_major, semi_minor, conductivity_1, conductivity_2):
         Contact ellipse semi-axes a >= b [m].
     conductivity_1, conductivity_2 : float
         k of the two bodies [W/(m K)].
-
-    Returns
-    -------
-    float
-        G [W/K].
 
     Examples
     --------
@@ -428,11 +408,6 @@ def shell_resistance(inner_radius, outer_radius, length, conductivity):
         r1 <= r2 and L [m].
     conductivity : float
         k [W/(m K)].
-
-    Returns
-    -------
-    float
-        R [K/W].
 
     Examples
     --------
