@@ -304,47 +304,50 @@ def palmgren_dent_depth(load, ball_diameter, curvature_sum_1, curvature_sum_2):
     return PALMGREN_DENT_COEFFICIENT * q * q * curvature_sum_1 * curvature_sum_2 / ball_diameter
 
 
+def dwell_width_ratio(exponent=STRESS_LIFE_EXPONENT, slope=WEIBULL_SLOPE):
+    """Width of raceway a standing contact damages, over its semi-minor axis b [-].
+
+    Under a contact that loads and unloads in place, the surface pressure at x along the track is
+    sigma sqrt(1 - (x/b)^2) (Hertz, Harris & Kotzalas 2007, Ch. 6), so by the stress-life law and
+    the Weibull sum the strip contributes int (1 - x^2/b^2)^(n e/2) dx = b B(1/2, n e/2 + 1): the
+    same as a strip of this width at the full stress. One raceway point per such width lets the
+    point under a standing ball carry the contact's damage unreduced.
+
+    Examples
+    --------
+    >>> round(dwell_width_ratio(), 4)
+    0.7388
+    """
+    power = 0.5 * exponent * slope
+    return math.sqrt(math.pi) * math.gamma(power + 1.0) / math.gamma(power + 1.5)
+
+
 @njit(cache=True)
-def _visit(position, stress, half_width, n_elements, out_elem, out_ball, out_value, fill):
+def _visit(position, stress, n_elements, out_elem, out_ball, out_value, fill):
     """One pass over the samples: count (``fill`` False) or write the raceway-point events."""
     n_time, n_ball = position.shape
     count = 0
     for n in range(n_time):
         for j in range(n_ball):
-            u1, s1, w1 = position[n, j], stress[n, j], half_width[n, j]
-            if n == 0:
-                u0, s0, w0 = u1, 0.0, 0.0
-            else:
-                u0, s0, w0 = position[n - 1, j], stress[n - 1, j], half_width[n - 1, j]
-            lo = math.floor(min(u0 - w0, u1 - w1))
-            hi = math.ceil(max(u0 + w0, u1 + w1))
-            for m in range(lo, hi + 1):
-                was = abs(m - u0) < w0
-                now = abs(m - u1) < w1
+            u1, s1 = position[n, j], stress[n, j]
+            u0, s0 = (u1, 0.0) if n == 0 else (position[n - 1, j], stress[n - 1, j])
+            m0 = math.floor(u0 + 0.5)
+            m1 = math.floor(u1 + 0.5)
+            for m in range(min(m0, m1), max(m0, m1) + 1):
+                was = m == m0 and s0 > 0.0
+                now = m == m1 and s1 > 0.0
                 crossing = 0.0
-                crosses = n > 0 and (u0 - m) * (u1 - m) < 0.0
+                crosses = (u0 - m) * (u1 - m) < 0.0
                 if crosses:
                     crossing = s0 + (m - u0) / (u1 - u0) * (s1 - s0)
                     crosses = crossing > 0.0
-                ends = n == n_time - 1 and now
                 if not (was or now or crosses):
                     continue
-                k = ((m % n_elements) + n_elements) % n_elements
-                emit = 0
-                if not was:
-                    emit += 1
-                if crosses:
-                    emit += 1
-                if now:
-                    emit += 1
-                if (was or crosses) and not now:
-                    emit += 1
-                if ends:
-                    emit += 1
+                closes = (not now) or n == n_time - 1
                 if fill:
-                    values = (0.0 if not was else -1.0, crossing if crosses else -1.0,
-                              s1 * math.sqrt(max(0.0, 1.0 - ((m - u1) / w1) ** 2)) if now else -1.0,
-                              0.0 if ((was or crosses) and not now) or ends else -1.0)
+                    k = ((m % n_elements) + n_elements) % n_elements
+                    values = (-1.0 if was else 0.0, crossing if crosses else -1.0, s1 if now else -1.0,
+                              0.0 if closes else -1.0)
                     for v in values:
                         if v >= 0.0:
                             out_elem[count] = k
@@ -352,28 +355,26 @@ def _visit(position, stress, half_width, n_elements, out_elem, out_ball, out_val
                             out_value[count] = v
                             count += 1
                 else:
-                    count += emit
+                    count += (not was) + crosses + now + closes
     return count
 
 
-def overrolling_events(position, stress, half_width, n_elements):
+def overrolling_events(position, stress, n_elements):
     """Stress history of every raceway point of one track, as chronological events.
 
-    The track is cut into ``n_elements`` points (element centres at whole numbers of ``position``).
-    A point is loaded by a ball while the contact ellipse covers it, |u - m| < w, with the Hertz
-    surface pressure there, S sqrt(1 - ((u - m)/w)^2) (the Hertz ellipsoidal pressure, Harris & Kotzalas 2007, Ch. 6); a
-    ball that passes a point between two samples loads it with the stress interpolated at the
-    crossing. Each loading starts and ends with a zero, so every point's history is a train of
-    pulses (one per over-rolling or dwell) ready for cycle counting.
+    The track is cut into ``n_elements`` points, centred at the whole numbers of ``position``. A
+    point carries the stress of the ball whose contact centre is nearest to it (within half a
+    pitch); a ball that passes a point between two samples loads it with the stress interpolated
+    at the moment it crosses the point's centre. Every loading starts and ends with a zero, so each
+    point's history is a train of pulses (one per over-rolling or standing load) whose peaks are
+    the contact stresses, ready for cycle counting.
 
     Parameters
     ----------
     position : array (time, ball)
-        Contact centre along the track in element pitches [-], unwrapped (continuous).
+        Contact centre along the track in point pitches [-], unwrapped (continuous).
     stress : array (time, ball)
         Contact max stress [Pa], >= 0.
-    half_width : array (time, ball)
-        Contact half-width along the track in element pitches [-]; zero when unloaded.
     n_elements : int
         Raceway points around the track.
 
@@ -386,13 +387,12 @@ def overrolling_events(position, stress, half_width, n_elements):
 
     Examples
     --------
-    >>> pos = np.array([[0.0], [2.0]]); s = np.full((2, 1), 1e9); w = np.full((2, 1), 0.5)
-    >>> e, b, v = overrolling_events(pos, s, w, 8)
+    >>> e, b, v = overrolling_events(np.array([[0.0], [2.2]]), np.full((2, 1), 1e9), 8)
     >>> [e.tolist(), (v / 1e9).tolist()]
-    [[0, 0, 0, 1, 1, 1, 2, 2, 2], [0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0]]
+    [[0, 0, 0, 1, 1, 1, 2, 2, 2, 2], [0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0]]
     """
     args = (np.ascontiguousarray(position, dtype=float), np.ascontiguousarray(stress, dtype=float),
-            np.ascontiguousarray(half_width, dtype=float), int(n_elements))
+            int(n_elements))
     size = _visit(*args, np.empty(0, np.int64), np.empty(0, np.int64), np.empty(0), False)
     element = np.empty(size, np.int64)
     ball = np.empty(size, np.int64)
