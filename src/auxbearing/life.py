@@ -26,7 +26,8 @@ Lundberg-Palmgren's own sums over the Z ball loads (Harris & Kotzalas 2007, Ch. 
 
 Dent (:func:`dent_per_drop`): Palmgren's permanent set at the largest contact load of a drop,
 against ISO 76's 1e-4 D; depths of successive drops are added, as if every drop dented the same spot
-(conservative: a repeated equal load mostly shakes down elastically).
+(conservative: a repeated equal load mostly shakes down elastically). Palmgren's formula has no
+yield threshold, so under this rule even drops far below 4200 MPa reach the limit after enough drops.
 """
 
 from __future__ import annotations
