@@ -17,8 +17,9 @@ Four pieces, each with the source it follows:
   as L^-e = L_i^-e + L_e^-e with e = 10/9, and Q_ci/Q_ce follows Lundberg-Palmgren's capacity
   formula (Harris & Kotzalas, Rolling Bearing Analysis, 5th ed., 2007, Essential Concepts Ch. 11).
   The ratio bracket below reproduces every entry of ISO 281 Table 2 to its printed 0.1 when the
-  fc expression of ISO/TR 1281-1 is evaluated with it; ISO/TS 16281 splits C the same way with
-  the rounded constants J_r/J_1 = 0.407, J_r/J_2 = 0.389, J_2/J_1 = 1.044 (here exact).
+  fc expression of ISO/TR 1281-1 is evaluated with it. Public ISO/TS 16281 codes split C the same
+  way with the rounded J_r/J_1 = 0.407, J_r/J_2 = 0.389, J_2/J_1 = 1.044 (here exact; the
+  standard's text was not retrieved).
 * A stress-life law for one raceway point: N_f(S) = N_c (sigma_c/S)^9 over-rollings, where
   sigma_c is the Hertz stress of the contact at Q_c and N_c the over-rollings a raceway point takes
   in 10^6 revolutions. The exponent 9 is Lundberg-Palmgren's: life ~ Q^-3 and sigma ~ Q^(1/3)
