@@ -17,6 +17,7 @@ from auxbearing.errors import InputError
 
 ureg = pint.UnitRegistry()
 ureg.define("rpm = revolution / minute")
+ureg.define("rps = revolution / second")
 Quantity = ureg.Quantity
 
 #: SI unit of each physical dimension the package reads.
@@ -91,10 +92,8 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
             raise InputError.for_field(
                 field, value, f"needs a unit, e.g. '{value} {_example_unit(dimension)}'"
             )
-    elif isinstance(value, pint.Quantity):
-        quantity = value
-    elif isinstance(value, str):
-        quantity = _parse_string(field, value, dimension, default_unit)
+    elif isinstance(value, (pint.Quantity, str)):
+        quantity = parse_quantity(field, value, dimension, default_unit)
     else:
         raise InputError.for_field(field, value, f"must be a {_describe(dimension)}")
     try:
@@ -106,9 +105,32 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
             f"unit {quantity.units} is not a {_describe(dimension)} "
             f"(use e.g. {_examples(dimension)})",
         ) from None
+    except (OverflowError, TypeError, ValueError):  # "10**400 N": pint evaluates a huge integer
+        raise InputError.for_field(field, value, "is not a finite number") from None
     if math.isnan(magnitude) or math.isinf(magnitude):
         raise InputError.for_field(field, value, "must be a finite number")
     return magnitude
+
+
+def parse_quantity(field: str, value: object, dimension: str, default_unit: str | None = None) -> pint.Quantity:
+    """A string or quantity as a pint Quantity; a frequency given for an angular speed is revolutions.
+
+    pint treats the radian as dimensionless, so "100 Hz" would convert to 100 rad/s; for a speed of
+    rotation Hz (and rps) means revolutions per second, which is what a person who types it means.
+
+    Examples
+    --------
+    >>> round(to_si("speed", "100 Hz", "angular_speed"), 4)  # 100 revolutions per second
+    628.3185
+    >>> to_si("ball_load", "10**400 N", "force")
+    Traceback (most recent call last):
+    ...
+    auxbearing.errors.InputError: ball_load = '10**400 N': is not a finite number
+    """
+    quantity = value if isinstance(value, pint.Quantity) else _parse_string(field, str(value), dimension, default_unit)
+    if dimension == "angular_speed" and "hertz" in str(quantity.units):
+        quantity = quantity * ureg.Quantity(1.0, "revolution")
+    return quantity
 
 
 def _parse_string(field: str, text: str, dimension: str, default_unit: str | None) -> pint.Quantity:
@@ -122,8 +144,12 @@ def _parse_string(field: str, text: str, dimension: str, default_unit: str | Non
             field, text, f"cannot read it as a {_describe(dimension)} such as "
             f"'{_example_value(dimension)}'"
         ) from None
-    if not isinstance(parsed, pint.Quantity):  # pint returns a bare number for "5"
-        parsed = Quantity(float(parsed), "")
+    try:
+        if not isinstance(parsed, pint.Quantity):  # pint returns a bare number for "5"
+            parsed = Quantity(float(parsed), "")
+        parsed = Quantity(float(parsed.magnitude), parsed.units)  # a huge integer overflows here, not later
+    except (OverflowError, TypeError, ValueError):
+        raise InputError.for_field(field, text, "is not a finite number") from None
     if parsed.dimensionless and dimension != "dimensionless" and str(parsed.units) == "dimensionless":
         if default_unit is None:
             raise InputError.for_field(

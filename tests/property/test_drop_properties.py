@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from auxbearing import get_bearing
-from auxbearing.analysis import drop as ad
+from auxbearing import drop as ad
 from auxbearing.core import drop as cd
 from auxbearing.core.ballset import radial_support
 

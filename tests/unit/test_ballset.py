@@ -1,13 +1,14 @@
-"""The one ball-set model (auxbearing.core.ballset)."""
+"""The one ball-set model: the pair kernel (auxbearing.core.ballset) and its array face (auxbearing.ballset)."""
 
 import math
 
 import numpy as np
 import pytest
 
+from auxbearing import ballset as bs
 from auxbearing import get_bearing
-from auxbearing.analysis.contact import raceway_contact
-from auxbearing.core import ballset as bs
+from auxbearing.contact import raceway_contact
+from auxbearing.core import ballset as cb
 
 QJ202 = get_bearing("QJ202")
 B7202 = get_bearing("7202")
@@ -15,57 +16,46 @@ B209 = get_bearing("209")
 STATE = np.array([3e-6, 10e-6, 2e-6, 1e-4, -2e-4])
 
 
-def test_params_header_and_cache():
-    p = bs.kernel_params(QJ202)
-    head = bs.unpack(p)
-    assert head["ball_count"] == 11
-    assert list(head["signs"]) == [1.0, -1.0]
-    assert head["curvature_centre_distance"] == pytest.approx(0.04 * 6e-3)
-    assert head["moment_arm"] == pytest.approx(QJ202.inner_curvature_centre_radius)
-    np.testing.assert_allclose(head["azimuths"], 2 * np.pi * np.arange(11) / 11)
-    assert bs.kernel_params(QJ202) is p  # cached per bearing
-    assert list(bs.unpack(bs.kernel_params(B7202))["signs"]) == [1.0]
-    assert list(bs.unpack(bs.kernel_params(B209))["signs"]) == [0.0]
+def test_params_fields_and_cache():
+    p = bs.ballset_params(QJ202)
+    assert p.cos_azimuth.size == 11
+    assert list(p.signs) == [1.0, -1.0]
+    assert p.curvature_distance == pytest.approx(0.04 * 6e-3)
+    assert p.moment_arm == pytest.approx(QJ202.inner_curvature_centre_radius)
+    np.testing.assert_allclose(np.arctan2(p.sin_azimuth, p.cos_azimuth) % (2 * np.pi), 2 * np.pi * np.arange(11) / 11,
+                               atol=1e-15)
+    assert bs.ballset_params(QJ202) is p  # cached per bearing
+    assert list(bs.ballset_params(B7202).signs) == [1.0]
+    assert list(bs.ballset_params(B209).signs) == [0.0]
 
 
 def test_bad_ball_constant():
     with pytest.raises(ValueError, match="ball_constant"):
-        bs.kernel_params(QJ202, ball_constant=-1.0)
+        bs.ballset_params(QJ202, ball_constant=-1.0)
 
 
 @pytest.mark.parametrize("bearing", [QJ202, B209])
 def test_hermite_tables_match_exact_hertz_between_nodes(bearing):
     """Interpolation error at the mid-points between table nodes (measured ~6e-14)."""
-    p = bs.kernel_params(bearing)
+    p = bs.ballset_params(bearing)
     nodes = np.linspace(0.0, np.pi / 2, bs.TABLE_POINTS)
     mid = 0.5 * (nodes[1:] + nodes[:-1])
-    for which, exact in enumerate(bs._exact_tables(bearing, mid)):
-        value, _ = bs._table_np(p, which, mid)
+    for row, exact in enumerate(bs._exact_rows(bearing, mid)):
+        value = np.array([cb.table(p, row, x)[0] for x in mid])
         assert np.max(np.abs(value / exact - 1.0)) < 1e-9
 
 
 def test_ball_constant_at_free_angle_is_eq15():
-    p = bs.kernel_params(QJ202)
+    p = bs.ballset_params(QJ202)
     k_i = raceway_contact(QJ202, 0.0, "inner").stiffness
     k_o = raceway_contact(QJ202, 0.0, "outer").stiffness
     expected = k_i * k_o / (k_i ** (2 / 3) + k_o ** (2 / 3)) ** 1.5
-    assert bs._table_np(p, 0, np.array([QJ202.contact_angle]))[0][0] == pytest.approx(float(expected), rel=1e-12)
-
-
-@pytest.mark.parametrize("bearing", [QJ202, B7202, B209, QJ202.with_changes(diametral_clearance=10e-6)])
-def test_compiled_and_vectorised_forms_agree(bearing):
-    p = bs.kernel_params(bearing)
-    force, jac, qmax, smax = bs.ballset_forces(STATE, p)
-    st = bs.ballset_state(STATE, p)
-    np.testing.assert_allclose(force, st.force, rtol=1e-12, atol=1e-9 * np.abs(force).max())
-    np.testing.assert_allclose(jac, st.jacobian, rtol=1e-12, atol=1e-12 * np.abs(jac).max())
-    assert qmax == pytest.approx(st.load.max(), rel=1e-13)
-    assert smax == pytest.approx(max(st.stress_inner.max(), st.stress_outer.max()), rel=1e-13)
+    assert cb.table(p, cb.K_B, QJ202.contact_angle)[0] == pytest.approx(float(expected), rel=1e-12)
 
 
 @pytest.mark.parametrize("bearing", [QJ202, B7202, B209])
 def test_jacobian_matches_finite_differences(bearing):
-    p = bs.kernel_params(bearing)
+    p = bs.ballset_params(bearing)
     u = STATE * 5 if bearing is B209 else STATE  # 209 has clearance: move further to load balls
     jac = bs.ballset_state(u, p).jacobian
     steps = np.array([1e-10, 1e-10, 1e-10, 1e-8, 1e-8])
@@ -79,9 +69,9 @@ def test_jacobian_matches_finite_differences(bearing):
 
 def test_resultant_is_the_sum_of_pair_forces():
     """Eq. 14: Fa = -sum Q sin(alpha) with signs, Fr = -sum Q cos(alpha) cos(phi), moments with r_ic."""
-    p = bs.kernel_params(QJ202)
+    p = bs.ballset_params(QJ202)
     st = bs.ballset_state(STATE, p)
-    phi = bs.unpack(p)["azimuths"][:, None]
+    phi = np.arctan2(p.sin_azimuth, p.cos_azimuth)[:, None]
     sigma = np.array([1.0, -1.0])
     axial = -(st.load * sigma * np.sin(st.contact_angle)).sum()
     radial = -(st.load * np.cos(st.contact_angle))
@@ -95,14 +85,14 @@ def test_resultant_is_the_sum_of_pair_forces():
 
 def test_zero_displacement_zero_clearance_carries_nothing():
     for bearing in (QJ202, B7202):
-        st = bs.ballset_state(np.zeros(5), bs.kernel_params(bearing))
+        st = bs.ballset_state(np.zeros(5), bs.ballset_params(bearing))
         assert np.all(st.load == 0.0) and np.all(st.force == 0.0) and np.all(st.jacobian == 0.0)
         assert np.allclose(st.compression, 0.0, atol=1e-18)
         np.testing.assert_allclose(st.contact_angle, bearing.contact_angle, rtol=1e-12)
 
 
 def test_four_point_radial_compresses_both_pairs_equally():
-    st = bs.ballset_state([0.0, 10e-6, 0.0, 0.0, 0.0], bs.kernel_params(QJ202))
+    st = bs.ballset_state([0.0, 10e-6, 0.0, 0.0, 0.0], bs.ballset_params(QJ202))
     assert st.load[0, 0] > 0.0
     np.testing.assert_allclose(st.load[:, 0], st.load[:, 1], rtol=1e-12)
     assert abs(st.force[0]) < 1e-9 * abs(st.force[1])
@@ -110,32 +100,34 @@ def test_four_point_radial_compresses_both_pairs_equally():
 
 def test_types_differ_only_through_geometry():
     """An angular-contact ball is pair 1 of the four-point ball at the same displacement."""
-    four = bs.ballset_state(STATE, bs.kernel_params(QJ202))
-    angular = bs.ballset_state(STATE, bs.kernel_params(QJ202.with_changes(type="angular_contact")))
+    four = bs.ballset_state(STATE, bs.ballset_params(QJ202))
+    angular = bs.ballset_state(STATE, bs.ballset_params(QJ202.with_changes(type="angular_contact")))
     np.testing.assert_array_equal(angular.load[:, 0], four.load[:, 0])
     np.testing.assert_array_equal(angular.contact_angle[:, 0], four.contact_angle[:, 0])
 
 
 def test_contacts_never_pull():
-    st = bs.ballset_state([-5e-6, -5e-6, 0.0, 0.0, 0.0], bs.kernel_params(B7202))
+    st = bs.ballset_state([-5e-6, -5e-6, 0.0, 0.0, 0.0], bs.ballset_params(B7202))
     assert np.all(st.load >= 0.0)
     assert np.all(st.load[st.compression <= 0.0] == 0.0)
-    away = bs.ballset_state([-20e-6, 0.0, 0.0, 0.0, 0.0], bs.kernel_params(B7202))
+    away = bs.ballset_state([-20e-6, 0.0, 0.0, 0.0, 0.0], bs.ballset_params(B7202))
     assert np.all(away.load == 0.0) and np.all(away.force == 0.0)
 
 
 def test_clearance_is_taken_up_before_load():
     pd = 20e-6
-    p = bs.kernel_params(QJ202.with_changes(diametral_clearance=pd))
+    p = bs.ballset_params(QJ202.with_changes(diametral_clearance=pd))
     assert bs.ballset_state([0.0, 0.45 * pd, 0.0, 0.0, 0.0], p).load.max() == 0.0
     assert bs.ballset_state([0.0, 0.55 * pd, 0.0, 0.0, 0.0], p).load.max() > 0.0
-    fx, fy, q, s = bs.radial_support(0.45 * pd, 0.0, p)
-    assert (fx, fy, q, s) == (0.0, 0.0, 0.0, 0.0)
+    force = np.zeros(5)
+    assert cb.accumulate(np.array([0.0, 0.45 * pd, 0.0, 0.0, 0.0]), p, pd, force, np.zeros((1, 1)), False, True) == (
+        0.0, 0.0)
+    assert np.all(force == 0.0)
 
 
 def test_ball_constant_override():
     k = 1.71e10
-    p = bs.kernel_params(QJ202, ball_constant=k)
+    p = bs.ballset_params(QJ202, ball_constant=k)
     st = bs.ballset_state(STATE, p)
     loaded = st.compression > 0
     np.testing.assert_allclose(st.load[loaded], k * st.compression[loaded] ** 1.5, rtol=1e-13)
@@ -146,7 +138,7 @@ def test_ball_constant_override():
 
 
 def test_stresses_are_hertz_at_the_loaded_angle():
-    st = bs.ballset_state(STATE, bs.kernel_params(QJ202))
+    st = bs.ballset_state(STATE, bs.ballset_params(QJ202))
     j, m = np.unravel_index(np.argmax(st.load), st.load.shape)
     for race, value in (("inner", st.stress_inner[j, m]), ("outer", st.stress_outer[j, m])):
         hertz = raceway_contact(QJ202, st.load[j, m], race, contact_angle=st.contact_angle[j, m])
@@ -155,26 +147,36 @@ def test_stresses_are_hertz_at_the_loaded_angle():
 
 def test_compression_is_the_sum_of_hertz_approaches():
     """Eq. 15: S - A = delta_inner + delta_outer at the pair load."""
-    st = bs.ballset_state(STATE, bs.kernel_params(QJ202))
+    st = bs.ballset_state(STATE, bs.ballset_params(QJ202))
     j, m = np.unravel_index(np.argmax(st.load), st.load.shape)
     q, a = st.load[j, m], st.contact_angle[j, m]
     total = sum(float(raceway_contact(QJ202, q, r, contact_angle=a).approach) for r in ("inner", "outer"))
     assert st.compression[j, m] == pytest.approx(total, rel=1e-9)
 
 
-def test_radial_support_matches_5dof_and_restores():
-    p = bs.kernel_params(QJ202)
-    for dx, dy in ((10e-6, 0.0), (3e-6, -7e-6), (0.0, 0.0)):
-        fx, fy, q, s = bs.radial_support(dx, dy, p)
-        force, _, qmax, smax = bs.ballset_forces(np.array([0.0, dx, dy, 0.0, 0.0]), p)
-        assert fx == pytest.approx(force[1], abs=1e-12) and fy == pytest.approx(force[2], abs=1e-12)
-        assert q == pytest.approx(qmax) and s == pytest.approx(smax)
-        assert fx * dx + fy * dy <= 0.0
+def test_accumulate_reports_the_largest_load_and_stress_of_the_arrays():
+    p = bs.ballset_params(QJ202)
+    for u in (STATE, np.array([0.0, 3e-6, -7e-6, 0.0, 0.0])):
+        force = np.zeros(5)
+        qmax, smax = cb.accumulate(u, p, p.clearance, force, np.zeros((1, 1)), False, True)
+        st = bs.ballset_state(u, p)
+        assert qmax == st.load.max()
+        assert smax == max(st.stress_inner.max(), st.stress_outer.max())
+        np.testing.assert_array_equal(force, st.force)
+        assert force[1] * u[1] + force[2] * u[2] <= 0.0  # restoring
+
+
+def test_thermal_clearance_argument_moves_the_onset():
+    """The kernels take the diametral clearance as an argument (thermal growth changes it while running)."""
+    p = bs.ballset_params(QJ202)
+    u = [0.0, 4e-6, 0.0, 0.0, 0.0]
+    assert bs.ballset_state(u, p, clearance=10e-6).load.max() == 0.0
+    assert bs.ballset_state(u, p, clearance=6e-6).load.max() > 0.0
 
 
 def test_azimuth_convention_and_rotation():
     """Ball j sits at 2 pi j / Z from +x: a displacement toward ball 1 loads ball 1 most."""
-    p = bs.kernel_params(QJ202)
+    p = bs.ballset_params(QJ202)
     phi1 = 2 * math.pi / 11
     st = bs.ballset_state([0.0, 8e-6 * math.cos(phi1), 8e-6 * math.sin(phi1), 0.0, 0.0], p)
     assert int(np.argmax(st.load[:, 0])) == 1
@@ -183,7 +185,7 @@ def test_azimuth_convention_and_rotation():
 
 
 def test_batched_shapes():
-    p = bs.kernel_params(QJ202)
+    p = bs.ballset_params(QJ202)
     st = bs.ballset_state(np.zeros((4, 3, 5)) + STATE, p)
     assert st.load.shape == (4, 3, 11, 2)
     assert st.force.shape == (4, 3, 5) and st.jacobian.shape == (4, 3, 5, 5)

@@ -8,8 +8,8 @@ import pytest
 import xarray as xr
 
 from auxbearing import InputError, get_bearing
-from auxbearing.analysis import drop as ad
-from auxbearing.analysis.drop_params import from_mapping, read_config
+from auxbearing import drop as ad
+from auxbearing.drop_params import from_mapping, read_config
 from auxbearing.core import drop as cd
 from auxbearing.io import save_dataset
 

@@ -9,8 +9,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from auxbearing import get_bearing
-from auxbearing.analysis.drop import DropCase, Rotor, build_model, run_drop
-from auxbearing.analysis.experiment import (
+from auxbearing.drop import DropCase, Rotor, build_model, run_drop
+from auxbearing.experiment.orbit import (
     Preprocessing,
     contact_from_orbit,
     count_impacts,
@@ -19,8 +19,8 @@ from auxbearing.analysis.experiment import (
     orbit_features,
     preprocess,
 )
-from auxbearing.analysis.experiment_io import read_csv, read_measured, read_netcdf
-from auxbearing.analysis.experiment_run import peak_table
+from auxbearing.experiment.io import read_csv, read_measured, read_netcdf
+from auxbearing.experiment.run import peak_table
 from auxbearing.core.ballset import ballset_state
 from auxbearing.errors import InputError
 

@@ -7,8 +7,8 @@ import pytest
 import xarray as xr
 from click.testing import CliRunner
 
-from auxbearing.analysis.static import load_distribution, solve_loads
-from auxbearing.analysis.static_cases import case_rows, load_cases, read_load_cases, worst_case
+from auxbearing.statics import load_distribution, solve_loads
+from auxbearing.static_cases import case_rows, load_cases, read_load_cases, worst_case
 from auxbearing.cli.main import cli
 from auxbearing.errors import InputError
 

@@ -6,8 +6,8 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from auxbearing.analysis.claims import VERDICTS
-from auxbearing.analysis.study_config import load_study_config
+from auxbearing.paper.claims import VERDICTS
+from auxbearing.paper.study_config import load_study_config
 from auxbearing.cli.main import cli
 from auxbearing.errors import InputError
 from auxbearing.io import atomic_output_dir

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.analysis.contact import contact_map, type_comparison
+from auxbearing.contact import contact_map, type_comparison
 
 
 @pytest.fixture(scope="module")

@@ -1,7 +1,7 @@
 """The drop model against what the source paper prints (Sec. II.D, Table II) and NOTES.md.
 
 The paper leaves the clearance, the rotor radius, the unbalance phase and the friction law
-near zero slip unstated (see auxbearing.analysis.drop_paper.UNSTATED), so its peak force and stress
+near zero slip unstated (see auxbearing.paper.drop_paper.UNSTATED), so its peak force and stress
 support only its qualitative claims and the order of magnitude; the constants of Table II that
 follow from geometry are checked tightly.
 """
@@ -10,8 +10,8 @@ import pytest
 from scipy.optimize import brentq
 
 from auxbearing import get_bearing
-from auxbearing.analysis import drop as ad
-from auxbearing.analysis import drop_paper as dp
+from auxbearing import drop as ad
+from auxbearing import drop_paper as dp
 from auxbearing.core.ballset import kernel_params, radial_support
 from auxbearing.core.hertz import line_contact_constant
 

@@ -1,7 +1,7 @@
 """The experiment pipeline recovers the known parameters and stress of the SYNTHETIC example drops.
 
 The example files (src/auxbearing/catalog/experiments/*.csv, made by
-auxbearing.analysis.experiment_synth) are the drop simulation with true mu_1 = 0.15,
+auxbearing.experiment.synth) are the drop simulation with true mu_1 = 0.15,
 s = 0.18 mm, unbalance phase 40 deg, and line damping 800 N s/m, ball damping 600 N s/m,
 rolling friction 0.012 where the fit assumes Table II's 1000, 500 and 0.01; then a sensor
 offset, 0.25 um white noise, a causal 10 kHz 4th-order Butterworth and 50 kHz sampling.
@@ -27,8 +27,8 @@ import math
 
 import pytest
 
-from auxbearing.analysis.experiment_run import run_experiment
-from auxbearing.analysis.experiment_stage import EXAMPLES, experiment_stage
+from auxbearing.experiment.run import run_experiment
+from auxbearing.paper.experiment_stage import EXAMPLES, experiment_stage
 
 TOLERANCE = {"sliding_friction": 0.015, "clearance": 2.0, "unbalance_phase": 5.0}
 

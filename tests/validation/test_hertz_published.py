@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.analysis.contact import ball_contact
+from auxbearing.contact import ball_contact
 from auxbearing.core import hertz
 
 STEEL_207 = 2 * (1 - 0.3**2) / 207e9

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.analysis import static as an
+from auxbearing import statics as an
 
 QJ202 = get_bearing("QJ202")
 # Many small balls on a large pitch circle: the discrete ball sums approach Sjovall's integrals.

@@ -9,8 +9,6 @@ import numpy as np
 from rich.console import Console
 from rich.table import Table
 
-from auxbearing.analysis.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
-from auxbearing.analysis.static import stress_warning
 from auxbearing.cli.common import (
     bearing_option,
     echo_json,
@@ -20,8 +18,10 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
+from auxbearing.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
 from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
+from auxbearing.statics import stress_warning
 
 _ROWS = (
     ("contact_load_N", "Contact load", "N", "{:.1f}"),

@@ -1,6 +1,6 @@
 """``auxbearing drop`` and ``auxbearing drop-compare`` (source paper Sec. II.D, Fig. 9-11).
 
-Every rotor and drop parameter of :data:`auxbearing.analysis.drop_params.PARAMETERS` is an
+Every rotor and drop parameter of :data:`auxbearing.drop_params.PARAMETERS` is an
 option (generated from that table, so help, unit and default cannot drift apart) and a key of
 the ``[rotor]`` / ``[drop]`` tables of a ``--config`` TOML file; options win over the file.
 """
@@ -17,10 +17,6 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from auxbearing.analysis.drop import DropCase, Rotor, read_config, run_drop
-from auxbearing.analysis.drop_paper import PAPER_DROP, drop_compare
-from auxbearing.analysis.drop_params import PARAMETERS, Param, check, convert, display_value
-from auxbearing.analysis.static import stress_warning
 from auxbearing.cli.common import (
     bearing_option,
     checked_out_dir,
@@ -30,8 +26,12 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
+from auxbearing.drop import DropCase, Rotor, read_config, run_drop
+from auxbearing.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.errors import InputError
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+from auxbearing.paper.drop_paper import PAPER_DROP, drop_compare
+from auxbearing.statics import stress_warning
 
 #: Option names that differ from the parameter key ("--friction" is the issue's name for mu_1).
 _OPTION_NAMES = {

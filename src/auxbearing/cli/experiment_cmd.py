@@ -16,14 +16,14 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from auxbearing.analysis.drop import DropCase, Rotor, read_config
-from auxbearing.analysis.experiment import Preprocessing
-from auxbearing.analysis.experiment_fit import FitOptions
-from auxbearing.analysis.experiment_io import read_measured
-from auxbearing.analysis.experiment_run import run_experiment
 from auxbearing.bearing import bearing_names
 from auxbearing.cli.common import echo_json, json_option, out_option, quantity, resolve_bearing
+from auxbearing.drop import DropCase, Rotor, read_config
 from auxbearing.errors import InputError
+from auxbearing.experiment.fit import FitOptions
+from auxbearing.experiment.io import read_measured
+from auxbearing.experiment.orbit import Preprocessing
+from auxbearing.experiment.run import run_experiment
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
 from auxbearing.units import to_si, ureg
 

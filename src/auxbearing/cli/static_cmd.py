@@ -11,15 +11,6 @@ from rich.progress import Progress
 from rich.table import Table
 
 from auxbearing import __version__
-from auxbearing.analysis.static import (
-    AXIAL_CONDITIONS,
-    TILT_CONDITIONS,
-    load_distribution,
-    summary,
-    validity_warnings,
-)
-from auxbearing.analysis.static_cases import RESULT_COLUMNS, case_rows, load_cases, worst_case, write_rows_csv
-from auxbearing.analysis.static_paper import static_study
 from auxbearing.cli.common import (
     bearing_option,
     checked_out_dir,
@@ -31,6 +22,15 @@ from auxbearing.cli.common import (
     warn,
 )
 from auxbearing.io import atomic_output_dir, save_dataset, write_json
+from auxbearing.paper.static_paper import static_study
+from auxbearing.static_cases import RESULT_COLUMNS, case_rows, load_cases, worst_case, write_rows_csv
+from auxbearing.statics import (
+    AXIAL_CONDITIONS,
+    TILT_CONDITIONS,
+    load_distribution,
+    summary,
+    validity_warnings,
+)
 
 
 def _condition_options(command):

@@ -9,11 +9,11 @@ from rich.console import Console
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from auxbearing.analysis.study import STAGES, run_study
-from auxbearing.analysis.study_config import load_study_config
 from auxbearing.bearing import bearing_names, get_bearing
 from auxbearing.cli.common import checked_out_dir, echo_json, json_option
 from auxbearing.materials import get_material, material_names
+from auxbearing.paper.study import STAGES, run_study
+from auxbearing.paper.study_config import load_study_config
 
 _STUDY_HELP = """Reproduce the whole paper into a report with a claims check.
 

@@ -7,15 +7,27 @@ Sec. II.6 (dense output of DOPRI5), and the PI step-size controller of Hairer & 
 *Solving Ordinary Differential Equations II* (1996), Sec. IV.2, Eq. 2.43c (Gustafsson's
 controller in the form used by DOPRI5, beta = 0.04).
 
-Only the pieces that do not depend on the right-hand side live here: the tableau, the error
-norm, the step-size controller and the dense-output polynomial. The stepping loop lives next
-to its right-hand side (:mod:`auxbearing.core.drop`) so that numba can inline the call.
+The stepping loop :func:`dopri5` knows nothing of bearings: it takes the right-hand side and an
+observer as arguments (compiled functions; numba specialises the loop for each pair and inlines
+them), so one integrator serves every model and can be tested on problems with exact answers.
+
+* ``rhs(t, y, model, out)`` writes dy/dt into ``out``;
+* ``observe(t, h, y0, y1, coeff, model, obs)`` is called after every accepted step from t to t + h
+  (``coeff`` the step's dense-output polynomial, :func:`dense_eval`); it locates events, refines
+  peaks (:func:`dense_root`, :func:`dense_max`), checks ranges and returns 0 to go on or a
+  positive code to stop.
+
+A caller that wants its specialisation cached on disk wraps the call in its own
+``njit(cache=True)`` function that names ``rhs`` and ``observe`` as globals (numba cannot cache a
+function that receives other functions as arguments from Python).
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
+import numpy as np
 from numba import njit
 
 # Butcher tableau of DOPRI5 (Dormand & Prince 1980, Table 2); the seventh stage is the FSAL
@@ -43,6 +55,46 @@ BETA = 0.04
 ALPHA = 0.2 - 0.75 * BETA
 
 
+#: Status codes of :func:`dopri5`.
+FINISHED, PAUSED, STEP_UNDERFLOW, STOPPED = 0, 1, 2, 3
+STATUS_TEXT = {FINISHED: "reached the end time", PAUSED: "step budget of this call used (call again to go on)",
+               STEP_UNDERFLOW: "step size underflow (non-finite or exploding state)",
+               STOPPED: "stopped by the observer"}
+
+
+class Settings(NamedTuple):
+    """What the integrator is asked to do (SI)."""
+
+    rtol: float  #: relative tolerance [-]
+    atol: np.ndarray  #: absolute tolerance per state; ``inf`` leaves a component out of the error norm
+    max_step: float  #: largest step [s]
+    min_step: float  #: a step below this means the solution cannot be resolved [s]
+    step_budget: int  #: attempted steps allowed in one call before it returns PAUSED
+    output_step: float  #: interval of the uniform output grid [s] (row k is t = k * output_step)
+
+
+class Memory(NamedTuple):
+    """What the integrator carries from one call to the next (1-element arrays, updated in place)."""
+
+    t: np.ndarray  #: time reached [s]
+    h: np.ndarray  #: step size to try next [s]
+    err_prev: np.ndarray  #: error norm of the last accepted step (PI controller memory)
+    rejected_last: np.ndarray  #: 1 if the last attempt was rejected
+    steps: np.ndarray  #: accepted steps (int64)
+    rejected: np.ndarray  #: rejected steps (int64)
+    evaluations: np.ndarray  #: right-hand-side evaluations (int64)
+    next_output: np.ndarray  #: next grid row to fill (int64)
+    derivative: np.ndarray  #: dy/dt at t (first-same-as-last stage), valid when ``evaluations`` > 0
+
+
+def new_memory(t0: float, h0: float, n_states: int) -> Memory:
+    """Fresh :class:`Memory` at time ``t0`` [s] with first trial step ``h0`` [s]."""
+    def one(value, dtype=float):
+        return np.full(1, value, dtype=dtype)
+    return Memory(one(t0), one(h0), one(1e-4), one(0.0), one(0, np.int64), one(0, np.int64), one(0, np.int64),
+                  one(0, np.int64), np.zeros(n_states))
+
+
 @njit(cache=True)
 def error_norm(err, y0, y1, rtol, atol):
     """Root-mean-square scaled local error (Hairer, Norsett & Wanner 1993, Eq. II.4.11).
@@ -61,7 +113,8 @@ def error_norm(err, y0, y1, rtol, atol):
     Returns
     -------
     float
-        ``sqrt(mean((err_i / (atol_i + rtol max(|y0_i|, |y1_i|)))^2))``; <= 1 accepts the step.
+        ``sqrt(mean((err_i / (atol_i + rtol max(|y0_i|, |y1_i|)))^2))`` over the components with a
+    finite ``atol``; <= 1 accepts the step.
 
     Examples
     --------
@@ -70,10 +123,14 @@ def error_norm(err, y0, y1, rtol, atol):
     1.0
     """
     total = 0.0
+    counted = 0
     for i in range(err.size):
+        if math.isinf(atol[i]):  # a bookkeeping component (work, energy) that must not steer the step
+            continue
         scale = atol[i] + rtol * max(abs(y0[i]), abs(y1[i]))
         total += (err[i] / scale) ** 2
-    return math.sqrt(total / err.size)
+        counted += 1
+    return math.sqrt(total / max(counted, 1))
 
 
 @njit(cache=True)
@@ -153,3 +210,189 @@ def dense_eval(coeff, theta, out):
     for i in range(coeff.shape[1]):
         out[i] = coeff[0, i] + theta * (coeff[1, i] + one_minus * (
             coeff[2, i] + theta * (coeff[3, i] + one_minus * coeff[4, i])))
+
+
+@njit
+def dense_root(g, coeff, model, tmp, arg):
+    """Fraction theta in (0, 1] of a step where ``g(y, model, arg)`` turns positive (bisection, 60 halvings).
+
+    ``g`` must be <= 0 at the start of the step and > 0 at its end; ``tmp`` is a work array of the
+    state's size. Accurate to 2^-60 of the step on the dense output (fourth order).
+    """
+    lo = 0.0
+    hi = 1.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        dense_eval(coeff, mid, tmp)
+        if g(tmp, model, arg) > 0.0:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+@njit
+def dense_max(f, coeff, model, tmp, arg):
+    """Golden-section search of the largest ``f(y, model, arg)`` inside one step (dense output).
+
+    Returns (theta, value). Kiefer's golden-section search (Press et al., *Numerical Recipes*,
+    3rd ed., Sec. 10.2), 40 reductions: the bracket shrinks to 4e-9 of the step.
+    """
+    g = 0.5 * (math.sqrt(5.0) - 1.0)
+    lo = 0.0
+    hi = 1.0
+    a = hi - g
+    b = g
+    dense_eval(coeff, a, tmp)
+    fa = f(tmp, model, arg)
+    dense_eval(coeff, b, tmp)
+    fb = f(tmp, model, arg)
+    for _ in range(40):
+        if fa >= fb:
+            hi = b
+            b = a
+            fb = fa
+            a = hi - g * (hi - lo)
+            dense_eval(coeff, a, tmp)
+            fa = f(tmp, model, arg)
+        else:
+            lo = a
+            a = b
+            fa = fb
+            b = lo + g * (hi - lo)
+            dense_eval(coeff, b, tmp)
+            fb = f(tmp, model, arg)
+    best = 0.5 * (lo + hi)
+    dense_eval(coeff, best, tmp)
+    return best, f(tmp, model, arg)
+
+
+@njit
+def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
+    """Advance ``y`` from ``memory.t`` towards ``t_end`` with DOPRI5 and PI step control.
+
+    Dormand & Prince (1980) with error control on the components of finite ``atol``, the PI
+    controller (Hairer & Wanner 1996, Eq. IV.2.43c) and dense output (Hairer et al. 1993, II.6)
+    for the uniform output grid and the observer. A discontinuity in the right-hand side (a
+    contact that closes) makes the error test fail; the step shrinks until it ends just before
+    the jump and the next step starts past it, so no event handling is needed for correctness.
+
+    Parameters
+    ----------
+    rhs, observe : compiled functions
+        See the module docstring.
+    model : any numba-typed value
+        Passed to ``rhs`` and ``observe`` unchanged (parameters).
+    obs : any numba-typed value
+        Passed to ``observe`` (its mutable state: arrays).
+    y : ndarray
+        State at ``memory.t``; overwritten with the state reached.
+    t_end : float
+        End time [s]; the last step lands on it.
+    settings : Settings
+    memory : Memory
+        Updated in place; call again with the same memory to go on after PAUSED.
+    grid : ndarray, shape (n_out, n)
+        Uniform output: row k holds the state at k * ``settings.output_step`` (rows from
+        ``memory.next_output`` on are filled as the solution passes them).
+
+    Returns
+    -------
+    int
+        :data:`FINISHED`, :data:`PAUSED`, :data:`STEP_UNDERFLOW` or :data:`STOPPED`.
+    """
+    n = y.size
+    k1 = memory.derivative
+    k2 = np.empty(n)
+    k3 = np.empty(n)
+    k4 = np.empty(n)
+    k5 = np.empty(n)
+    k6 = np.empty(n)
+    k7 = np.empty(n)
+    yt = np.empty(n)
+    y1 = np.empty(n)
+    err = np.empty(n)
+    tmp = np.empty(n)
+    coeff = np.empty((5, n))
+    t = memory.t[0]
+    h = memory.h[0]
+    if memory.evaluations[0] == 0:
+        rhs(t, y, model, k1)
+        memory.evaluations[0] += 1
+    n_out = grid.shape[0]
+    dt_out = settings.output_step
+    k_next = memory.next_output[0]
+    end_slack = 1e-13 * max(1.0, abs(t_end))  # a remainder below this is round-off, not a step
+    attempts = 0
+    status = FINISHED
+    while t < t_end:
+        if t_end - t <= end_slack:
+            t = t_end
+            break
+        if attempts >= settings.step_budget:
+            status = PAUSED
+            break
+        if h < settings.min_step * max(1.0, abs(t_end)) or not math.isfinite(h):
+            status = STEP_UNDERFLOW
+            break
+        attempts += 1
+        h = min(h, settings.max_step)
+        h_proposed = h
+        last = t + h >= t_end - end_slack
+        if last:
+            h = t_end - t
+        for i in range(n):
+            yt[i] = y[i] + h * A21 * k1[i]
+        rhs(t + C2 * h, yt, model, k2)
+        for i in range(n):
+            yt[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i])
+        rhs(t + C3 * h, yt, model, k3)
+        for i in range(n):
+            yt[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
+        rhs(t + C4 * h, yt, model, k4)
+        for i in range(n):
+            yt[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
+        rhs(t + C5 * h, yt, model, k5)
+        for i in range(n):
+            yt[i] = y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
+        rhs(t + h, yt, model, k6)
+        for i in range(n):
+            y1[i] = y[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i])
+        rhs(t + h, y1, model, k7)
+        memory.evaluations[0] += 6
+        for i in range(n):
+            err[i] = h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
+        e_norm = error_norm(err, y, y1, settings.rtol, settings.atol)
+        if not (e_norm <= 1.0):
+            if not math.isfinite(e_norm):
+                h *= MIN_FACTOR
+            else:
+                h *= next_step_factor(e_norm, memory.err_prev[0], True)
+            memory.rejected_last[0] = 1.0
+            memory.rejected[0] += 1
+            continue
+        dense_coefficients(y, y1, h, k1, k3, k4, k5, k6, k7, coeff)
+        while k_next < n_out and k_next * dt_out <= t + h + 1e-9 * dt_out:
+            theta = (k_next * dt_out - t) / h
+            dense_eval(coeff, min(1.0, max(0.0, theta)), tmp)
+            for i in range(n):
+                grid[k_next, i] = tmp[i]
+            k_next += 1
+        code = observe(t, h, y, y1, coeff, model, obs)
+        factor = next_step_factor(e_norm, memory.err_prev[0], memory.rejected_last[0] > 0.5)
+        memory.err_prev[0] = max(e_norm, 1e-4)
+        memory.rejected_last[0] = 0.0
+        memory.steps[0] += 1
+        t = t_end if last else t + h
+        for i in range(n):
+            y[i] = y1[i]
+            k1[i] = k7[i]
+        # a step shortened to land on t_end says nothing about the step size the solution allows
+        h = max(h * factor, h_proposed) if last else h * factor
+        if code != 0:
+            status = STOPPED
+            break
+    memory.t[0] = t
+    memory.h[0] = h
+    memory.next_output[0] = k_next
+    return status

@@ -1,8 +1,9 @@
-"""Figures of the rotor drop in the manner of Fig. 10-11 of the source paper, and the sweep.
+"""Figures of a drop: orbit, contact force, speeds, stress, tilt, whirl timeline; the paper's sweep.
 
-Each function takes the Dataset of :func:`auxbearing.analysis.drop.run_drop` (or the sweep of
-:func:`auxbearing.analysis.drop_paper.sweep_dataset`) and returns a new
-:class:`matplotlib.figure.Figure`; nothing global (pyplot state, rcParams) is touched.
+Each function takes the Dataset (and summary) of :func:`auxbearing.drop.run_machine` or
+:func:`auxbearing.drop.run_drop`. A function that draws one panel takes ``ax=None``: given an
+axes, it draws there and returns its figure; otherwise it makes a new
+:class:`matplotlib.figure.Figure`. Nothing global (pyplot state, rcParams) is touched.
 """
 
 from __future__ import annotations
@@ -14,62 +15,124 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 _COLOURS = {"QJ202": "tab:red", "7202": "tab:blue"}
+_WHIRL_COLOURS = {"none": "0.85", "forward": "tab:green", "backward_rolling": "tab:orange", "dry_whip": "tab:red",
+                  "backward": "tab:purple"}
+
+
+def _axes(ax, size=(6, 4)):
+    """The caller's axes, or a new figure's."""
+    if ax is not None:
+        return ax.figure, ax
+    fig = Figure(figsize=size, layout="constrained")
+    return fig, fig.add_subplot()
 
 
 def _title(ds: xr.Dataset) -> str:
     return str(ds.attrs.get("title", "Rotor drop"))
 
 
-def _clearance(ds: xr.Dataset) -> float:
-    drop = ds.attrs.get("drop", {})
-    if isinstance(drop, str):
-        drop = json.loads(drop)
-    return float(drop.get("clearance_m", 2e-4))
+def _machine(ds: xr.Dataset) -> dict:
+    text = ds.attrs.get("machine", "{}")
+    return json.loads(text) if isinstance(text, str) else dict(text)
+
+
+def _summary(ds: xr.Dataset) -> dict:
+    text = ds.attrs.get("summary", "{}")
+    return json.loads(text) if isinstance(text, str) else dict(text)
+
+
+def _clearance(ds: xr.Dataset, plane: int) -> float:
+    planes = _machine(ds).get("planes", [])
+    return planes[plane]["radial_clearance_mm"] * 1e-3 if planes else 2e-4
+
+
+def plot_orbit(ds: xr.Dataset, plane: int = 0, ax=None) -> Figure:
+    """Journal centre at a plane and its race centre inside the clearance circle (paper Fig. 10-11 (a))."""
+    fig, ax = _axes(ax, (5, 5))
+    s = _clearance(ds, plane)
+    sel = ds.isel(plane=plane)
+    centre = (sel.ring_x.values, sel.ring_y.values)
+    phi = np.linspace(0.0, 2.0 * np.pi, 361)
+    ax.plot(s * 1e3 * np.cos(phi), s * 1e3 * np.sin(phi), color="0.5", lw=1, ls="--",
+            label=f"clearance s = {s * 1e3:g} mm")
+    ax.plot((sel.journal_x.values - centre[0]) * 1e3, (sel.journal_y.values - centre[1]) * 1e3, lw=0.6,
+            color="tab:red", label="journal centre")
+    ax.plot((sel.race_x.values - centre[0]) * 1e3, (sel.race_y.values - centre[1]) * 1e3, lw=0.8, color="tab:blue",
+            label="race centre")
+    ax.set_aspect("equal")
+    lim = 1.15 * max(s, float(np.nanmax(np.hypot(sel.journal_x.values - centre[0], sel.journal_y.values - centre[1]))))
+    ax.set_xlim(-lim * 1e3, lim * 1e3)
+    ax.set_ylim(-lim * 1e3, lim * 1e3)
+    ax.set_xlabel("x [mm] (from the bearing centre)")
+    ax.set_ylabel("y [mm]")
+    ax.set_title(f"orbit, {ds.plane.values[plane]}", loc="left")
+    ax.legend(loc="upper right", fontsize=8)
+    return fig
+
+
+def plot_contact_force(ds: xr.Dataset, plane: int | None = None, ax=None, paper_peak: float | None = None) -> Figure:
+    """Journal/race collision force over time, one line per plane (or one plane), with the exact peak."""
+    fig, ax = _axes(ax, (7, 4))
+    t_ms = ds.time.values * 1e3
+    summary = _summary(ds)
+    planes = range(ds.sizes["plane"]) if plane is None else [plane]
+    for k in planes:
+        name = str(ds.plane.values[k])
+        ax.plot(t_ms, ds.normal_force.isel(plane=k).values, lw=0.7, label=f"collision force, {name}")
+        peak = _plane_summary(summary, k).get("peak_contact_force_N")
+        if peak is not None:
+            ax.plot(_plane_summary(summary, k)["peak_force_time_ms"], peak, "kv", label=f"peak {peak:.0f} N")
+    if paper_peak is not None:
+        ax.axhline(paper_peak, color="0.4", ls=":", label=f"paper peak {paper_peak:g} N")
+    ax.set_xlabel("Time [ms]")
+    ax.set_ylabel("Collision force [N]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def _plane_summary(summary: dict, k: int) -> dict:
+    if "planes" in summary:
+        return summary["planes"][k]
+    return summary  # the paper drop's flat summary (one plane)
 
 
 def plot_orbit_force(ds: xr.Dataset, paper: dict | None = None) -> Figure:
-    """(a) Journal-centre orbit inside the clearance circle; (b) collision force over time.
-
-    The layout of the source paper's Fig. 10 (four-point) and Fig. 11 (angular contact).
-
-    Parameters
-    ----------
-    ds : xarray.Dataset
-        A drop time series.
-    paper : dict, optional
-        ``{"peak_contact_force_N": ...}`` to mark the paper's peak force.
-    """
-    s = _clearance(ds)
+    """(a) Orbit inside the clearance circle; (b) collision force: the layout of the paper's Fig. 10-11."""
     fig = Figure(figsize=(11, 4.5), layout="constrained")
     ax_orbit, ax_force = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1, 1.6]})
     fig.suptitle(_title(ds))
-    phi = np.linspace(0.0, 2.0 * np.pi, 361)
-    ax_orbit.plot(s * 1e3 * np.cos(phi), s * 1e3 * np.sin(phi), color="0.5", lw=1, ls="--",
-                  label=f"clearance s = {s * 1e3:g} mm")
-    ax_orbit.plot(ds.rotor_x.values * 1e3, ds.rotor_y.values * 1e3, lw=0.6, color="tab:red", label="journal centre")
-    ax_orbit.plot(ds.race_x.values * 1e3, ds.race_y.values * 1e3, lw=0.8, color="tab:blue", label="race centre")
-    ax_orbit.set_aspect("equal")
-    lim = 1.15 * s * 1e3
-    ax_orbit.set_xlim(-lim, lim)
-    ax_orbit.set_ylim(-lim, lim)
-    ax_orbit.set_xlabel("x [mm]")
-    ax_orbit.set_ylabel("y [mm]")
+    plot_orbit(ds, 0, ax=ax_orbit)
+    plot_contact_force(ds, 0, ax=ax_force, paper_peak=None if not paper else paper["peak_contact_force_N"])
     ax_orbit.set_title("(a) orbit", loc="left")
-    ax_orbit.legend(loc="upper right", fontsize=8)
-    t_ms = ds.time.values * 1e3
-    ax_force.plot(t_ms, ds.normal_force.values, lw=0.7, color="tab:red", label="collision force $F_{n1}$")
-    summary = json.loads(ds.attrs["summary"]) if "summary" in ds.attrs else {}
-    if summary:
-        ax_force.plot(summary["peak_force_time_ms"], summary["peak_contact_force_N"], "kv",
-                      label=f"peak {summary['peak_contact_force_N']:.0f} N")
-    if paper:
-        ax_force.axhline(paper["peak_contact_force_N"], color="0.4", ls=":",
-                         label=f"paper peak {paper['peak_contact_force_N']:g} N")
-    ax_force.set_xlabel("Time [ms]")
-    ax_force.set_ylabel("Collision force [N]")
     ax_force.set_title("(b) collision force", loc="left")
-    ax_force.grid(alpha=0.3)
-    ax_force.legend(fontsize=8)
+    return fig
+
+
+def plot_speeds(ds: xr.Dataset, ax=None) -> Figure:
+    """Spin speeds of the rotor and of each inner race [rad/s]."""
+    fig, ax = _axes(ax, (7, 4))
+    t_ms = ds.time.values * 1e3
+    ax.plot(t_ms, ds.rotor_speed.values, color="tab:red", label="rotor")
+    for k in range(ds.sizes["plane"]):
+        ax.plot(t_ms, ds.race_speed.isel(plane=k).values, label=f"inner race, {ds.plane.values[k]}")
+    ax.set_xlabel("Time [ms]")
+    ax.set_ylabel("Spin speed [rad/s]")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    return fig
+
+
+def plot_ball_stress(ds: xr.Dataset, ax=None) -> Figure:
+    """Hertz max stress of the most loaded ball contact of each plane [MPa]."""
+    fig, ax = _axes(ax, (7, 4))
+    t_ms = ds.time.values * 1e3
+    for k in range(ds.sizes["plane"]):
+        ax.plot(t_ms, ds.max_ball_stress.isel(plane=k).values / 1e6, lw=0.7, label=str(ds.plane.values[k]))
+    ax.set_xlabel("Time [ms]")
+    ax.set_ylabel("Max ball contact stress [MPa]")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
     return fig
 
 
@@ -78,20 +141,54 @@ def plot_speeds_stress(ds: xr.Dataset) -> Figure:
     fig = Figure(figsize=(11, 4), layout="constrained")
     ax_speed, ax_stress = fig.subplots(1, 2)
     fig.suptitle(_title(ds))
-    t_ms = ds.time.values * 1e3
-    ax_speed.plot(t_ms, ds.rotor_speed.values, color="tab:red", label="rotor")
-    ax_speed.plot(t_ms, ds.race_speed.values, color="tab:blue", label="inner race")
-    ax_speed.set_xlabel("Time [ms]")
-    ax_speed.set_ylabel("Spin speed [rad/s]")
+    plot_speeds(ds, ax=ax_speed)
+    plot_ball_stress(ds, ax=ax_stress)
     ax_speed.set_title("(a) spin speeds", loc="left")
-    ax_speed.legend()
-    ax_speed.grid(alpha=0.3)
-    ax_stress.plot(t_ms, ds.max_ball_stress.values / 1e6, lw=0.7, color="tab:purple")
-    ax_stress.set_xlabel("Time [ms]")
-    ax_stress.set_ylabel("Max ball contact stress [MPa]")
     ax_stress.set_title("(b) most loaded ball contact", loc="left")
-    ax_stress.grid(alpha=0.3)
     return fig
+
+
+def plot_tilt(ds: xr.Dataset, ax=None) -> Figure:
+    """Tilt of the journal axis [mrad] and its axial position [um]."""
+    fig, ax = _axes(ax, (7, 4))
+    t_ms = ds.time.values * 1e3
+    ax.plot(t_ms, ds.tilt_x.values * 1e3, label="tilt about x")
+    ax.plot(t_ms, ds.tilt_y.values * 1e3, label="tilt about y")
+    ax.set_xlabel("Time [ms]")
+    ax.set_ylabel("Tilt [mrad]")
+    twin = ax.twinx()
+    twin.plot(t_ms, ds.rotor_z.values * 1e6, color="0.4", lw=0.8, ls="--", label="axial position")
+    twin.set_ylabel("Axial position [µm]")
+    ax.legend(loc="upper left", fontsize=8)
+    twin.legend(loc="upper right", fontsize=8)
+    ax.grid(alpha=0.3)
+    return fig
+
+
+def plot_whirl_timeline(summary: dict, ax=None) -> Figure:
+    """The whirl class of each window, one row per plane (none, forward, backward rolling, dry whip)."""
+    fig, ax = _axes(ax, (8, 1.2 + 0.6 * len(summary["planes"])))
+    for row, plane in enumerate(summary["planes"]):
+        width = plane["whirl_window_ms"]
+        for i, cls in enumerate(plane["whirl_timeline"]):
+            ax.barh(row, width, left=i * width, color=_WHIRL_COLOURS.get(cls, "0.5"), edgecolor="white", lw=0.5)
+    ax.set_yticks(range(len(summary["planes"])), [p["name"] for p in summary["planes"]])
+    ax.set_xlabel("Time [ms]")
+    handles = [ax.bar(0, 0, color=c, label=name.replace("_", " ")) for name, c in _WHIRL_COLOURS.items()]
+    ax.legend(handles=handles, fontsize=7, ncol=5, loc="upper center", bbox_to_anchor=(0.5, -0.35))
+    ax.set_title("whirl timeline", loc="left")
+    return fig
+
+
+def machine_figures(ds: xr.Dataset, summary: dict) -> dict[str, Figure]:
+    """The figures of a machine run: orbit of each plane, contact forces, tilt, whirl timeline, spin speeds."""
+    figures = {f"orbit_{k}": plot_orbit(ds, k) for k in range(ds.sizes["plane"])}
+    figures["contact_force"] = plot_contact_force(ds)
+    figures["ball_stress"] = plot_ball_stress(ds)
+    figures["tilt"] = plot_tilt(ds)
+    figures["whirl_timeline"] = plot_whirl_timeline(summary)
+    figures["speeds"] = plot_speeds(ds)
+    return figures
 
 
 _SWEEP_AXES = (  # dimension, variable suffix, display scale, axis label
@@ -107,7 +204,7 @@ def plot_sweep(sweep: xr.Dataset, paper: dict | None = None) -> Figure:
     Parameters
     ----------
     sweep : xarray.Dataset
-        :func:`auxbearing.analysis.drop_paper.sweep_dataset`.
+        :func:`auxbearing.paper.drop_paper.sweep_dataset`.
     paper : dict, optional
         The paper's peaks per bearing, drawn as horizontal dotted lines.
     """

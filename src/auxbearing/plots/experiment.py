@@ -58,7 +58,7 @@ def plot_force_stress(measured: xr.Dataset, simulated: dict[str, xr.Dataset], ti
     """Contact force and max ball stress over time: from the measured orbit and from the simulations.
 
     ``measured`` needs ``contact_force`` [N] and ``max_ball_stress`` [Pa]; each simulation
-    ``normal_force`` and ``max_ball_stress`` (a :func:`auxbearing.analysis.drop.run_drop` Dataset).
+    ``normal_force`` and ``max_ball_stress`` (a :func:`auxbearing.drop.run_drop` Dataset).
     """
     fig = Figure(figsize=(10, 6), layout="constrained")
     ax_f, ax_s = fig.subplots(2, 1, sharex=True)

@@ -9,7 +9,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from auxbearing.analysis.static import ISO76_BALL_STRESS
+from auxbearing.statics import ISO76_BALL_STRESS
 
 _MARKERS = "osd^v<>"
 

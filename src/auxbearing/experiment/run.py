@@ -1,6 +1,6 @@
 """The whole experiment pipeline in one call: measured drop in; Datasets, a summary and figures out.
 
-Steps (see :mod:`auxbearing.analysis.experiment` and :mod:`auxbearing.analysis.experiment_fit`):
+Steps (see :mod:`auxbearing.experiment.orbit` and :mod:`auxbearing.experiment.fit`):
 read and check the file, pre-process, fit the uncertain parameters, estimate force and stress
 from the measured orbit, simulate the same case (as configured, and as fitted), and lay the
 peaks side by side. The simulations are also put through the measurement pipeline (sampled,
@@ -19,11 +19,13 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from auxbearing.analysis.drop import DropCase, Rotor, build_model
-from auxbearing.analysis.experiment import Preprocessing, contact_from_orbit, orbit_features, preprocess
-from auxbearing.analysis.experiment_fit import FitOptions, fit_parameters, simulate_like_measurement
-from auxbearing.analysis.experiment_io import read_measured
+from auxbearing.ballset import ballset_params
 from auxbearing.bearing import BearingGeometry, load_bearing
+from auxbearing.drop import DropCase, Rotor
+from auxbearing.experiment.fit import FitOptions, fit_parameters, simulate_like_measurement
+from auxbearing.experiment.io import read_measured
+from auxbearing.experiment.orbit import Preprocessing, contact_from_orbit, orbit_features, preprocess
+from auxbearing.machine import planar_machine
 from auxbearing.plots.experiment import plot_fit_window, plot_force_stress, plot_orbits
 
 #: Peak quantities compared in the table: (summary key, label, format).
@@ -102,7 +104,7 @@ def run_experiment(
     Parameters
     ----------
     measured : path or xarray.Dataset
-        CSV or NetCDF file (:mod:`auxbearing.analysis.experiment_io`) or what its readers return.
+        CSV or NetCDF file (:mod:`auxbearing.experiment.io`) or what its readers return.
     bearing : str or BearingGeometry
         The auxiliary bearing of the test (catalogue name, TOML file or geometry).
     rotor, case : optional
@@ -121,7 +123,7 @@ def run_experiment(
     -------
     ExperimentResult
         ``datasets``: ``measured`` (orbit, force, ball loads and stress over time since the
-        drop) and ``simulated_<label>`` (:func:`auxbearing.analysis.drop.run_drop` output);
+        drop) and ``simulated_<label>`` (:func:`auxbearing.drop.run_drop` output);
         ``summary``: JSON-ready; ``figures``: orbits, force/stress and (with the fit) the fit window.
     """
     def step(fraction: float, label: str) -> None:
@@ -154,15 +156,16 @@ def run_experiment(
     else:
         s_used, s_source = case.clearance, "configured"
     step(0.45, "force and stress from the measured orbit")
-    model = build_model(bearing, rotor, replace(case, clearance=s_used))
-    measured_ds, measured_summary = orbit_features(orbit, s_used, model.line_stiffness, model.ballset,
+    plane = planar_machine(bearing, rotor, replace(case, clearance=s_used)).planes[0]
+    ball_params = ballset_params(bearing, case.ball_constant)
+    measured_ds, measured_summary = orbit_features(orbit, s_used, plane.line_stiffness, ball_params,
                                                    case.line_damping, info["noise_filtered_m"], spin)
     dt = float(np.median(np.diff(orbit.time.values)))
     after = orbit.time.values >= 0.0
     sensitivity = {}
     for ds_um in (-1.0, 1.0):
         c = contact_from_orbit(orbit.x.values[after], orbit.y.values[after], s_used + ds_um * 1e-6,
-                               model.line_stiffness, model.ballset, case.line_damping, dt)
+                               plane.line_stiffness, ball_params, case.line_damping, dt)
         sensitivity[f"{ds_um:+.0f}"] = (float(c["contact_force"].max()), float(c["max_ball_stress"].max() / 1e6))
     measured_summary["clearance_used_um"] = s_used * 1e6
     measured_summary["clearance_source"] = s_source
@@ -178,8 +181,8 @@ def run_experiment(
     for k, (label, sim_case) in enumerate(cases.items()):
         step(0.55 + 0.2 * k, f"simulating the {label} case")
         sim_ds, sim_summary, seen = simulate_like_measurement(bearing, rotor, sim_case, orbit, info["cutoff_Hz"])
-        sim_model = build_model(bearing, rotor, sim_case)
-        _, seen_summary = orbit_features(seen, sim_case.clearance, sim_model.line_stiffness, sim_model.ballset,
+        sim_plane = planar_machine(bearing, rotor, sim_case).planes[0]
+        _, seen_summary = orbit_features(seen, sim_case.clearance, sim_plane.line_stiffness, ball_params,
                                          sim_case.line_damping, info["noise_filtered_m"], spin)
         sims[f"simulated, {label}"] = sim_ds
         datasets[f"simulated_{label}"] = sim_ds
@@ -218,7 +221,7 @@ def run_experiment(
             "source_file", "")), clearance_m=s_used, clearance_source=s_source,
         offset_x_m=info["offset_x_m"], offset_y_m=info["offset_y_m"], drop_time_s=info["drop_time_s"],
         method="force and stress from the orbit: quasi-static series split of line contact (Eq. 19) and ball set "
-               "(Eq. 10-16, 22); see auxbearing.analysis.experiment")
+               "(Eq. 10-16, 22); see auxbearing.experiment.orbit")
     step(1.0, "done")
     return ExperimentResult(datasets, summary, figures)
 

@@ -1,8 +1,8 @@
 """The study: every stage of the paper, one report, data and figures, in one call.
 
 Stages are entries in :data:`STAGES` (a registry, not an if/elif chain): each takes the
-:class:`~auxbearing.analysis.study_config.StudyConfig` and returns a report
-:class:`~auxbearing.analysis.report_model.Section`.
+:class:`~auxbearing.paper.study_config.StudyConfig` and returns a report
+:class:`~auxbearing.report.model.Section`.
 """
 
 from __future__ import annotations
@@ -12,14 +12,14 @@ from collections.abc import Callable
 from pathlib import Path
 
 from auxbearing import __version__
-from auxbearing.analysis.claims import HOLDS
-from auxbearing.analysis.report_model import Section
-from auxbearing.analysis.study_config import StudyConfig
-from auxbearing.analysis.study_contact import run_contact_stage
-from auxbearing.analysis.study_drop import run_drop_stage
-from auxbearing.analysis.study_static import run_static_stage
 from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
-from auxbearing.report import render_report
+from auxbearing.paper.claims import HOLDS
+from auxbearing.paper.study_config import StudyConfig
+from auxbearing.paper.study_contact import run_contact_stage
+from auxbearing.paper.study_drop import run_drop_stage
+from auxbearing.paper.study_static import run_static_stage
+from auxbearing.report.html import render_report
+from auxbearing.report.model import Section
 
 
 def _contact(config: StudyConfig) -> Section:
@@ -35,7 +35,7 @@ def _drop(config: StudyConfig) -> Section:
 
 
 def _experiment(config: StudyConfig) -> Section:
-    from auxbearing.analysis.experiment_stage import experiment_stage
+    from auxbearing.paper.experiment_stage import experiment_stage
 
     return experiment_stage(config)
 

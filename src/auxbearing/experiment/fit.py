@@ -2,7 +2,7 @@
 
 The paper (Sec. III) blames the gap between its measured and simulated stress partly on "the
 angle of imbalance eccentricity at the moment of dropping" and on unknown parameters. Here the
-simulation of :mod:`auxbearing.analysis.drop` (its public :func:`build_model` and
+simulation of :mod:`auxbearing.drop` (:func:`~auxbearing.drop.journal_orbit` and
 :func:`run_drop`) is made to match the measurement by least squares:
 
 * parameters: sliding friction mu_1, clearance s, unbalance phase at the drop, and (nuisance)
@@ -33,11 +33,11 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
-from auxbearing.analysis.drop import DropCase, Rotor, build_model, run_drop
-from auxbearing.analysis.experiment import lowpass
 from auxbearing.bearing import BearingGeometry
-from auxbearing.core import drop as cd
+from auxbearing.drop import DropCase, Rotor, journal_orbit, run_drop
 from auxbearing.errors import InputError
+from auxbearing.experiment.orbit import lowpass
+from auxbearing.machine import planar_machine
 
 #: Fitted parameters: (name, unit shown, factor SI -> shown, central-difference step [SI]).
 FIT_PARAMETERS = (
@@ -77,19 +77,10 @@ def simulate_states(bearing: BearingGeometry, rotor: Rotor, case: DropCase, dura
                     step: float) -> np.ndarray:
     """Journal centre (x, y) on the grid k * step, 0 <= k * step <= duration (short runs for the fit) [m].
 
-    Uses :func:`auxbearing.analysis.drop.build_model` and the compiled integrator of
-    :mod:`auxbearing.core.drop`, skipping the Dataset that :func:`run_drop` builds.
+    The one drop driver (:func:`auxbearing.drop.journal_orbit`) without the Dataset that
+    :func:`run_drop` builds; a simulation that fails raises instead of being padded and fitted.
     """
-    model = build_model(bearing, rotor, case)
-    n = math.floor(duration / step + 1e-9) + 1
-    grid = np.empty((n, cd.N_STATE))
-    grid[0] = model.y0
-    y = model.y0.copy()
-    k = cd.integrate(y, 0.0, duration, model.params, model.ballset, case.rtol, model.atol, case.max_step, step, 1,
-                     grid, cd.new_stats(min(1e-6, case.max_step)))
-    if k < n:
-        grid[k:] = y
-    return grid[:, :2]
+    return journal_orbit(planar_machine(bearing, rotor, replace(case, duration=duration)), duration, step)
 
 
 def sample_like(states: np.ndarray, step: float, tau: np.ndarray, start: tuple[float, float]) -> np.ndarray:
@@ -198,7 +189,7 @@ def fit_parameters(orbit: xr.Dataset, info: dict, bearing: BearingGeometry, roto
     Parameters
     ----------
     orbit, info :
-        From :func:`auxbearing.analysis.experiment.preprocess`.
+        From :func:`auxbearing.experiment.orbit.preprocess`.
     bearing, rotor, case :
         The simulated case; its other parameters stay fixed.
     options : FitOptions, optional
@@ -269,7 +260,7 @@ def simulate_like_measurement(bearing, rotor, case, orbit: xr.Dataset, cutoff: f
 
     Returns the simulation Dataset and summary of :func:`run_drop` and an orbit Dataset on the
     measured time grid (``x``, ``y`` filtered with ``cutoff``), ready for
-    :func:`auxbearing.analysis.experiment.orbit_features`.
+    :func:`auxbearing.experiment.orbit.orbit_features`.
     """
     tau = orbit.time.values
     dt = float(np.median(np.diff(tau)))

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import xarray as xr
 from matplotlib.figure import Figure as MplFigure
 
-from auxbearing.analysis.claims import Assumption, Claim
+from auxbearing.paper.claims import Assumption, Claim
 
 
 @dataclass

@@ -9,8 +9,8 @@ import json
 from datetime import UTC, datetime
 
 from auxbearing import __version__
-from auxbearing.analysis.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS
-from auxbearing.analysis.report_model import Section
+from auxbearing.paper.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS
+from auxbearing.report.model import Section
 
 _CSS = """
 body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;

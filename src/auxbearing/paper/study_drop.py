@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from auxbearing.analysis.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
-from auxbearing.analysis.drop import DropCase, Rotor, from_mapping, run_drop
-from auxbearing.analysis.drop_paper import PAPER_DROP, drop_compare, sweep_dataset
-from auxbearing.analysis.report_model import Figure, Section
 from auxbearing.bearing import BearingGeometry
+from auxbearing.drop import DropCase, Rotor, from_mapping, run_drop
+from auxbearing.paper.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
+from auxbearing.paper.drop_paper import PAPER_DROP, drop_compare, sweep_dataset
 from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress, plot_sweep
+from auxbearing.report.model import Figure, Section
 
 #: Peak values are judged against the paper within this fraction: the paper leaves the clearance,
 #: the rotor radius and the unbalance phase unstated, and the sweep shows each moves the peaks

@@ -1,9 +1,10 @@
-"""Rotor and drop-case parameters: one table of names, units, defaults and rules (SI inside).
+"""Inputs of the paper's planar drop: rotor and drop-case parameters in one table (SI inside).
 
-Source paper Sec. II.D and Table II, read as ../shared/paper/NOTES.md says. Each parameter is
-declared once in :data:`PARAMETERS`; the dataclasses, their validation, the TOML ``[rotor]`` /
-``[drop]`` sections and the command-line options are all built from that table, so a new
-parameter is one row, not an edit in four places.
+Source paper Sec. II.D and Table II, read as ../shared/paper/NOTES.md says. Each parameter is a
+:class:`~auxbearing.params.Param` row of :data:`PARAMETERS`; the dataclasses, their validation,
+the TOML ``[rotor]`` / ``[drop]`` sections and the command-line options of ``auxbearing drop`` are
+built from that table. The drop itself runs through the machine model
+(:func:`auxbearing.drop.run_drop` builds a one-plane :class:`~auxbearing.machine.Machine`).
 
 Values the paper does not give, and what we set (see ``source`` of each row): clearance s and
 rotor radius r (s = 0.2 mm, r = bore/2 - s), unbalance phase at the drop (0), K_l's contact
@@ -16,35 +17,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, fields
 from pathlib import Path
-from typing import NamedTuple
-
-import pint
 
 from auxbearing.bearing import BearingGeometry, bearing_from_mapping, read_toml
 from auxbearing.errors import InputError
-from auxbearing.units import SI_UNITS, Quantity, to_si, ureg
+from auxbearing.params import Param, accept, by_key, check, convert, display_value, read_table, si_unit
 
-#: Units beyond :data:`auxbearing.units.SI_UNITS` that the drop needs: (SI unit, examples).
-_EXTRA_UNITS = {
-    "line_stiffness": ("N/m**(10/9)", "N/m**(10/9)"),
-    "ball_constant": ("N/m**1.5", "N/m**1.5, N/mm**1.5"),
-    "velocity": ("m/s", "m/s, mm/s"),
-    "acceleration": ("m/s**2", "m/s**2"),
-}
-
-
-class Param(NamedTuple):
-    """One parameter: where it lives, its unit, default, rule and source."""
-
-    section: str  #: "rotor" or "drop"
-    key: str  #: TOML key and dataclass field
-    dimension: str  #: key of SI_UNITS or of _EXTRA_UNITS
-    default: float | None  #: SI default; None means derived (see help)
-    display_unit: str  #: unit for plain command-line numbers and help texts
-    rule: str  #: positive | nonnegative | unit_interval | finite | tolerance | optional_positive
-    help: str
-    source: str
-
+__all__ = ["PARAMETERS", "DropCase", "Param", "Rotor", "check", "convert", "display_value", "from_mapping",
+           "read_config"]
 
 PARAMETERS: tuple[Param, ...] = (
     Param("rotor", "mass", "mass", 1.48, "kg", "positive", "Rotor mass m_r", "Table II"),
@@ -96,103 +75,37 @@ PARAMETERS: tuple[Param, ...] = (
     Param("drop", "start_y", "length", 0.0, "mm", "finite", "Journal centre y at the drop", "Sec. II.D (centre)"),
 )
 
-_BY_SECTION = {s: {p.key: p for p in PARAMETERS if p.section == s} for s in ("rotor", "drop")}
+_BY_SECTION = {s: by_key(PARAMETERS, s) for s in ("rotor", "drop")}
 
 
-def convert(field: str, value: object, dimension: str, default_unit: str | None = None) -> float:
-    """A user value in the SI unit of ``dimension`` (also the drop's extra dimensions).
-
-    Examples
-    --------
-    >>> f"{convert('ball_constant', '5.42e5 N/mm**1.5', 'ball_constant'):.4g}"
-    '1.714e+10'
-    >>> convert("slip_velocity", "10 mm/s", "velocity")
-    0.01
-    """
-    if dimension in SI_UNITS:
-        return to_si(field, value, dimension, default_unit)
-    unit, examples = _EXTRA_UNITS[dimension]
-    if isinstance(value, bool):
-        raise InputError.for_field(field, value, f"must be a number with a unit such as {examples}")
-    try:
-        if isinstance(value, (int, float)):
-            if default_unit is None:
-                raise InputError.for_field(field, value, f"needs a unit, e.g. '{value} {unit}'")
-            quantity = Quantity(float(value), default_unit)
-        elif isinstance(value, str):
-            quantity = ureg.Quantity(value.strip())
-            if not isinstance(quantity, pint.Quantity) or quantity.dimensionless:
-                if default_unit is None:
-                    raise InputError.for_field(field, value, f"needs a unit, e.g. '{value} {unit}'")
-                quantity = Quantity(float(getattr(quantity, "magnitude", quantity)), default_unit)
-        elif isinstance(value, pint.Quantity):
-            quantity = value
-        else:
-            raise InputError.for_field(field, value, f"must be a number with a unit such as {examples}")
-        magnitude = float(quantity.to(unit).magnitude)
-    except InputError:
-        raise
-    except pint.DimensionalityError:
-        raise InputError.for_field(field, value,
-                                   f"unit is not a {dimension.replace('_', ' ')} (use {examples})") from None
-    except Exception:  # pint raises several unrelated types for malformed text
-        raise InputError.for_field(field, value, f"cannot read it as a value such as '1 {unit}'") from None
-    if not math.isfinite(magnitude):
-        raise InputError.for_field(field, value, "must be a finite number")
-    return magnitude
-
-
-def check(param: Param, value: object, field: str | None = None) -> None:
-    """Apply the parameter's rule; InputError names the field, the value and the rule."""
-    name = field or f"{param.section}.{param.key}"
-    if value is None:
-        if param.rule == "optional_positive":
-            return
-        raise InputError.for_field(name, value, "is required")
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or math.isnan(value):
-        raise InputError.for_field(name, value, f"must be a number in {param.display_unit or 'SI'}")
-    shown = display_value(param, value)
-    if math.isinf(value):
-        raise InputError.for_field(name, shown, "must be finite")
-    rule = param.rule
-    if rule in ("positive", "optional_positive") and value <= 0.0:
-        raise InputError.for_field(name, shown, "must be > 0")
-    if rule == "nonnegative" and value < 0.0:
-        raise InputError.for_field(name, shown, "must be >= 0")
-    if rule == "unit_interval" and not 0.0 <= value <= 1.0:
-        raise InputError.for_field(name, shown, "must lie in [0, 1]")
-    if rule == "tolerance" and not 0.0 < value <= 1e-2:
-        raise InputError.for_field(name, shown, "must lie in (0, 0.01]")
-
-
-def display_value(param: Param, value: float) -> object:
-    """The value in the parameter's display unit, as a user would have typed it."""
-    if not param.display_unit:
-        return value
-    si = SI_UNITS.get(param.dimension) or _EXTRA_UNITS[param.dimension][0]
-    try:
-        return f"{Quantity(value, si).to(param.display_unit).magnitude:.6g} {param.display_unit}"
-    except pint.DimensionalityError:  # pragma: no cover - table consistency is tested
-        return value
+def _accept_all(obj: object, section: str) -> None:
+    """Convert every field given as a string with a unit (or a quantity) to SI and check its rule."""
+    for f in fields(obj):
+        value = accept(_BY_SECTION[section][f.name], getattr(obj, f.name))
+        object.__setattr__(obj, f.name, value)
 
 
 @dataclass(frozen=True)
 class Rotor:
-    """The rotor that drops (SI). Defaults: source paper Table II.
+    """The rotor that drops. Defaults: source paper Table II.
+
+    Every field takes a string with a unit ("1.48 kg", "10 um") or a number in SI units.
 
     Parameters
     ----------
-    mass : float
+    mass : float or str
         m_r [kg].
-    polar_inertia : float
+    polar_inertia : float or str
         J_r about the mass centre [kg m^2].
-    eccentricity : float
+    eccentricity : float or str
         Unbalance e [m].
-    radius : float or None
+    radius : float, str or None
         Journal radius r [m]; None: bore/2 - clearance.
 
     Examples
     --------
+    >>> Rotor(eccentricity="10 um").eccentricity
+    1e-05
     >>> Rotor(mass=-1.0)
     Traceback (most recent call last):
     ...
@@ -205,8 +118,7 @@ class Rotor:
     radius: float | None = None
 
     def __post_init__(self) -> None:
-        for f in fields(self):
-            check(_BY_SECTION["rotor"][f.name], getattr(self, f.name))
+        _accept_all(self, "rotor")
 
     def describe(self) -> dict:
         """Inputs with units in the keys."""
@@ -219,12 +131,15 @@ def _default(key: str) -> float | None:
 
 @dataclass(frozen=True)
 class DropCase:
-    """How the rotor drops and how the contact behaves (SI). Defaults: Table II and NOTES.md.
+    """How the rotor drops and how the contact behaves. Defaults: Table II and NOTES.md.
 
-    See :data:`PARAMETERS` for the unit, rule and source of each field.
+    Every field takes a string with a unit ("0.2 mm", "6000 rpm") or a number in SI units
+    (``speed=628.3`` is rad/s). See :data:`PARAMETERS` for the unit, rule and source of each field.
 
     Examples
     --------
+    >>> round(DropCase(speed="6000 rpm").speed, 3)
+    628.319
     >>> DropCase(sliding_friction=1.5)
     Traceback (most recent call last):
     ...
@@ -253,14 +168,11 @@ class DropCase:
     start_y: float = 0.0
 
     def __post_init__(self) -> None:
-        for f in fields(self):
-            check(_BY_SECTION["drop"][f.name], getattr(self, f.name))
+        _accept_all(self, "drop")
         if self.output_step > self.duration:
-            raise InputError.for_field("drop.output_step", self.output_step,
+            raise InputError.for_field("drop.output_step", display_value(_BY_SECTION["drop"]["output_step"],
+                                                                         self.output_step),
                                        f"must not exceed drop.duration = {self.duration:g} s")
-        if self.duration / self.output_step > 2e7:
-            raise InputError.for_field("drop.output_step", self.output_step,
-                                       "gives more than 2e7 output instants; use a coarser grid")
         if math.hypot(self.start_x, self.start_y) >= self.clearance:
             raise InputError.for_field(
                 "drop.start_x, drop.start_y", (self.start_x, self.start_y),
@@ -274,8 +186,7 @@ class DropCase:
 def _describe(obj: object, section: str) -> dict:
     out = {}
     for f in fields(obj):
-        param = _BY_SECTION[section][f.name]
-        unit = SI_UNITS.get(param.dimension, _EXTRA_UNITS.get(param.dimension, ("",))[0])
+        unit = si_unit(_BY_SECTION[section][f.name].dimension)
         suffix = f"_{unit}".replace("**", "^").replace("*", "_").replace("/", "_per_") if unit else ""
         out[f"{f.name}{suffix}"] = getattr(obj, f.name)
     return out
@@ -293,28 +204,20 @@ def from_mapping(data: dict | None, section: str, prefix: str | None = None) -> 
     ...
     auxbearing.errors.InputError: drop.clearence = '0.3 mm': unknown key; allowed keys: clearance, speed, ...
     """
-    table = _BY_SECTION[section]
-    prefix = f"{section}." if prefix is None else prefix
-    if data is None:
-        return {}
-    if not isinstance(data, dict):
-        raise InputError.for_field(section, data, "must be a table of keys")
-    out = {}
-    for key, value in data.items():
-        if key not in table:
-            raise InputError.for_field(prefix + key, value, "unknown key; allowed keys: " + ", ".join(table))
-        param = table[key]
-        out[key] = convert(prefix + key, value, param.dimension)
-        check(param, out[key], prefix + key)
-    return out
+    return read_table(data, _BY_SECTION[section], f"{section}." if prefix is None else prefix)
 
 
 def read_config(path: str | Path) -> tuple[BearingGeometry | None, dict, dict]:
     """The ``[bearing]``, ``[rotor]`` and ``[drop]`` tables of a TOML file (values with units).
 
     Returns the bearing (None when the file has no ``[bearing]`` table) and the SI keyword
-    arguments of :class:`Rotor` and :class:`DropCase`. Other tables are left to other commands.
+    arguments of :class:`Rotor` and :class:`DropCase`. Other tables are refused: a drop file
+    holds these three only.
     """
     data = read_toml(path)
+    unknown = [k for k in data if k not in ("bearing", "rotor", "drop")]
+    if unknown:
+        raise InputError.for_field(f"{Path(path).name}: [{unknown[0]}]", "table",
+                                   "unknown table; allowed tables: bearing, rotor, drop")
     bearing = bearing_from_mapping(data["bearing"], name=Path(path).stem) if "bearing" in data else None
     return bearing, from_mapping(data.get("rotor"), "rotor"), from_mapping(data.get("drop"), "drop")

@@ -37,8 +37,7 @@ from typing import NamedTuple
 import numba
 import numpy as np
 
-from auxbearing.core.ballset import _A, _ALPHA0, _RIC, _Z, _table, accumulate
-from auxbearing.errors import ConvergenceError
+from auxbearing.core.ballset import K_B, accumulate, table
 
 #: Status codes of :func:`solve_cases`.
 CONVERGED, MAX_ITERATIONS, LINE_SEARCH_FAILED = 0, 1, 2
@@ -52,7 +51,7 @@ _ULP = 2.220446049250313e-16
 
 @numba.njit(cache=True)
 def _scales(params):
-    ric = params[_RIC]
+    ric = params.moment_arm
     w = np.array([1.0, 1.0, 1.0, 1.0 / ric, 1.0 / ric])  # residual rows -> N
     xs = np.array([1.0, 1.0, 1.0, ric, ric])  # unknowns -> m
     return w, xs
@@ -64,7 +63,7 @@ def _along(tau, direction, goal, params, u, force, jac):
     for i in range(5):
         u[i] = tau * direction[i]
         force[i] = 0.0
-    accumulate(u, params, force, jac, False, False)
+    accumulate(u, params, params.clearance, force, jac, False, False)
     g = 0.0
     for i in range(5):
         g -= direction[i] * force[i]
@@ -80,12 +79,12 @@ def _directional(direction, target, params):
     force = np.zeros(5)
     jac = np.zeros((1, 1))
     u = np.zeros(5)
-    big_a = params[_A]
+    big_a = params.curvature_distance
     goal = target ** (2.0 / 3.0)
     lo, f_lo = 0.0, -goal
     # start near the Hertz compression of Z balls sharing the load, then widen by 2x
-    k_b, _ = _table(params, 0, params[_ALPHA0])
-    hi = min(max((target / (params[_Z] * k_b)) ** (2.0 / 3.0), 1e-12 * big_a), big_a)
+    k_b, _ = table(params, K_B, params.free_angle)
+    hi = min(max((target / (params.cos_azimuth.size * k_b)) ** (2.0 / 3.0), 1e-12 * big_a), big_a)
     f_hi = _along(hi, direction, goal, params, u, force, jac)
     count = 1
     while f_hi < 0.0:
@@ -127,7 +126,7 @@ def initial_guess(load, free, params):
     free : ndarray of bool, shape (5,)
         DOFs the ring may move in.
     params : ndarray
-        :func:`auxbearing.core.ballset.kernel_params`.
+        :class:`auxbearing.core.ballset.BallSet`.
     """
     w, xs = _scales(params)
     guess = np.zeros(5)
@@ -195,7 +194,7 @@ def _residual(u, load, free, params, w, force, jac, with_jac):
     force[:] = 0.0
     if with_jac:
         jac[:, :] = 0.0
-    accumulate(u, params, force, jac, with_jac, False)
+    accumulate(u, params, params.clearance, force, jac, with_jac, False)
     r = np.zeros(5)
     for i in range(5):
         if free[i]:
@@ -231,10 +230,10 @@ def newton(load, free, params, u0, tol, max_iter):
     r, merit, res = _residual(u, load, free, params, w, force, jac, True)
     if ref == 0.0:
         return u, res, 0, CONVERGED if res == 0.0 else MAX_ITERATIONS
-    z = params[_Z]
-    k_b, _ = _table(params, 0, params[_ALPHA0])
+    z = params.cos_azimuth.size
+    k_b, _ = table(params, K_B, params.free_angle)
     k_ref = 1.5 * z * k_b ** (2.0 / 3.0) * (ref / z) ** (1.0 / 3.0)
-    big_a = params[_A]
+    big_a = params.curvature_distance
     # force of Z balls compressed by a few ulp of A: below it the displacement cannot resolve
     # the load in double precision (loads of ~1e-20 N and less), so it is a round-off floor
     floor = z * k_b * (4.0 * _ULP * big_a) ** 1.5
@@ -312,8 +311,8 @@ def continuation(load, free, params, tol, max_iter):
     size = 0.0
     for i in range(5):
         size = max(size, abs(load[i]) * w[i])
-    k_b, _ = _table(params, 0, params[_ALPHA0])
-    big = params[_Z] * k_b * (0.05 * params[_A]) ** 1.5
+    k_b, _ = table(params, K_B, params.free_angle)
+    big = params.cos_azimuth.size * k_b * (0.05 * params.curvature_distance) ** 1.5
     lam = max(1.0, big / size) if size > 0.0 else 1.0
     if lam == 1.0:
         lam = 0.125  # a large load: come up to it from below instead
@@ -331,7 +330,24 @@ def continuation(load, free, params, tol, max_iter):
 
 
 @numba.njit(cache=True)
-def _solve_all(loads, free, params, guesses, use_guess, tol, max_iter):
+def solve_batch(loads, free, params, guesses, use_guess, tol, max_iter):
+    """Equilibrium of every load case: Newton from the rigid-ring start (or ``guesses``), then continuation.
+
+    Solves load + F(u) = 0 with F the ball-set resultant (source paper Eq. 14 and 16 in 5 DOF,
+    Harris & Kotzalas 2007 Advanced Concepts Eq. 1.35-1.39) for each row of ``loads`` (n, 5)
+    [N, N m]; ``free`` (5,) bool; returns displacement (n, 5), max scaled residual (n,) [N],
+    iterations (n,) and status (n,) (:data:`CONVERGED` or the failure code).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from auxbearing import get_bearing
+    >>> from auxbearing.ballset import ballset_params
+    >>> u, res, its, status = solve_batch(np.array([[500.0, 1000.0, 0.0, 0.0, 0.0]]), np.ones(5, np.bool_),
+    ...                                   ballset_params(get_bearing("QJ202")), np.zeros((1, 5)), False, 1e-9, 100)
+    >>> int(status[0]), round(float(u[0, 1]) * 1e6, 2)
+    (0, 12.5)
+    """
     n = loads.shape[0]
     u = np.zeros((n, 5))
     res = np.zeros(n)
@@ -357,63 +373,3 @@ class StaticSolution(NamedTuple):
     relative_residual: np.ndarray  #: (n,) residual / largest applied load component
     iterations: np.ndarray  #: (n,) Newton iterations
     status: np.ndarray  #: (n,) 0 converged
-
-
-def solve_cases(
-    loads: np.ndarray,
-    params: np.ndarray,
-    free: tuple[bool, ...] = (True,) * 5,
-    tol: float = DEFAULT_TOL,
-    max_iter: int = DEFAULT_MAX_ITER,
-    initial: np.ndarray | None = None,
-    raise_on_failure: bool = True,
-) -> StaticSolution:
-    """Equilibrium displacement of the inner ring for a batch of 5-DOF load cases.
-
-    Solves load + F(u) = 0 with F the ball-set resultant (source paper Eq. 14 and 16 in
-    5 DOF, Harris & Kotzalas 2007 Advanced Concepts Eq. 1.35-1.39).
-
-    Parameters
-    ----------
-    loads : array_like, shape (n, 5) or (5,)
-        (Fa, Fx, Fy, Mx, My) applied to the inner ring [N, N m].
-    params : ndarray
-        :func:`auxbearing.core.ballset.kernel_params`.
-    free : tuple of 5 bool
-        DOFs the ring may move in; a fixed DOF stays at zero and carries a reaction.
-    tol : float
-        Converged when the max residual [N] <= tol * the largest applied load component [N]
-        (moments divided by r_ic).
-    max_iter : int
-    initial : array_like, shape (n, 5), optional
-        Start instead of the rigid-ring estimate.
-    raise_on_failure : bool
-        Raise :class:`ConvergenceError` on the first case that did not converge.
-
-    Examples
-    --------
-    >>> from auxbearing import get_bearing
-    >>> from auxbearing.core.ballset import kernel_params
-    >>> sol = solve_cases([[500.0, 1000.0, 0.0, 0.0, 0.0]], kernel_params(get_bearing("QJ202")))
-    >>> bool(sol.relative_residual[0] <= 1e-9), round(float(sol.displacement[0, 1]) * 1e6, 2)
-    (True, 12.5)
-    """
-    loads = np.atleast_2d(np.asarray(loads, dtype=float))
-    if loads.ndim != 2 or loads.shape[1] != 5:
-        raise ValueError(f"loads shape {loads.shape}: must be (n, 5)")
-    free_arr = np.asarray(free, dtype=np.bool_)
-    use_guess = initial is not None
-    guesses = np.atleast_2d(np.asarray(initial, float)) if use_guess else np.zeros((1, 5))
-    u, res, its, status = _solve_all(loads, free_arr, params, guesses, use_guess, tol, max_iter)
-    w = np.array([1.0, 1.0, 1.0, 1.0 / params[_RIC], 1.0 / params[_RIC]])
-    ref = np.max(np.abs(loads) * w, axis=1)
-    rel = np.divide(res, ref, out=np.zeros_like(res), where=ref > 0.0)
-    if raise_on_failure and np.any(status != CONVERGED):
-        i = int(np.flatnonzero(status != CONVERGED)[0])
-        load_text = ", ".join(f"{v:.6g}" for v in loads[i])
-        raise ConvergenceError(
-            f"static equilibrium not reached for load case {i} (Fa, Fx, Fy, Mx, My) = ({load_text}) "
-            f"[N, N m]: {STATUS_TEXT[int(status[i])]}; relative residual {rel[i]:.3g} > {tol:g}",
-            float(res[i]), int(its[i]), i,
-        )
-    return StaticSolution(u, res, rel, its, status)

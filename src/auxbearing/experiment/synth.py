@@ -2,7 +2,7 @@
 
 No measured drop of a QJ202 or 7202 is public (the paper's Fig. 13 is only a picture), so the
 example data of ``auxbearing/catalog/experiments/`` are made here: the drop simulation of
-:mod:`auxbearing.analysis.drop` with known parameters, then what a test rig adds on top -- a
+:mod:`auxbearing.drop` with known parameters, then what a test rig adds on top -- a
 levitated stretch before the drop, a sensor offset (sensor zero off the bearing centre), white
 noise, the sensors' anti-alias low-pass (causal, so it also delays the signal), sampling and
 rounding. The files say SYNTHETIC in their header and give the true parameters, so the
@@ -10,7 +10,7 @@ pipeline's recovery can be tested.
 
 Regenerate the shipped files with::
 
-    python -m auxbearing.analysis.experiment_synth   # writes src/auxbearing/catalog/experiments/
+    python -m auxbearing.experiment.synth   # writes src/auxbearing/catalog/experiments/
 """
 
 from __future__ import annotations
@@ -22,8 +22,8 @@ from pathlib import Path
 import numpy as np
 from scipy import signal
 
-from auxbearing.analysis.drop import DropCase, Rotor, run_drop
 from auxbearing.bearing import BearingGeometry, load_bearing
+from auxbearing.drop import DropCase, Rotor, run_drop
 
 #: Folder of the shipped example data (inside the package, next to the catalogue).
 EXAMPLE_DIR = Path(__file__).resolve().parents[1] / "catalog" / "experiments"
@@ -79,7 +79,7 @@ def synthesize(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = N
     Parameters
     ----------
     bearing, rotor, case :
-        As :func:`auxbearing.analysis.drop.run_drop`; default case: Table II with
+        As :func:`auxbearing.drop.run_drop`; default case: Table II with
         :data:`TRUE_CASE`.
     sensor : SensorModel, optional
     duration : float
@@ -141,7 +141,7 @@ def write_csv(path: str | Path, channels: dict, truth: dict) -> Path:
     """Write channels in the documented CSV format with a SYNTHETIC header carrying ``truth``."""
     path = Path(path)
     lines = [
-        "# SYNTHETIC DATA - not a measurement. Made by auxbearing.analysis.experiment_synth:",
+        "# SYNTHETIC DATA - not a measurement. Made by auxbearing.experiment.synth:",
         "# the auxbearing drop simulation (source paper Sec. II.D, Table II, corrected per NOTES.md)",
         "# with a levitated stretch before the drop, a sensor offset, white noise, a causal 4th-order",
         "# Butterworth anti-alias low-pass, sampling and rounding on top. True values below (SI).",

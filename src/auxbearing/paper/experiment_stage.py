@@ -4,18 +4,18 @@ The paper's measured orbits (Fig. 13) are published only as pictures and its way
 stress is not described, so its measured-stress numbers (1728 MPa QJ202, 2348 MPa 7202 with a
 40 deg contact angle) cannot be checked. What this stage can show is the pipeline at work on
 data whose truth is known: SYNTHETIC drops made by our own simulation with sensor offset,
-noise and filtering on top (:mod:`auxbearing.analysis.experiment_synth`).
+noise and filtering on top (:mod:`auxbearing.experiment.synth`).
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from auxbearing.analysis.claims import CANNOT_CHECK, Assumption, Claim
-from auxbearing.analysis.drop import DropCase, Rotor, from_mapping
-from auxbearing.analysis.experiment_run import run_experiment
-from auxbearing.analysis.experiment_synth import EXAMPLE_DIR
-from auxbearing.analysis.report_model import Figure, Section
+from auxbearing.drop import DropCase, Rotor, from_mapping
+from auxbearing.experiment.run import run_experiment
+from auxbearing.experiment.synth import EXAMPLE_DIR
+from auxbearing.paper.claims import CANNOT_CHECK, Assumption, Claim
+from auxbearing.report.model import Figure, Section
 
 #: Source paper Sec. III: max stress computed from the measured drops.
 PAPER_EXPERIMENT = {"QJ202_MPa": 1728.0, "7202_40deg_MPa": 2348.0, "simulated_QJ202_MPa": 1483.0}

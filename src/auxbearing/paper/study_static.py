@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from auxbearing.analysis.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
-from auxbearing.analysis.report_model import Figure, Section
-from auxbearing.analysis.static_paper import static_study
 from auxbearing.bearing import BearingGeometry
+from auxbearing.paper.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
+from auxbearing.paper.static_paper import static_study
+from auxbearing.report.model import Figure, Section
 
 
 def _angle_spread(ds: xr.Dataset, pair: int) -> np.ndarray:

@@ -1,7 +1,7 @@
 """Quasi-static load distribution: loads with units in, xarray Dataset out (source paper Sec. II.C).
 
 The public layer over :mod:`auxbearing.core.ballset` (the one ball-set model) and
-:mod:`auxbearing.core.static` (batched Newton-Raphson). Conventions (module docstring of
+:mod:`auxbearing.core.statics` (batched Newton-Raphson). Conventions (module docstring of
 ``core.ballset``): loads (Fa, Fx, Fy, Mx, My) act ON the inner ring; the paper's planar
 (Fa, Fr, M) is Fx = Fr, My = -M, so M > 0 tilts the ring the way Eq. 10 adds r_ic theta cos(phi)
 to pair 1. Moment arm r_ic = inner groove curvature-centre radius (Harris).
@@ -31,10 +31,11 @@ from collections.abc import Sequence
 import numpy as np
 import xarray as xr
 
-from auxbearing import __version__
+from auxbearing import __version__, ballset
 from auxbearing.bearing import BearingGeometry, load_bearing
-from auxbearing.core import ballset
-from auxbearing.core.static import DEFAULT_TOL, solve_cases
+from auxbearing.core import statics as kernel
+from auxbearing.core.ballset import BallSet
+from auxbearing.core.statics import CONVERGED, DEFAULT_MAX_ITER, DEFAULT_TOL, STATUS_TEXT, StaticSolution
 from auxbearing.errors import ConvergenceError, InputError
 from auxbearing.units import to_si, ureg
 
@@ -51,6 +52,66 @@ TILT_CONDITIONS = ("free", "fixed")
 LOAD_KEYS = ("axial", "force_x", "force_y", "moment_x", "moment_y")
 _LOAD_DIMS = ("force", "force", "force", "moment", "moment")
 _LOAD_UNITS = ("N", "N", "N", "N*m", "N*m")
+
+
+def solve_cases(
+    loads: np.ndarray,
+    params: BallSet,
+    free: tuple[bool, ...] = (True,) * 5,
+    tol: float = DEFAULT_TOL,
+    max_iter: int = DEFAULT_MAX_ITER,
+    initial: np.ndarray | None = None,
+    raise_on_failure: bool = True,
+) -> StaticSolution:
+    """Equilibrium displacement of the inner ring for a batch of 5-DOF load cases.
+
+    Solves load + F(u) = 0 with F the ball-set resultant (source paper Eq. 14 and 16 in 5 DOF,
+    Harris & Kotzalas 2007 Advanced Concepts Eq. 1.35-1.39) by the compiled damped Newton of
+    :func:`auxbearing.core.statics.solve_batch`.
+
+    Parameters
+    ----------
+    loads : array_like, shape (n, 5) or (5,)
+        (Fa, Fx, Fy, Mx, My) applied to the inner ring [N, N m].
+    params : BallSet
+        :func:`auxbearing.ballset.ballset_params`.
+    free : tuple of 5 bool
+        DOFs the ring may move in; a fixed DOF stays at zero and carries a reaction.
+    tol : float
+        Converged when the max residual [N] <= tol * the largest applied load component [N]
+        (moments divided by r_ic).
+    max_iter : int
+    initial : array_like, shape (n, 5), optional
+        Start instead of the rigid-ring estimate.
+    raise_on_failure : bool
+        Raise :class:`ConvergenceError` on the first case that did not converge.
+
+    Examples
+    --------
+    >>> from auxbearing import get_bearing
+    >>> sol = solve_cases([[500.0, 1000.0, 0.0, 0.0, 0.0]], ballset.ballset_params(get_bearing("QJ202")))
+    >>> bool(sol.relative_residual[0] <= 1e-9), round(float(sol.displacement[0, 1]) * 1e6, 2)
+    (True, 12.5)
+    """
+    loads = np.atleast_2d(np.asarray(loads, dtype=float))
+    if loads.ndim != 2 or loads.shape[1] != 5:
+        raise ValueError(f"loads shape {loads.shape}: must be (n, 5)")
+    free_arr = np.asarray(free, dtype=np.bool_)
+    use_guess = initial is not None
+    guesses = np.atleast_2d(np.asarray(initial, float)) if use_guess else np.zeros((1, 5))
+    u, res, its, status = kernel.solve_batch(loads, free_arr, params, guesses, use_guess, tol, max_iter)
+    w = np.array([1.0, 1.0, 1.0, 1.0 / params.moment_arm, 1.0 / params.moment_arm])
+    ref = np.max(np.abs(loads) * w, axis=1)
+    rel = np.divide(res, ref, out=np.zeros_like(res), where=ref > 0.0)
+    if raise_on_failure and np.any(status != CONVERGED):
+        i = int(np.flatnonzero(status != CONVERGED)[0])
+        load_text = ", ".join(f"{v:.6g}" for v in loads[i])
+        raise ConvergenceError(
+            f"static equilibrium not reached for load case {i} (Fa, Fx, Fy, Mx, My) = ({load_text}) "
+            f"[N, N m]: {STATUS_TEXT[int(status[i])]}; relative residual {rel[i]:.3g} > {tol:g}",
+            float(res[i]), int(its[i]), i,
+        )
+    return StaticSolution(u, res, rel, its, status)
 
 
 def safety_factor(max_stress: np.ndarray | float) -> np.ndarray:
@@ -209,7 +270,7 @@ def solve_loads(
         raise InputError.for_field("case_names", len(case_names), f"must name each of the {loads.shape[0]} cases")
     where = [f" ({name})" if name else "" for name in case_names]
     k_override = _ball_constant(ball_constant)
-    params = ballset.kernel_params(bearing, k_override)
+    params = ballset.ballset_params(bearing, k_override)
     free = (axial_condition == "free", True, True, tilt == "free", tilt == "free")
     one_sided = all(s > 0.0 for s in bearing.axial_signs)
     if one_sided and free[0]:
@@ -321,7 +382,6 @@ _LOADS = (("axial_load", "N", "Applied axial load Fa (+z)"), ("force_x", "N", "A
 
 def _dataset(bearing, params, loads, sol, axial_condition, tilt, tol, k_override) -> xr.Dataset:
     state = ballset.ballset_state(sol.displacement, params)
-    head = ballset.unpack(params)
     n, z, p = state.load.shape
     per_pair = {
         "load": state.load, "compression": state.compression, "contact_angle": state.contact_angle,
@@ -355,7 +415,8 @@ def _dataset(bearing, params, loads, sol, axial_condition, tilt, tol, k_override
         "case": np.arange(n),
         "ball": np.arange(z),
         "pair": np.arange(1, p + 1),
-        "azimuth": ("ball", head["azimuths"], {"units": "rad", "long_name": "Position angle phi_j from +x"}),
+        "azimuth": ("ball", np.arctan2(params.sin_azimuth, params.cos_azimuth) % (2.0 * np.pi),
+                    {"units": "rad", "long_name": "Position angle phi_j from +x"}),
     }
     ds = xr.Dataset(data, coords=coords)
     ds.attrs.update(
@@ -363,7 +424,7 @@ def _dataset(bearing, params, loads, sol, axial_condition, tilt, tol, k_override
         bearing=json.dumps(bearing.describe()),
         axial_condition=axial_condition,
         tilt_condition=tilt,
-        moment_arm_m=head["moment_arm"],
+        moment_arm_m=params.moment_arm,
         moment_arm="inner groove curvature-centre radius r_ic (Harris)",
         tolerance=tol,
         ball_constant="Hertz K_b(alpha), Eq. 15" if k_override is None else f"{k_override:.6g} N/m^1.5 (user)",

@@ -11,7 +11,7 @@ module is our reading, built on the same models as the drop simulation (Sec. II.
 2. orbit -> force -> stress (:func:`contact_from_orbit`): the journal's excursion beyond the
    clearance circle, e = |O| - s, is shared in series by the rotor/race line contact
    (F = K_l delta^(10/9), Eq. 19, Palmgren's K_l) and the ball set carrying the race
-   (:func:`auxbearing.core.ballset.ballset_state`, Eq. 10-16 and 22, THE ball-set model of the
+   (:func:`auxbearing.ballset.ballset_state`, Eq. 10-16 and 22, THE ball-set model of the
    simulation). The race displacement u is not measured: we take it quasi-static, u along the
    contact normal with K_l (e - u)^(10/9) = F_ball(u), solved per sample by bisection. The
    race (12.5 g on a ball set of ~1e8 N/m) rings at ~10 kHz, above the ~2.5 kHz of an impact,
@@ -19,14 +19,14 @@ module is our reading, built on the same models as the drop simulation (Sec. II.
    added to the force from the filtered rate. Ball loads and the max ball stress (NOTES item 9)
    follow from u through the same ball-set model;
 3. whirl from the complex spectrum of x + i y
-   (:func:`auxbearing.analysis.drop.detect_whirl`, the simulation's own), impacts by counting
+   (:func:`auxbearing.whirl.spectral_whirl`), impacts by counting
    contact episodes with hysteresis.
 
-Readers: :mod:`auxbearing.analysis.experiment_io`. Fit of the uncertain parameters:
-:mod:`auxbearing.analysis.experiment_fit`. Everything in one call:
-:func:`auxbearing.analysis.experiment_run.run_experiment`. Report section:
-:func:`auxbearing.analysis.experiment_stage.experiment_stage`. Example data (SYNTHETIC):
-:mod:`auxbearing.analysis.experiment_synth`.
+Readers: :mod:`auxbearing.experiment.io`. Fit of the uncertain parameters:
+:mod:`auxbearing.experiment.fit`. Everything in one call:
+:func:`auxbearing.experiment.run.run_experiment`. Report section:
+:func:`auxbearing.paper.experiment_stage.experiment_stage`. Example data (SYNTHETIC):
+:mod:`auxbearing.experiment.synth`.
 """
 
 from __future__ import annotations
@@ -38,9 +38,9 @@ import numpy as np
 import xarray as xr
 from scipy import optimize, signal
 
-from auxbearing.analysis.drop import detect_whirl
-from auxbearing.core.ballset import ballset_state
+from auxbearing.ballset import ballset_state
 from auxbearing.errors import InputError
+from auxbearing.whirl import spectral_whirl
 
 #: Standard gravity [m/s^2], to back-date the drop from the first clear movement (free fall).
 GRAVITY = 9.80665
@@ -230,7 +230,7 @@ def preprocess(measured: xr.Dataset, options: Preprocessing | None = None) -> tu
     Parameters
     ----------
     measured : xarray.Dataset
-        From :func:`auxbearing.analysis.experiment_io.read_measured`.
+        From :func:`auxbearing.experiment.io.read_measured`.
     options : Preprocessing, optional
 
     Returns
@@ -308,7 +308,7 @@ def contact_from_orbit(x: np.ndarray, y: np.ndarray, clearance: float, line_stif
 
         K_l (e - u)^(10/9) = F_b(u),   F_b(u) = -F_ball(u n) . n    (Eq. 19 and Eq. 22)
 
-    with F_ball the ball-set force of :func:`auxbearing.core.ballset.ballset_state` on the inner
+    with F_ball the ball-set force of :func:`auxbearing.ballset.ballset_state` on the inner
     ring displaced by u n. The left side falls and the right side rises with u on [0, e], so
     bisection brackets the root. The contact force adds the line-contact damping of Eq. 19,
     C_l d(e - u)/dt (central differences), and is clipped at zero (a contact never pulls).
@@ -322,7 +322,7 @@ def contact_from_orbit(x: np.ndarray, y: np.ndarray, clearance: float, line_stif
     line_stiffness : float
         K_l [N/m^(10/9)].
     ball_params : ndarray
-        :func:`auxbearing.core.ballset.kernel_params` of the bearing.
+        :func:`auxbearing.ballset.ballset_params` of the bearing.
     line_damping : float
         C_l [N s/m]; 0 gives the elastic force only.
     dt : float, optional
@@ -340,9 +340,9 @@ def contact_from_orbit(x: np.ndarray, y: np.ndarray, clearance: float, line_stif
     Examples
     --------
     >>> from auxbearing import get_bearing
-    >>> from auxbearing.core.ballset import kernel_params
+    >>> from auxbearing.ballset import ballset_params
     >>> out = contact_from_orbit(np.array([0.0]), np.array([-210e-6]), 200e-6, 1.463e9,
-    ...                          kernel_params(get_bearing("QJ202")))
+    ...                          ballset_params(get_bearing("QJ202")))
     >>> f, u = float(out["elastic_force"][0]), float(out["race_displacement"][0])
     >>> round(f), bool(abs(1.463e9 * (10e-6 - u) ** (10 / 9) / f - 1) < 1e-9)
     (593, True)
@@ -457,7 +457,7 @@ def orbit_features(orbit: xr.Dataset, clearance: float, line_stiffness: float, b
     force, stress = np.where(after, c["contact_force"], 0.0), np.where(after, c["max_ball_stress"], 0.0)
     kf, ks = int(np.argmax(force)), int(np.argmax(stress))
     first = impacts["first_impact_s"]
-    whirl = detect_whirl(t, orbit.x.values, orbit.y.values, clearance, spin,
+    whirl = spectral_whirl(t, orbit.x.values, orbit.y.values, clearance, spin,
                          first if first is not None else t[-1] + 1.0)
     summary = {
         "peak_contact_force_N": float(force[kf]), "peak_force_time_ms": float(t[kf] * 1e3),

@@ -1,6 +1,6 @@
 """The paper's static study (source paper Sec. II.C, Fig. 6-8) plus the Stribeck check.
 
-Built on :func:`auxbearing.analysis.static.load_distribution`; the loads the paper does not
+Built on :func:`auxbearing.statics.load_distribution`; the loads the paper does not
 print are named constants below, each with the reason for its value.
 """
 
@@ -10,8 +10,8 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
-from auxbearing.analysis.static import STRIBECK_CONSTANT, load_distribution, stribeck_comparison
 from auxbearing.bearing import BearingGeometry, load_bearing
+from auxbearing.statics import STRIBECK_CONSTANT, load_distribution, stribeck_comparison
 
 #: Fig. 6 loads. The paper prints only "(d) Radial force is 1000N"; the axial sweep is at that
 #: radial load and the radial sweep at 500 N axial load (our choice: with zero axial load the

@@ -11,7 +11,7 @@ The CSV has one load case per row and its units in the header, read by
 Columns are either the paper's planar loads ``axial`` (Fa), ``radial`` (Fr), ``moment`` (M)
 or the 5-DOF loads ``axial``, ``force_x``, ``force_y``, ``moment_x``, ``moment_y`` (short
 names ``Fa``, ``Fr``, ``M``, ``Fx``, ``Fy``, ``Mx``, ``My``); a missing column is zero. Every case
-is solved in one batched Newton call (:func:`auxbearing.analysis.static.solve_loads`).
+is solved in one batched Newton call (:func:`auxbearing.statics.solve_loads`).
 """
 
 from __future__ import annotations
@@ -22,9 +22,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from auxbearing.analysis.static import load_distribution, solve_loads, validity_warnings
 from auxbearing.bearing import BearingGeometry
 from auxbearing.errors import InputError
+from auxbearing.statics import load_distribution, solve_loads, validity_warnings
 from auxbearing.unit_csv import Column, read_unit_csv
 
 PLANAR = ("axial", "radial", "moment")
@@ -88,13 +88,13 @@ def load_cases(bearing: BearingGeometry | str, path: str | Path, **options) -> x
         The CSV (format in the module docstring).
     **options
         ``axial_condition``, ``tilt``, ``ball_constant``, ``tol`` of
-        :func:`auxbearing.analysis.static.solve_loads`; errors name the file line of the case.
+        :func:`auxbearing.statics.solve_loads`; errors name the file line of the case.
 
     Returns
     -------
     xarray.Dataset
-        That of :func:`~auxbearing.analysis.static.load_distribution` (planar columns) or
-        :func:`~auxbearing.analysis.static.solve_loads` (5-DOF columns), plus ``line``, the file
+        That of :func:`~auxbearing.statics.load_distribution` (planar columns) or
+        :func:`~auxbearing.statics.solve_loads` (5-DOF columns), plus ``line``, the file
         line of each case, and ``source_file`` in attrs.
     """
     data, lines = read_load_cases(path)

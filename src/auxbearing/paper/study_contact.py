@@ -7,11 +7,11 @@ import math
 import numpy as np
 import xarray as xr
 
-from auxbearing.analysis.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS, Assumption, Claim, within
-from auxbearing.analysis.contact import PAPER_CONTACT, contact_map, type_comparison
-from auxbearing.analysis.report_model import Figure, Section
 from auxbearing.bearing import BearingGeometry
+from auxbearing.contact import PAPER_CONTACT, contact_map, type_comparison
+from auxbearing.paper.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS, Assumption, Claim, within
 from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
+from auxbearing.report.model import Figure, Section
 
 #: Stress penalty that defines the "design window" of contact angle: the largest angle whose
 #: inner-race max stress under the same radial ball load exceeds the minimum (at the smallest

@@ -1,1 +1,0 @@
-"""Studies built from the core kernels: sweeps, comparisons, the paper's figures."""

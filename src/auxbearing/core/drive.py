@@ -1,0 +1,21 @@
+"""The compiled driver of a machine run: the generic integrator on the machine and its observer.
+
+Functions passed as arguments are named as module attributes (``machine.rhs``): numba 0.68 caches
+the caller then, but not when they are plain global names (it keeps a pointer to the Python object).
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from auxbearing.core import machine, watch
+from auxbearing.core.integrate import dopri5
+
+
+@njit(cache=True)
+def advance(m, w, y, t_end, settings, memory, grid):
+    """DOPRI5 on the machine (:func:`auxbearing.core.machine.rhs`) with :func:`~auxbearing.core.watch.observe`.
+
+    Arguments as :func:`auxbearing.core.integrate.dopri5`; returns its status.
+    """
+    return dopri5(machine.rhs, watch.observe, m, w, y, t_end, settings, memory, grid)

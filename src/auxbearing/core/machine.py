@@ -1,0 +1,514 @@
+"""Right-hand side of a machine touchdown: rigid rotor, one or two touchdown planes, races, mounts.
+
+The source paper's drop (Sec. II.D, Eq. 17-26, read as ../shared/paper/NOTES.md items 1-9) is the
+planar special case: one plane at the mass centre with tilt and axial motion locked. Everything is
+SI; the packing of user inputs into the NamedTuples below happens in :mod:`auxbearing.machine`.
+
+Rotor (a rigid body, small tilts; Friswell, Penny, Garvey & Lees, *Dynamics of Rotating Machines*,
+2010, Sec. 3.5, Eq. 3.63-3.66 for the gyroscopic rigid rotor). Generalised coordinates are the
+mass centre G, the tilts theta_p of the principal axis and the spin angle phi; the state holds the
+*geometric* axis instead (its centre O in the mass-centre plane and its tilts theta_g), which is what
+touches the bearings:
+
+* static unbalance e at phase phi_e: G = O + e u(phi + phi_e), u(b) = (cos b, sin b);
+* couple unbalance chi at phase phi_c: theta_p = theta_g + chi w(phi + phi_c), w(b) = (-sin b, cos b), so
+  the principal axis leans towards u(phi + phi_c) at +z;
+* m G'' = F,   J_t theta_px'' + J_p Omega theta_py' = M_x,   J_t theta_py'' - J_p Omega theta_px' = M_y,
+  J_p Omega' = Q_phi (angular momentum about G, linear in the tilts; the gyroscopic terms do no work);
+* a point of the journal at axial position a from G with lateral offset rho from the axis has
+  P = O + a (theta_gy, -theta_gx) + rho (rho turning with phi), P_z = G_z + a + theta_px rho_y -
+  theta_py rho_x. Its velocity is dP/dq q' and a force F there contributes F . dP/dq to the
+  generalised forces (:func:`_apply_rotor`), so the power of every contact force equals its work
+  on the coordinates and the energy audit closes to the integration error.
+
+Touchdown plane k: the journal/race line contact (Eq. 17, 19-21 with NOTES items 2-3: normal from
+the centre offset, friction against the slip, regularised as tanh(|v| / v_eps) along the slip, which
+here also has an axial part), the inner race (x, y, axial z when the plane catches axially, spin) on
+THE ball-set model (:func:`auxbearing.core.ballset.accumulate`, Eq. 22 read as NOTES item 4, with the
+race tilt neglected: its tilt stiffness through the balls dwarfs the moment a line contact passes),
+isotropic ball-set damping (Eq. 23), rolling resistance (Eq. 24 as NOTES item 1 corrects it: a
+tangential force mu_2 |F_e| at the inner raceway of the loaded zone), an outer ring that is either
+fixed at the bearing centre or carried by a mount (stiffness with an optional dead band, damping, a
+hard stop), and an optional axial face contact of a rotor collar on the race face (linear stiffness
+and damping; friction against the local slip averaged over the face's mean circle, which turns an
+axial load into a torque and a lateral force on the rotor: Wilkes et al., GT2013-94594).
+
+State layout: :data:`STATE_NAMES` (rotor, then :data:`MAX_PLANES` planes, then bookkeeping integrals
+of work and heat that the energy audit uses; these carry ``atol = inf`` so they never steer the step).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from auxbearing.core.ballset import accumulate
+
+MAX_PLANES = 2
+ROTOR_STATES = ("x", "y", "z", "tilt_x", "tilt_y", "spin_angle",
+                "vx", "vy", "vz", "tilt_rate_x", "tilt_rate_y", "spin_speed")
+PLANE_STATES = ("race_x", "race_y", "race_z", "race_angle", "race_vx", "race_vy", "race_vz", "race_speed",
+                "ring_x", "ring_y", "ring_vx", "ring_vy")
+#: Bookkeeping integrals [J]: work of process forces and torque, drag loss, energy stored in the ball
+#: sets, and per plane the heat made at the journal/race and face contacts, inside the bearing
+#: (ball damping, rolling resistance) and in the mount damper.
+LEDGER = ("work_in", "drag_loss", "ballset_work", "heat_contact_0", "heat_bearing_0", "heat_mount_0",
+          "heat_contact_1", "heat_bearing_1", "heat_mount_1")
+N_ROTOR = len(ROTOR_STATES)
+N_PLANE = len(PLANE_STATES)
+LEDGER_AT = N_ROTOR + MAX_PLANES * N_PLANE
+N_STATE = LEDGER_AT + len(LEDGER)
+STATE_NAMES = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(MAX_PLANES) for name in PLANE_STATES), *LEDGER)
+
+X, Y, Z, TX, TY, PHI, VX, VY, VZ, WX, WY, OMEGA = range(N_ROTOR)
+RX, RY, RZ, RPSI, RVX, RVY, RVZ, ROMEGA, OX, OY, OVX, OVY = range(N_PLANE)
+W_IN, DRAG_LOSS, BALLSET_WORK = LEDGER_AT, LEDGER_AT + 1, LEDGER_AT + 2
+HEAT_AT = LEDGER_AT + 3  # + 3 k + (0 contact, 1 bearing, 2 mount)
+
+#: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
+#: integrates the first harmonics of the slip field exactly).
+FACE_POINTS = 8
+#: Per-plane quantities of :func:`plane_forces` (diagnostics for the observer and the outputs).
+DIAG_FIELDS = ("penetration", "normal_force", "friction_force", "slip_velocity", "ball_force_x", "ball_force_y",
+               "ball_force_axial", "max_ball_load", "axial_force", "axial_penetration", "mount_deflection",
+               "face_torque")
+(D_PEN, D_FN, D_FT, D_SLIP, D_BFX, D_BFY, D_BFZ, D_QMAX, D_FA, D_APEN, D_MOUNT, D_FACE_T) = range(len(DIAG_FIELDS))
+
+
+class Rotor(NamedTuple):
+    """Rotor parameters (SI)."""
+
+    mass: float  #: m [kg]
+    polar_inertia: float  #: J_p about the spin axis through G [kg m^2]
+    transverse_inertia: float  #: J_t about a transverse axis through G [kg m^2]
+    unbalance: float  #: e [m]
+    unbalance_phase: float  #: phi_e [rad]
+    couple_unbalance: float  #: chi [rad]
+    couple_phase: float  #: phi_c [rad]
+    gravity_x: float  #: gravitational acceleration components [m/s^2]
+    gravity_y: float
+    gravity_z: float
+    force_x: float  #: constant process force at G [N]
+    force_y: float
+    force_z: float
+    process_torque: float  #: constant spin torque on the rotor [N m]
+    drag_constant: float  #: T0 of T = T0 + c1 Omega + c2 Omega^2 [N m]
+    drag_viscous: float  #: c1 [N m s]
+    drag_windage: float  #: c2 [N m s^2]
+    drag_speed_scale: float  #: speed below which T0 is regularised as tanh(Omega / scale) [rad/s]
+    tilt_free: bool  #: False locks the tilts (planar rotor)
+    axial_free: bool  #: False locks G_z
+
+
+class Planes(NamedTuple):
+    """Touchdown-plane parameters, each an array over :data:`MAX_PLANES` (SI)."""
+
+    active: np.ndarray  #: 1.0 for a plane in use
+    position: np.ndarray  #: axial position a of the plane from G [m]
+    clearance: np.ndarray  #: radial clearance s between journal and race bore [m]
+    journal_radius: np.ndarray  #: r [m]
+    line_stiffness: np.ndarray  #: K_l [N/m^(10/9)] (Eq. 19)
+    line_damping: np.ndarray  #: C_l [N s/m]
+    sliding_friction: np.ndarray  #: mu_1 [-]
+    rolling_friction: np.ndarray  #: mu_2 [-] (Eq. 24)
+    slip_velocity: np.ndarray  #: v_eps of the friction regularisation [m/s]
+    race_mass: np.ndarray  #: [kg]
+    race_inertia: np.ndarray  #: polar [kg m^2]
+    raceway_radius: np.ndarray  #: inner raceway radius R_i, where the balls touch the race [m]
+    ball_damping: np.ndarray  #: C_b [N s/m] (Eq. 23), on the race velocity relative to the ring
+    race_axial_free: np.ndarray  #: 1.0 when the race moves axially (the plane catches axially)
+    ring_free: np.ndarray  #: 1.0 when the outer ring sits in a compliant mount
+    ring_mass: np.ndarray  #: mass moving with the outer ring in the mount [kg]
+    mount_stiffness: np.ndarray  #: [N/m]
+    mount_damping: np.ndarray  #: [N s/m]
+    mount_deadband: np.ndarray  #: radial travel before the mount spring engages [m]
+    stop_gap: np.ndarray  #: radial travel to the hard stop [m] (inf: none)
+    stop_stiffness: np.ndarray  #: [N/m]
+    stop_damping: np.ndarray  #: [N s/m]
+    centre_x: np.ndarray  #: bearing centre (misalignment) [m]
+    centre_y: np.ndarray
+    axial_clearance: np.ndarray  #: collar-to-race-face clearance [m] (inf: no axial touchdown)
+    face_plus: np.ndarray  #: 1.0 when the rotor can push the race towards +z
+    face_minus: np.ndarray  #: 1.0 when the rotor can push the race towards -z
+    face_stiffness: np.ndarray  #: [N/m]
+    face_damping: np.ndarray  #: [N s/m]
+    face_friction: np.ndarray  #: [-]
+    face_radius: np.ndarray  #: mean radius of the contact annulus on the race face [m]
+
+
+class Limits(NamedTuple):
+    """Range limits of the model (:mod:`auxbearing.core.watch` stops a run that crosses one), SI."""
+
+    line_force_per_length: np.ndarray  #: (2,) journal/race contact force per unit length [N/m]
+    line_length: np.ndarray  #: (2,) contact length of the journal on the race [m]
+    ball_stress: float  #: largest Hertz stress the elastic ball contact may mean [Pa]
+    shoulder_angle_inner: np.ndarray  #: (2,) groove arc from the bottom to the shoulder [rad]
+    shoulder_angle_outer: np.ndarray  #: (2,)
+    groove_radius_inner: np.ndarray  #: (2,) f_i D [m]
+    groove_radius_outer: np.ndarray  #: (2,)
+    mount_travel: np.ndarray  #: (2,) largest radial travel of the outer ring [m]
+    race_axial_travel: np.ndarray  #: (2,) largest axial travel of the race [m]
+    energy_tolerance: float  #: energy gain, relative to the energy brought in, that counts as a run-away
+
+
+class Machine(NamedTuple):
+    """Everything :func:`rhs` and the observer need."""
+
+    rotor: Rotor
+    planes: Planes
+    ballsets: tuple  #: one :class:`auxbearing.core.ballset.BallSet` per plane (a copy of plane 0 when inactive)
+    ballset_clearance: np.ndarray  #: diametral clearance of each plane's bearing [m]
+    limits: Limits
+
+
+# ----------------------------------------------------------------------------- rotor kinematics
+@njit(cache=True, inline="always")
+def rotor_kinematics(y, rotor):
+    """(e u', chi w', theta_p, theta_p') at the state: what maps coordinates to points (module docstring).
+
+    Returns a tuple: eu'_x, eu'_y, chi w_x, chi w_y, chi w'_x, chi w'_y, theta_px, theta_py,
+    theta_px', theta_py' [m, rad, rad/s].
+    """
+    be = y[PHI] + rotor.unbalance_phase
+    bc = y[PHI] + rotor.couple_phase
+    e = rotor.unbalance
+    chi = rotor.couple_unbalance
+    eux, euy = -e * math.sin(be), e * math.cos(be)  # e u'
+    cwx, cwy = -chi * math.sin(bc), chi * math.cos(bc)  # chi w
+    cwpx, cwpy = -chi * math.cos(bc), -chi * math.sin(bc)  # chi w'
+    om = y[OMEGA]
+    return (eux, euy, cwx, cwy, cwpx, cwpy, y[TX] + cwx, y[TY] + cwy, y[WX] + cwpx * om, y[WY] + cwpy * om)
+
+
+@njit(cache=True, inline="always")
+def _point_velocity(y, kin, a, rho_x, rho_y):
+    """Velocity of the rotor's material point at axial station a, lateral offset rho from the axis."""
+    om = y[OMEGA]
+    vx = y[VX] + a * y[WY] - om * rho_y
+    vy = y[VY] - a * y[WX] + om * rho_x
+    # d/dt of theta_px rho_y - theta_py rho_x with rho turning at Omega
+    vz = y[VZ] + kin[8] * rho_y - kin[9] * rho_x + om * (kin[6] * rho_x + kin[7] * rho_y)
+    return vx, vy, vz
+
+
+@njit(cache=True, inline="always")
+def _apply_rotor(q, kin, a, rho_x, rho_y, fx, fy, fz):
+    """Add F . dP/dq of a force F at the point (a, rho) to the generalised forces q = (G, theta_p, phi)."""
+    q[0] += fx
+    q[1] += fy
+    q[2] += fz
+    q[3] += -a * fy + rho_y * fz
+    q[4] += a * fx - rho_x * fz
+    q[5] += (fx * (-kin[0] - a * kin[5] - rho_y) + fy * (-kin[1] + a * kin[4] + rho_x)
+             + fz * (kin[6] * rho_x + kin[7] * rho_y))
+
+
+@njit(cache=True, inline="always")
+def _friction(mu_fn, vx, vy, vz, v_eps):
+    """Regularised Coulomb friction against a slip vector: -mu F_n tanh(|v|/v_eps) v/|v| (NOTES item 3)."""
+    speed = math.sqrt(vx * vx + vy * vy + vz * vz)
+    if speed == 0.0 or mu_fn == 0.0:
+        return 0.0, 0.0, 0.0
+    scale = -mu_fn * math.tanh(speed / v_eps) / speed
+    return scale * vx, scale * vy, scale * vz
+
+
+# ----------------------------------------------------------------------------- one plane
+@njit(cache=True, inline="always")
+def plane_forces(k, y, m, kin, q, out, diag):
+    """Forces of touchdown plane k (module docstring).
+
+    Adds to the rotor's generalised forces ``q``, writes the plane's derivatives and heat rates into
+    ``out`` and the plane's :data:`DIAG_FIELDS` into ``diag``.
+    """
+    p = m.planes
+    b = N_ROTOR + k * N_PLANE
+    heat = HEAT_AT + 3 * k
+    a = p.position[k]
+    r = p.journal_radius[k]
+    s = p.clearance[k]
+    veps = p.slip_velocity[k]
+    # journal axis point and its velocity (the axis point itself: rho = 0)
+    jx = y[X] + a * y[TY]
+    jy = y[Y] - a * y[TX]
+    jz = y[Z] + a
+    rx, ry, rz = y[b + RX], y[b + RY], y[b + RZ]
+    rvx, rvy, rvz, rw = y[b + RVX], y[b + RVY], y[b + RVZ], y[b + ROMEGA]
+    fx_r = 0.0  # forces and torque ON the race
+    fy_r = 0.0
+    fz_r = 0.0
+    t_r = 0.0
+    for i in range(len(DIAG_FIELDS)):
+        diag[i] = 0.0
+    # --- journal/race line contact (Eq. 17, 19-21, corrected)
+    dx = jx - rx
+    dy = jy - ry
+    dist = math.sqrt(dx * dx + dy * dy)
+    delta = dist - s
+    diag[D_PEN] = delta
+    if delta > 0.0:
+        nx = dx / dist
+        ny = dy / dist
+        rho_x, rho_y = r * nx, r * ny
+        vpx, vpy, vpz = _point_velocity(y, kin, a, rho_x, rho_y)
+        arm = r + s  # race material point at the bore, where the journal touches it
+        vqx = rvx - rw * arm * ny
+        vqy = rvy + rw * arm * nx
+        dvx = vpx - vqx
+        dvy = vpy - vqy
+        dvz = vpz - rvz
+        vn = dvx * nx + dvy * ny
+        elastic = p.line_stiffness[k] * delta ** (10.0 / 9.0)
+        fn = max(0.0, elastic + p.line_damping[k] * vn)
+        sx = dvx - vn * nx  # slip: the relative velocity in the tangent plane
+        sy = dvy - vn * ny
+        ffx, ffy, ffz = _friction(p.sliding_friction[k] * fn, sx, sy, dvz, veps)
+        cfx = -fn * nx + ffx  # on the rotor
+        cfy = -fn * ny + ffy
+        _apply_rotor(q, kin, a, rho_x, rho_y, cfx, cfy, ffz)
+        fx_r -= cfx
+        fy_r -= cfy
+        fz_r -= ffz
+        t_r -= arm * (nx * cfy - ny * cfx)
+        out[heat] += (fn - elastic) * vn - (ffx * sx + ffy * sy + ffz * dvz)
+        diag[D_FN] = fn
+        diag[D_FT] = -ny * ffx + nx * ffy
+        diag[D_SLIP] = -ny * sx + nx * sy
+    # --- axial face contact of a rotor collar on the race face
+    zeta = jz - rz  # rotor at the plane relative to the race, axially
+    gap_plus = zeta - p.axial_clearance[k]
+    gap_minus = -zeta - p.axial_clearance[k]
+    side = 0.0
+    pen = 0.0
+    if p.face_plus[k] > 0.0 and gap_plus > 0.0:
+        side, pen = 1.0, gap_plus
+    elif p.face_minus[k] > 0.0 and gap_minus > 0.0:
+        side, pen = -1.0, gap_minus
+    diag[D_APEN] = max(gap_plus if p.face_plus[k] > 0.0 else -np.inf, gap_minus if p.face_minus[k] > 0.0 else -np.inf)
+    if side != 0.0:
+        rho_cx, rho_cy = rx - jx, ry - jy  # the face annulus is centred on the race
+        _, _, vcz = _point_velocity(y, kin, a, rho_cx, rho_cy)
+        pen_rate = side * (vcz - rvz)
+        elastic = p.face_stiffness[k] * pen
+        fa = max(0.0, elastic + p.face_damping[k] * pen_rate)
+        _apply_rotor(q, kin, a, rho_cx, rho_cy, 0.0, 0.0, -side * fa)
+        fz_r += side * fa
+        out[heat] += (fa - elastic) * pen_rate
+        diag[D_FA] = side * fa
+        mu_share = p.face_friction[k] * fa / FACE_POINTS
+        rf = p.face_radius[k]
+        torque = 0.0
+        for i in range(FACE_POINTS):
+            beta = 2.0 * math.pi * i / FACE_POINTS
+            ox, oy = rf * math.cos(beta), rf * math.sin(beta)
+            vax, vay, _ = _point_velocity(y, kin, a, rho_cx + ox, rho_cy + oy)
+            slip_x = vax - (rvx - rw * oy)
+            slip_y = vay - (rvy + rw * ox)
+            gx, gy, _ = _friction(mu_share, slip_x, slip_y, 0.0, veps)
+            _apply_rotor(q, kin, a, rho_cx + ox, rho_cy + oy, gx, gy, 0.0)
+            fx_r -= gx
+            fy_r -= gy
+            t_r -= ox * gy - oy * gx
+            torque += ox * gy - oy * gx
+            out[heat] -= gx * slip_x + gy * slip_y
+        diag[D_FACE_T] = torque
+    # --- ball set (Eq. 22), its damping (Eq. 23) and rolling resistance (Eq. 24, corrected)
+    ox_, oy_ = y[b + OX], y[b + OY]
+    ovx, ovy = y[b + OVX], y[b + OVY]
+    disp = np.zeros(5)
+    disp[0] = rz
+    disp[1] = rx - ox_
+    disp[2] = ry - oy_
+    force = np.zeros(5)
+    jac = np.zeros((1, 1))
+    qmax, _ = accumulate(disp, m.ballsets[k], m.ballset_clearance[k], force, jac, False, False)
+    fex, fey = force[1], force[2]
+    fez = force[0] if p.race_axial_free[k] > 0.0 else 0.0
+    diag[D_BFX], diag[D_BFY], diag[D_BFZ], diag[D_QMAX] = fex, fey, force[0], qmax
+    cb = p.ball_damping[k]
+    relx, rely, relz = rvx - ovx, rvy - ovy, rvz
+    dampx, dampy, dampz = -cb * relx, -cb * rely, -cb * relz
+    fx_r += fex + dampx
+    fy_r += fey + dampy
+    fz_r += fez + dampz
+    out[heat + 1] += cb * (relx * relx + rely * rely + relz * relz)
+    out[BALLSET_WORK] -= fex * relx + fey * rely + fez * relz
+    ring_fx = -fex - dampx
+    ring_fy = -fey - dampy
+    fe = math.sqrt(fex * fex + fey * fey)
+    mu2 = p.rolling_friction[k]
+    if fe > 0.0 and mu2 > 0.0:
+        ux = -fex / fe  # the loaded zone: where the ball set pushes back from
+        uy = -fey / fe
+        roll = -mu2 * fe * math.tanh(rw * p.raceway_radius[k] / veps)
+        fx_r -= roll * uy
+        fy_r += roll * ux
+        t_r += p.raceway_radius[k] * roll
+        ring_fx += roll * uy
+        ring_fy -= roll * ux
+        out[heat + 1] -= roll * (-uy * relx + ux * rely + p.raceway_radius[k] * rw)
+    # --- race equations
+    g = m.rotor
+    mr = p.race_mass[k]
+    out[b + RX] = rvx
+    out[b + RY] = rvy
+    out[b + RPSI] = rw
+    out[b + RVX] = fx_r / mr + g.gravity_x
+    out[b + RVY] = fy_r / mr + g.gravity_y
+    out[b + ROMEGA] = t_r / p.race_inertia[k]
+    if p.race_axial_free[k] > 0.0:
+        out[b + RZ] = rvz
+        out[b + RVZ] = fz_r / mr + g.gravity_z
+    # --- outer ring in its mount
+    if p.ring_free[k] > 0.0:
+        ux_, uy_ = ox_ - p.centre_x[k], oy_ - p.centre_y[k]
+        travel = math.sqrt(ux_ * ux_ + uy_ * uy_)
+        diag[D_MOUNT] = travel
+        spring = p.mount_stiffness[k] * max(0.0, travel - p.mount_deadband[k])
+        stop = 0.0
+        if travel > p.stop_gap[k]:
+            stop_rate = (ux_ * ovx + uy_ * ovy) / travel
+            stop_elastic = p.stop_stiffness[k] * (travel - p.stop_gap[k])
+            stop = max(0.0, stop_elastic + p.stop_damping[k] * stop_rate)
+            out[heat + 2] += (stop - stop_elastic) * stop_rate
+        if travel > 0.0:
+            ring_fx -= (spring + stop) * ux_ / travel
+            ring_fy -= (spring + stop) * uy_ / travel
+        cm = p.mount_damping[k]
+        ring_fx -= cm * ovx
+        ring_fy -= cm * ovy
+        out[heat + 2] += cm * (ovx * ovx + ovy * ovy)
+        out[b + OX] = ovx
+        out[b + OY] = ovy
+        out[b + OVX] = ring_fx / p.ring_mass[k] + g.gravity_x
+        out[b + OVY] = ring_fy / p.ring_mass[k] + g.gravity_y
+
+
+# ----------------------------------------------------------------------------- the machine
+@njit(cache=True)
+def rhs(t, y, m, out):
+    """dy/dt of the machine (module docstring); ledger rates included.
+
+    Examples
+    --------
+    >>> from auxbearing.machine import paper_rig
+    >>> from auxbearing.core.machine import N_STATE, VY
+    >>> import numpy as np
+    >>> model = paper_rig().kernel()
+    >>> d = np.zeros(N_STATE); rhs(0.0, model.y0, model.machine, d)
+    >>> round(float(d[VY]), 5)  # the journal centre falls freely at the start
+    -9.80665
+    """
+    for i in range(out.size):
+        out[i] = 0.0
+    rotor = m.rotor
+    kin = rotor_kinematics(y, rotor)
+    q = np.zeros(6)  # generalised forces on G (3), theta_p (2), phi
+    diag = np.empty(len(DIAG_FIELDS))
+    for k in range(MAX_PLANES):
+        if m.planes.active[k] > 0.0:
+            plane_forces(k, y, m, kin, q, out, diag)
+    om = y[OMEGA]
+    mass = rotor.mass
+    vgx = y[VX] + kin[0] * om
+    vgy = y[VY] + kin[1] * om
+    q[0] += rotor.force_x
+    q[1] += rotor.force_y
+    q[2] += rotor.force_z
+    drag = -(rotor.drag_constant * math.tanh(om / rotor.drag_speed_scale) + rotor.drag_viscous * om
+             + rotor.drag_windage * om * abs(om))
+    q[5] += drag + rotor.process_torque
+    out[W_IN] = rotor.force_x * vgx + rotor.force_y * vgy + rotor.force_z * y[VZ] + rotor.process_torque * om
+    out[DRAG_LOSS] = -drag * om
+    spin_acc = q[5] / rotor.polar_inertia
+    # mass centre, then the geometric centre O = G - e u (module docstring)
+    gx = q[0] / mass + rotor.gravity_x
+    gy = q[1] / mass + rotor.gravity_y
+    be = y[PHI] + rotor.unbalance_phase
+    e = rotor.unbalance
+    ux, uy = math.cos(be), math.sin(be)
+    out[X] = y[VX]
+    out[Y] = y[VY]
+    out[PHI] = om
+    out[VX] = gx + e * ux * om * om - kin[0] * spin_acc
+    out[VY] = gy + e * uy * om * om - kin[1] * spin_acc
+    out[OMEGA] = spin_acc
+    if rotor.axial_free:
+        out[Z] = y[VZ]
+        out[VZ] = q[2] / mass + rotor.gravity_z
+    if rotor.tilt_free:
+        jt = rotor.transverse_inertia
+        gyro = rotor.polar_inertia * om
+        apx = (q[3] - gyro * kin[9]) / jt
+        apy = (q[4] + gyro * kin[8]) / jt
+        out[TX] = y[WX]
+        out[TY] = y[WY]
+        # theta_g = theta_p - chi w: chi w'' = -chi w
+        out[WX] = apx + kin[2] * om * om - kin[4] * spin_acc
+        out[WY] = apy + kin[3] * om * om - kin[5] * spin_acc
+
+
+@njit(cache=True, inline="always")
+def energy(y, m):
+    """Mechanical energy at a state [J]: kinetic, gravity, and the elastic energy of the contacts and mounts.
+
+    Kinetic energy of the rotor in the form the equations conserve (m |G'|^2 + J_t |theta_p'|^2 +
+    J_p Omega^2)/2, plus races (translation, spin) and outer rings. Elastic: the line contacts
+    (9/19) K_l delta^(19/9) (integral of Eq. 19's elastic part), the axial faces, the mount springs
+    and stops. The ball sets' energy is the ledger entry ``ballset_work`` (work done on them).
+    """
+    rotor = m.rotor
+    p = m.planes
+    kin = rotor_kinematics(y, rotor)
+    om = y[OMEGA]
+    vgx = y[VX] + kin[0] * om
+    vgy = y[VY] + kin[1] * om
+    kinetic = 0.5 * rotor.mass * (vgx * vgx + vgy * vgy + y[VZ] * y[VZ]) + 0.5 * rotor.polar_inertia * om * om
+    if rotor.tilt_free:
+        kinetic += 0.5 * rotor.transverse_inertia * (kin[8] * kin[8] + kin[9] * kin[9])
+    e = rotor.unbalance
+    be = y[PHI] + rotor.unbalance_phase
+    gx_, gy_ = y[X] + e * math.cos(be), y[Y] + e * math.sin(be)
+    potential = -rotor.mass * (rotor.gravity_x * gx_ + rotor.gravity_y * gy_ + rotor.gravity_z * y[Z])
+    for k in range(MAX_PLANES):
+        if p.active[k] <= 0.0:
+            continue
+        b = N_ROTOR + k * N_PLANE
+        mr = p.race_mass[k]
+        kinetic += 0.5 * mr * (y[b + RVX] ** 2 + y[b + RVY] ** 2 + y[b + RVZ] ** 2)
+        kinetic += 0.5 * p.race_inertia[k] * y[b + ROMEGA] ** 2
+        potential -= mr * (rotor.gravity_x * y[b + RX] + rotor.gravity_y * y[b + RY] + rotor.gravity_z * y[b + RZ])
+        a = p.position[k]
+        dist = math.hypot(y[X] + a * y[TY] - y[b + RX], y[Y] - a * y[TX] - y[b + RY])
+        delta = dist - p.clearance[k]
+        if delta > 0.0:
+            potential += p.line_stiffness[k] * 9.0 / 19.0 * delta ** (19.0 / 9.0)
+        zeta = y[Z] + a - y[b + RZ]
+        plus = zeta - p.axial_clearance[k]
+        minus = -zeta - p.axial_clearance[k]
+        if p.face_plus[k] > 0.0 and plus > 0.0:
+            potential += 0.5 * p.face_stiffness[k] * plus * plus
+        if p.face_minus[k] > 0.0 and minus > 0.0:
+            potential += 0.5 * p.face_stiffness[k] * minus * minus
+        if p.ring_free[k] > 0.0:
+            mo = p.ring_mass[k]
+            kinetic += 0.5 * mo * (y[b + OVX] ** 2 + y[b + OVY] ** 2)
+            potential -= mo * (rotor.gravity_x * y[b + OX] + rotor.gravity_y * y[b + OY])
+            travel = math.hypot(y[b + OX] - p.centre_x[k], y[b + OY] - p.centre_y[k])
+            potential += 0.5 * p.mount_stiffness[k] * max(0.0, travel - p.mount_deadband[k]) ** 2
+            if travel > p.stop_gap[k]:
+                potential += 0.5 * p.stop_stiffness[k] * (travel - p.stop_gap[k]) ** 2
+    return kinetic, potential
+
+
+@njit(cache=True, inline="always")
+def energy_balance(y, m, e0):
+    """(energy in, energy accounted for) [J]: e0 + work in  vs  mechanical + ball sets + heat + drag loss."""
+    kinetic, potential = energy(y, m)
+    heat = 0.0
+    for i in range(HEAT_AT, N_STATE):
+        heat += y[i]
+    return e0 + y[W_IN], kinetic + potential + y[BALLSET_WORK] + y[DRAG_LOSS] + heat

@@ -1,0 +1,109 @@
+"""What the observer and the outputs measure at a state of the machine (compiled, SI).
+
+The observer passes :func:`refine_target` and :func:`gap` to the dense-output searches as
+``probes.refine_target``: numba 0.68 caches a function that passes compiled functions as arguments
+only when they are reached as module attributes, not as plain global names.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from auxbearing.core.ballset import pair, pair_semi_major, pair_stress
+from auxbearing.core.machine import (
+    D_FA,
+    D_FN,
+    D_PEN,
+    DIAG_FIELDS,
+    MAX_PLANES,
+    N_PLANE,
+    N_ROTOR,
+    OX,
+    OY,
+    RX,
+    RY,
+    RZ,
+    TX,
+    TY,
+    X,
+    Y,
+    plane_forces,
+    rotor_kinematics,
+)
+
+
+@njit(cache=True, inline="always")
+def plane_diagnostics(y, m, k):
+    """:data:`~auxbearing.core.machine.DIAG_FIELDS` of plane k at state ``y``."""
+    out = np.zeros(y.size)
+    q = np.zeros(6)
+    diag = np.empty(len(DIAG_FIELDS))
+    plane_forces(k, y, m, rotor_kinematics(y, m.rotor), q, out, diag)
+    return diag
+
+
+@njit(cache=True)
+def ball_extremes(y, m, k):
+    """Largest Hertz stress of plane k's ball contacts [Pa] and the largest shoulder use (alpha + a/r)/shoulder."""
+    b = N_ROTOR + k * N_PLANE
+    bs = m.ballsets[k]
+    pd = m.ballset_clearance[k]
+    lim = m.limits
+    zr = y[b + RZ]
+    dx = y[b + RX] - y[b + OX]
+    dy = y[b + RY] - y[b + OY]
+    worst = 0.0
+    use = 0.0
+    for j in range(bs.cos_azimuth.size):
+        radial = dx * bs.cos_azimuth[j] + dy * bs.sin_azimuth[j]
+        for i in range(bs.signs.size):
+            q, alpha, _, _, _, _, _, _ = pair(bs.signs[i], zr, radial, bs, pd, False)
+            if q <= 0.0:
+                continue
+            s_i, s_o = pair_stress(q, alpha, bs)
+            worst = max(worst, s_i, s_o)
+            a_i, a_o = pair_semi_major(q, alpha, bs)
+            x = abs(alpha)
+            use = max(use, (x + a_i / lim.groove_radius_inner[k]) / lim.shoulder_angle_inner[k],
+                      (x + a_o / lim.groove_radius_outer[k]) / lim.shoulder_angle_outer[k])
+    return worst, use
+
+
+@njit(cache=True)
+def refine_target(y, m, arg):
+    """What the observer refines a peak of: arg = 3 k + what (0 line force, 1 ball stress, 2 |axial force|)."""
+    k = arg // 3
+    what = arg % 3
+    if what == 1:
+        return ball_extremes(y, m, k)[0]
+    diag = plane_diagnostics(y, m, k)
+    return diag[D_FN] if what == 0 else abs(diag[D_FA])
+
+
+@njit(cache=True)
+def gap(y, m, k):
+    """Journal/race penetration of plane k [m] (negative: open): the observer's contact-onset function."""
+    return plane_diagnostics(y, m, k)[D_PEN]
+
+
+@njit(cache=True, inline="always")
+def orbit(y, m, k):
+    """Journal centre relative to the outer-ring centre of plane k (x, y) [m]."""
+    b = N_ROTOR + k * N_PLANE
+    a = m.planes.position[k]
+    return y[X] + a * y[TY] - y[b + OX], y[Y] - a * y[TX] - y[b + OY]
+
+
+@njit(cache=True)
+def series(grid, m):
+    """Per output instant and plane: the diagnostics and the largest ball stress, (n, 2, len(DIAG_FIELDS) + 1)."""
+    n = grid.shape[0]
+    out = np.zeros((n, MAX_PLANES, len(DIAG_FIELDS) + 1))
+    for i in range(n):
+        for k in range(MAX_PLANES):
+            if m.planes.active[k] <= 0.0:
+                continue
+            out[i, k, :len(DIAG_FIELDS)] = plane_diagnostics(grid[i], m, k)
+            out[i, k, len(DIAG_FIELDS)] = ball_extremes(grid[i], m, k)[0]
+    return out

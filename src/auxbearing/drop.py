@@ -1,0 +1,451 @@
+"""Drops: run a machine from the moment its magnetic bearings let go, and summarise what happened.
+
+One code path: :func:`run_machine` integrates any :class:`~auxbearing.machine.Machine` with the
+generic compiled integrator (:func:`auxbearing.core.integrate.dopri5`) on the machine right-hand
+side (:mod:`auxbearing.core.machine`) and its observer (:mod:`auxbearing.core.watch`).
+:func:`run_drop` is the source paper's planar drop (Sec. II.D, Eq. 17-26, Table II, read as
+../shared/paper/NOTES.md items 1-9), built as a one-plane machine with tilt and axial motion locked.
+
+A run ends with a verdict: ``ok``, or the limit it crossed (the model's range, a budget, a failed
+integration). Peaks from outside the model's range are not reported as results.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from collections.abc import Callable
+from typing import NamedTuple
+
+import numpy as np
+import xarray as xr
+
+from auxbearing import __version__
+from auxbearing.ballset import ballset_state
+from auxbearing.bearing import BearingGeometry, load_bearing
+from auxbearing.core import drive, probes
+from auxbearing.core import integrate as ig
+from auxbearing.core import machine as cm
+from auxbearing.core import watch as cw
+from auxbearing.drop_params import PARAMETERS, DropCase, Param, Rotor, convert, from_mapping, read_config
+from auxbearing.errors import ConvergenceError
+from auxbearing.io import to_jsonable
+from auxbearing.machine import Machine, planar_machine
+from auxbearing.statics import ISO76_BALL_STRESS, safety_factor
+from auxbearing.whirl import natural_frequency, timeline
+
+__all__ = ["PARAMETERS", "DropCase", "MachineRun", "Param", "Rotor", "convert", "from_mapping", "journal_orbit",
+           "read_config", "run_drop", "run_machine", "static_safety_factor", "whirl_window"]
+
+#: Verdicts besides the limits of :data:`auxbearing.core.watch.STOP_NAMES`.
+OK, STEP_BUDGET, WALL_BUDGET, INTEGRATION_FAILED = "ok", "step_budget", "wall_time_budget", "integration_failed"
+#: Ball-set arrays (time x ball x pair) are kept while they stay below this many numbers per plane.
+MAX_BALL_SERIES = 2e7
+
+
+class MachineRun(NamedTuple):
+    """The result of :func:`run_machine`."""
+
+    dataset: xr.Dataset  #: time series, per plane where it applies (units in attrs)
+    summary: dict  #: verdict, peaks, whirl, budgets, energy audit (units in the keys)
+
+
+def static_safety_factor(max_stress: float) -> float | None:
+    """s0 = (4200 MPa / sigma_max)^3 (ISO 76 with Hertz sigma ~ Q^(1/3)) for JSON: None without contact.
+
+    >>> round(static_safety_factor(2100e6), 3)
+    8.0
+    """
+    return float(safety_factor(max_stress)) if max_stress > 0.0 else None
+
+
+_WARM: set = set()
+
+
+def _warm_up(model) -> float:
+    """Compile (or load from the disk cache) the kernels once per process; seconds spent."""
+    if "machine" in _WARM:
+        return 0.0
+    start = time.perf_counter()
+    y = model.y0.copy()
+    memory = ig.new_memory(0.0, 1e-7, y.size)
+    watch = cw.new_watch(y.size, 1.0, 1, model.energy0)
+    drive.advance(model.machine, watch, y, 1e-6, model.settings, memory, np.empty((0, y.size)))
+    probes.series(np.zeros((1, y.size)), model.machine)
+    _WARM.add("machine")
+    return time.perf_counter() - start
+
+
+def whirl_window(machine: Machine) -> float:
+    """Length of a whirl window [s]: ``drop.whirl_window``, or 3 spin periods at the drop and at least 5 ms."""
+    if machine.simulation.whirl_window is not None:
+        return machine.simulation.whirl_window
+    return max(5e-3, 3.0 * 2.0 * math.pi / max(abs(machine.rotor.speed), 1.0))
+
+
+def _output_step(machine: Machine, duration: float) -> tuple[float, bool]:
+    sim = machine.simulation
+    wanted = math.floor(duration / sim.output_step + 1e-9) + 1
+    if wanted <= sim.max_output_points:
+        return sim.output_step, False
+    return duration / (sim.max_output_points - 1), True
+
+
+class _Integration(NamedTuple):
+    model: object
+    grid: np.ndarray
+    watch: cw.Watch
+    memory: ig.Memory
+    y: np.ndarray
+    verdict: str
+    wall: float
+    compile_s: float
+    output_step: float
+    decimated: bool
+
+
+def _integrate(machine: Machine, duration: float, output_step: float | None,
+               progress: Callable[[float, str], None] | None) -> _Integration:
+    """Run the compiled driver in slices of the step budget, checking the budgets between slices."""
+    sim = machine.simulation
+    model = machine.kernel()
+    compile_s = _warm_up(model)
+    if output_step is None:
+        out_step, decimated = _output_step(machine, duration)
+    else:
+        out_step, decimated = output_step, False
+    settings = model.settings._replace(output_step=out_step)
+    n_out = math.floor(duration / out_step + 1e-9) + 1
+    grid = np.empty((n_out, cm.N_STATE))
+    grid[0] = model.y0
+    y = model.y0.copy()
+    memory = ig.new_memory(0.0, min(1e-6, sim.max_step), y.size)
+    memory.next_output[0] = 1
+    window = whirl_window(machine)
+    watch = cw.new_watch(y.size, window, math.ceil(duration / window) + 1, model.energy0)
+    verdict = OK
+    wall = 0.0
+    while True:
+        start = time.perf_counter()
+        status = drive.advance(model.machine, watch, y, duration, settings, memory, grid)
+        wall += time.perf_counter() - start
+        if status == ig.FINISHED:
+            break
+        if status == ig.STOPPED:
+            verdict = cw.STOP_NAMES[int(watch.stop[0])]
+            break
+        if status == ig.STEP_UNDERFLOW:
+            verdict = INTEGRATION_FAILED
+            break
+        attempts = int(memory.steps[0] + memory.rejected[0])
+        if attempts >= sim.max_steps:
+            verdict = STEP_BUDGET
+            break
+        if wall >= sim.max_wall_time:
+            verdict = WALL_BUDGET
+            break
+        if progress is not None:
+            progress(memory.t[0] / duration, f"t = {memory.t[0] * 1e3:.1f} ms of {duration * 1e3:.0f} ms, "
+                                             f"{attempts} steps, {wall:.1f} s")
+    if progress is not None:
+        progress(1.0, "done")
+    grid = grid[: int(memory.next_output[0])]
+    return _Integration(model, grid, watch, memory, y, verdict, wall, compile_s, out_step, decimated)
+
+
+def run_machine(machine: Machine, duration: float | None = None,
+                progress: Callable[[float, str], None] | None = None) -> MachineRun:
+    """Integrate a machine's touchdown and summarise it (module docstring).
+
+    Parameters
+    ----------
+    machine : Machine
+    duration : float, optional
+        Simulated time [s]; default ``machine.simulation.duration``.
+    progress : callable, optional
+        Called with (fraction done, a short status line) after every slice of 20 000 steps.
+
+    Returns
+    -------
+    MachineRun
+    """
+    duration = machine.simulation.duration if duration is None else float(duration)
+    run = _integrate(machine, duration, None, progress)
+    ds = _dataset(machine, run.model, run.grid, run.output_step)
+    summary = _summary(machine, run, ds, duration)
+    ds.attrs["summary"] = json.dumps(to_jsonable(summary))
+    return MachineRun(ds, summary)
+
+
+def journal_orbit(machine: Machine, duration: float, output_step: float) -> np.ndarray:
+    """Journal axis (x, y) at the mass-centre plane on the grid k * output_step (no outputs built) [m].
+
+    For fits that run many short simulations; a run that does not end ``ok`` raises
+    :class:`~auxbearing.errors.ConvergenceError` (a failed simulation is never padded and fitted).
+    """
+    run = _integrate(machine, duration, output_step, None)
+    if run.verdict != OK:
+        raise ConvergenceError(f"simulation of {machine.name} ended with {run.verdict} at "
+                               f"t = {run.memory.t[0] * 1e3:.4g} ms", float("nan"), int(run.memory.steps[0]))
+    return run.grid[:, [cm.X, cm.Y]]
+
+
+# ----------------------------------------------------------------------------- outputs
+_ROTOR_SERIES = {  # state column: (name, unit, long name)
+    cm.X: ("rotor_x", "m", "Journal axis x at the mass-centre plane"),
+    cm.Y: ("rotor_y", "m", "Journal axis y at the mass-centre plane"),
+    cm.Z: ("rotor_z", "m", "Rotor axial position"),
+    cm.TX: ("tilt_x", "rad", "Journal axis tilt about x"),
+    cm.TY: ("tilt_y", "rad", "Journal axis tilt about y"),
+    cm.PHI: ("rotor_angle", "rad", "Rotor spin angle"),
+    cm.VX: ("rotor_vx", "m/s", "Journal axis velocity x"),
+    cm.VY: ("rotor_vy", "m/s", "Journal axis velocity y"),
+    cm.OMEGA: ("rotor_speed", "rad/s", "Rotor spin speed"),
+}
+_PLANE_SERIES = {
+    cm.RX: ("race_x", "m", "Inner race centre x"),
+    cm.RY: ("race_y", "m", "Inner race centre y"),
+    cm.RZ: ("race_z", "m", "Inner race axial position"),
+    cm.RPSI: ("race_angle", "rad", "Inner race spin angle"),
+    cm.RVX: ("race_vx", "m/s", "Inner race velocity x"),
+    cm.RVY: ("race_vy", "m/s", "Inner race velocity y"),
+    cm.ROMEGA: ("race_speed", "rad/s", "Inner race spin speed"),
+    cm.OX: ("ring_x", "m", "Outer ring centre x"),
+    cm.OY: ("ring_y", "m", "Outer ring centre y"),
+}
+_DIAG_SERIES = {
+    "penetration": ("m", "Journal/race penetration delta (Eq. 17); negative: gap"),
+    "normal_force": ("N", "Journal/race collision (normal) force F_n1 (Eq. 19)"),
+    "friction_force": ("N", "Friction on the journal along the CCW tangent (Eq. 21 corrected)"),
+    "slip_velocity": ("m/s", "Slip of the journal surface over the race, along the tangent"),
+    "ball_force_x": ("N", "Ball-set force on the race x (Eq. 22)"),
+    "ball_force_y": ("N", "Ball-set force on the race y (Eq. 22)"),
+    "ball_force_axial": ("N", "Ball-set force on the race along z"),
+    "max_ball_load": ("N", "Largest ball contact-pair load"),
+    "axial_force": ("N", "Axial force of the rotor collar on the race face (+z)"),
+    "axial_penetration": ("m", "Collar/race-face penetration; negative: gap"),
+    "mount_deflection": ("m", "Radial travel of the outer ring in its mount"),
+    "face_torque": ("N*m", "Face-friction torque on the rotor"),
+}
+
+
+def _dataset(machine: Machine, model, grid: np.ndarray, out_step: float) -> xr.Dataset:
+    n = grid.shape[0]
+    n_planes = len(machine.planes)
+    t = np.arange(n) * out_step
+    data = {}
+    for col, (name, unit, long_name) in _ROTOR_SERIES.items():
+        data[name] = ("time", grid[:, col], {"units": unit, "long_name": long_name})
+    planes = np.stack([grid[:, cm.N_ROTOR + k * cm.N_PLANE: cm.N_ROTOR + (k + 1) * cm.N_PLANE]
+                       for k in range(n_planes)], axis=1)
+    for col, (name, unit, long_name) in _PLANE_SERIES.items():
+        data[name] = (("time", "plane"), planes[:, :, col], {"units": unit, "long_name": long_name})
+    positions = np.array([p.position for p in machine.planes])
+    data["journal_x"] = (("time", "plane"), grid[:, [cm.X]] + positions * grid[:, [cm.TY]],
+                         {"units": "m", "long_name": "Journal centre x at the plane"})
+    data["journal_y"] = (("time", "plane"), grid[:, [cm.Y]] - positions * grid[:, [cm.TX]],
+                         {"units": "m", "long_name": "Journal centre y at the plane"})
+    diag = probes.series(grid, model.machine)[:, :n_planes]
+    for i, name in enumerate(cm.DIAG_FIELDS):
+        unit, long_name = _DIAG_SERIES[name]
+        data[name] = (("time", "plane"), diag[:, :, i], {"units": unit, "long_name": long_name})
+    data["max_ball_stress"] = (("time", "plane"), diag[:, :, len(cm.DIAG_FIELDS)],
+                               {"units": "Pa", "long_name": "Hertz max stress of the most loaded ball contact"})
+    coords = {"time": ("time", t, {"units": "s", "long_name": "Time since the drop"}),
+              "plane": ("plane", [p.name for p in machine.planes])}
+    for k, plane in enumerate(machine.planes):
+        bs = model.machine.ballsets[k]
+        if n * bs.cos_azimuth.size * bs.signs.size > MAX_BALL_SERIES:
+            continue
+        b = cm.N_ROTOR + k * cm.N_PLANE
+        disp = np.zeros((n, 5))
+        if plane.catches_axially:
+            disp[:, 0] = grid[:, b + cm.RZ]
+        disp[:, 1] = grid[:, b + cm.RX] - grid[:, b + cm.OX]
+        disp[:, 2] = grid[:, b + cm.RY] - grid[:, b + cm.OY]
+        st = ballset_state(disp, bs, model.machine.ballset_clearance[k])
+        dims = ("time", f"ball_{k}", f"pair_{k}")
+        data[f"ball_load_{k}"] = (dims, st.load, {"units": "N", "long_name": f"Contact-pair load, {plane.name}"})
+        for race, values in (("inner", st.stress_inner), ("outer", st.stress_outer)):
+            data[f"stress_{race}_{k}"] = (dims, values, {"units": "Pa", "long_name": f"Hertz max stress, {race} race"})
+    ds = xr.Dataset(data, coords=coords)
+    ds.attrs.update(title=f"Touchdown of {machine.name}", auxbearing_version=__version__,
+                    model="rigid rotor on touchdown planes (auxbearing.core.machine); source paper Sec. II.D "
+                          "corrected per NOTES.md as its planar case",
+                    machine=json.dumps(to_jsonable(machine.describe())))
+    return ds
+
+
+def _support_stiffness(plane) -> float:
+    """Radial stiffness of ball set and mount in series near the rated load [N/m] (for the whip frequency)."""
+    from auxbearing.statics import solve_cases
+
+    bs = plane.bearing
+    load = max(100.0, 0.05 * bs.ball_count * 1e3)
+    try:
+        from auxbearing.ballset import ballset_params
+
+        params = ballset_params(bs, plane.ball_constant)
+        sol = solve_cases([[0.0, load, 0.0, 0.0, 0.0]], params, free=(False, True, True, False, False))
+        dx = float(sol.displacement[0, 1])
+        k_ball = 1.5 * load / dx if dx > 0.0 else 0.0
+    except Exception:  # a bearing the solver cannot carry radially alone: no estimate
+        return 0.0
+    if plane.mount is not None and k_ball > 0.0:
+        return 1.0 / (1.0 / k_ball + 1.0 / plane.mount.stiffness)
+    return k_ball
+
+
+def _plane_mass(machine: Machine, k: int) -> float:
+    planes = machine.planes
+    m = machine.rotor.mass
+    if len(planes) == 1:
+        return m + planes[0].race_mass
+    a0, a1 = planes[0].position, planes[1].position
+    share = abs(planes[1 - k].position) / abs(a1 - a0)  # lever rule: the far plane's arm
+    return m * share + planes[k].race_mass
+
+
+def _summary(machine: Machine, run: _Integration, ds: xr.Dataset, duration: float) -> dict:
+    model, watch, memory, verdict = run.model, run.watch, run.memory, run.verdict
+    stop = watch.stop
+    t_end = float(memory.t[0])
+    reason = None
+    if verdict == OK:
+        pass
+    elif verdict in cw.STOP_NAMES.values():
+        k = int(stop[1])
+        where = machine.planes[k].name if k >= 0 else "the machine"
+        reason = _stop_sentence(verdict, where, float(stop[2]), float(stop[3]), machine, k)
+    elif verdict == STEP_BUDGET:
+        reason = (f"the step budget drop.max_steps = {machine.simulation.max_steps:.3g} was used up at "
+                  f"t = {t_end * 1e3:.2f} ms; raise it to go on")
+    elif verdict == WALL_BUDGET:
+        reason = (f"the wall-time budget drop.max_wall_time = {machine.simulation.max_wall_time:g} s was used up "
+                  f"at t = {t_end * 1e3:.2f} ms; raise it to go on")
+    else:
+        reason = f"the integration could not go on at t = {t_end * 1e3:.4g} ms (step size underflow)"
+    valid = verdict == OK
+    planes = []
+    n_windows = int(watch.window_count[0])
+    for k, plane in enumerate(machine.planes):
+        sel = ds.isel(plane=k)
+        records = watch.whirl[:n_windows, k]
+        support = _support_stiffness(plane)
+        mass = _plane_mass(machine, k)
+        natural = np.array([natural_frequency(r[6], plane.line_stiffness, support, mass) for r in records])
+        whirl = timeline(records, whirl_window(machine), plane.radial_clearance, plane.journal_radius,
+                         natural)
+        peak_stress = float(watch.peak[1, k])
+        first = float(watch.first_contact[k])
+        pen = sel.penetration.values
+        after = ds.time.values >= (first if first >= 0.0 else np.inf)
+        rotor_surface = ds.rotor_speed.values * plane.journal_radius
+        race_surface = sel.race_speed.values * (plane.journal_radius + plane.radial_clearance)
+        spin = machine.rotor.speed
+        rolling = (np.abs(rotor_surface) > 0) & (race_surface * np.sign(spin) >= 0.95 * np.abs(rotor_surface))
+        spun = np.nonzero(rolling)[0]
+        planes.append({
+            "name": plane.name, "bearing": plane.bearing.name, "type": plane.bearing.type,
+            "peak_contact_force_N": float(watch.peak[0, k]) if valid else None,
+            "peak_ball_stress_MPa": peak_stress / 1e6 if valid else None,
+            "s0": static_safety_factor(peak_stress) if valid else None,
+            "final_contact_force_N": float(sel.normal_force.values[-1]),
+            "peak_axial_force_N": float(watch.peak[2, k]) if valid else None,
+            "final_axial_force_N": float(sel.axial_force.values[-1]),
+            "whirl": whirl["whirl"], "backward_whirl_onset_ms": whirl["backward_whirl_onset_ms"],
+            "backward_whirl_at_end": whirl["backward_at_end"], "whirl_frequency_Hz": whirl["whirl_frequency_Hz"],
+            "whirl_timeline": whirl["classes"], "whirl_window_ms": whirl_window(machine) * 1e3,
+            "first_impact_ms": first * 1e3 if first >= 0.0 else None, "impacts": int(watch.onsets[k]),
+            "largest_bounce_um": float(max(0.0, -pen[after].min())) * 1e6 if after.any() else 0.0,
+            "contact_fraction": float(np.mean(pen[after] > 0.0)) if after.any() else 0.0,
+            "race_spin_up_ms": float(ds.time.values[spun[0]] * 1e3) if spun.size else None,
+            "final_race_speed_rad_s": float(sel.race_speed.values[-1]),
+            "peak_ball_load_N": float(watch.peak_load[k]) if valid else None,
+            "shoulder_use": float(watch.shoulder_use[k]),
+            "peak_force_time_ms": float(watch.peak_time[0, k]) * 1e3,
+            "peak_stress_time_ms": float(watch.peak_time[1, k]) * 1e3,
+            "max_mount_deflection_um": float(np.max(sel.mount_deflection.values)) * 1e6,
+            "line_stiffness_N_per_m10_9": plane.line_stiffness,
+            "defaults_used": list(plane.defaults),
+        })
+    energy_in, accounted = cm.energy_balance(run.y, model.machine, model.energy0)
+    out = {
+        "machine": machine.name, "verdict": verdict, "reason": reason, "simulated_s": t_end,
+        "duration_s": duration, "wall_time_s": run.wall, "compile_or_cache_load_s": run.compile_s,
+        "steps": int(memory.steps[0]), "rejected_steps": int(memory.rejected[0]),
+        "rhs_evaluations": int(memory.evaluations[0]),
+        "energy_balance_error": float((accounted - energy_in) / max(abs(energy_in), 1e-300)),
+        "largest_energy_error": float(watch.energy_error[0]),
+        "final_rotor_speed_rad_s": float(ds.rotor_speed.values[-1]), "planes": planes,
+        "output_step_s": run.output_step, "output_decimated": run.decimated,
+    }
+    return out
+
+
+def _stop_sentence(verdict: str, where: str, t: float, value: float, machine: Machine, k: int) -> str:
+    when = f"at t = {t * 1e3:.3f} ms"
+    if verdict == "line_contact_overload":
+        return (f"{where}: the journal/race contact force reached {value:.4g} N {when}, beyond the range of the "
+                f"line-contact law (Hertz half-width above {machine.simulation.line_contact_limit:g} of the journal "
+                "radius): the design fails by overload of the touchdown contact")
+    if verdict == "ball_stress_beyond_elastic":
+        return (f"{where}: a ball contact reached {value / 1e6:.0f} MPa {when}, beyond "
+                f"{machine.simulation.ball_stress_limit / 1e6:.0f} MPa where elastic Hertz values stop meaning "
+                f"anything (ISO 76 allows {ISO76_BALL_STRESS / 1e6:.0f} MPa)")
+    if verdict == "contact_ellipse_over_shoulder":
+        return (f"{where}: a ball contact ellipse ran over the groove shoulder {when} "
+                f"(contact angle plus half the ellipse {value:.2f} x the shoulder angle)")
+    if verdict == "mount_beyond_travel":
+        return f"{where}: the outer ring moved {value * 1e6:.0f} um in its mount {when}, beyond its travel"
+    if verdict == "race_runs_off_axially":
+        return (f"{where}: the inner race moved {value * 1e6:.1f} um axially {when}, off its balls: the bearing "
+                "cannot carry the axial load that way (an angular-contact bearing catches one direction only)")
+    return f"the machine gained energy ({value:.2e} of what went in) {when}: a numerical run-away, not a result"
+
+
+# ----------------------------------------------------------------------------- the paper's planar drop
+def run_drop(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = None, case: DropCase | None = None,
+             progress: Callable[[float], None] | None = None) -> tuple[xr.Dataset, dict]:
+    """The source paper's rotor drop (Sec. II.D, corrected per NOTES.md) as a one-plane machine.
+
+    Returns the machine run's Dataset and a flat summary with the paper-drop keys:
+    ``peak_contact_force_N``, ``peak_ball_stress_MPa`` (exact maxima: golden-section search on the
+    dense output), ``s0``, ``first_impact_ms``, ``impacts``, ``largest_bounce_um``, ``whirl``,
+    ``final_rotor_speed_rad_s``, ``final_race_speed_rad_s``, ``race_spin_up_ms``,
+    ``contact_fraction``, ``steps``, ``wall_time_s`` and the run's ``verdict``.
+
+    Examples
+    --------
+    >>> ds, s = run_drop("QJ202", case=DropCase(duration="20 ms"))
+    >>> s["verdict"], round(s["peak_contact_force_N"], 1)
+    ('ok', 657.1)
+    """
+    bearing = load_bearing(bearing)
+    rotor = rotor or Rotor()
+    case = case or DropCase()
+    machine = planar_machine(bearing, rotor, case)
+    run = run_machine(machine, progress=None if progress is None else (lambda f, _: progress(f)))
+    plane = run.summary["planes"][0]
+    keep = ("peak_contact_force_N", "peak_ball_stress_MPa", "s0", "first_impact_ms", "impacts", "largest_bounce_um",
+            "whirl", "whirl_frequency_Hz", "backward_whirl_onset_ms", "final_race_speed_rad_s", "race_spin_up_ms",
+            "contact_fraction", "peak_force_time_ms", "peak_stress_time_ms", "peak_ball_load_N")
+    summary = {"bearing": bearing.name, "type": bearing.type, "verdict": run.summary["verdict"],
+               "reason": run.summary["reason"], **{k: plane[k] for k in keep},
+               "final_rotor_speed_rad_s": run.summary["final_rotor_speed_rad_s"],
+               **{k: run.summary[k] for k in ("steps", "wall_time_s", "rejected_steps", "rhs_evaluations",
+                                               "compile_or_cache_load_s", "energy_balance_error")},
+               "rotor_radius_mm": machine.planes[0].journal_radius * 1e3, "clearance_mm": case.clearance * 1e3,
+               "line_stiffness_N_per_m10_9": machine.planes[0].line_stiffness,
+               "ball_constant_N_per_m1_5": _nominal_ball_constant(bearing, case),
+               "ball_constant_source": "override" if case.ball_constant is not None else "Hertz (Eq. 15)",
+               "sliding_friction": case.sliding_friction, "rtol": case.rtol}
+    run.dataset.attrs["summary"] = json.dumps(to_jsonable(summary))
+    return run.dataset, summary
+
+
+def _nominal_ball_constant(bearing: BearingGeometry, case: DropCase) -> float:
+    from auxbearing.contact import ball_constant
+
+    return case.ball_constant if case.ball_constant is not None else float(ball_constant(bearing))

@@ -1,0 +1,568 @@
+"""A machine for a touchdown run: rotor, touchdown planes, mounts, run settings (validated, SI).
+
+Read from a machine TOML file (:func:`read_machine`, keys and units in
+:mod:`auxbearing.machine_params`) or a catalogue name (:func:`machine_names`), or built from the
+source paper's planar inputs (:func:`planar_machine`). :meth:`Machine.kernel` packs it into the
+NamedTuples of :mod:`auxbearing.core.machine` with the initial state and tolerances.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from functools import cache
+from importlib import resources
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+
+from auxbearing.ballset import ballset_params
+from auxbearing.bearing import BearingGeometry, bearing_from_mapping, read_toml
+from auxbearing.core import integrate as ig
+from auxbearing.core import machine as cm
+from auxbearing.core.hertz import line_contact_constant
+from auxbearing.errors import InputError
+from auxbearing.machine_params import (
+    AXIAL_DIRECTIONS,
+    G0,
+    SIMULATION,
+    TABLES,
+    TOUCHDOWN_TEXT,
+    default,
+    hollow_cylinder,
+    steel_column_stiffness,
+)
+from auxbearing.params import accept, read_table
+
+#: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
+JOURNAL_COMPLIANCE = (1.0 - 0.3**2) / 207e9
+#: Density used for a ring whose material gives none [kg/m^3] (through-hardened bearing steel).
+STEEL_DENSITY = 7810.0
+#: Default shoulder height of the raceway grooves as a fraction of the ball diameter (an assumption).
+SHOULDER_FRACTION = 0.25
+ORIENTATIONS = ("horizontal", "vertical")
+
+
+@dataclass(frozen=True)
+class Mount:
+    """The outer ring's support: a spring with a dead band, a damper, an optional hard stop (SI)."""
+
+    stiffness: float
+    damping: float = 0.0
+    mass: float = 0.0
+    deadband: float = 0.0
+    stop: float | None = None
+    stop_stiffness: float | None = None
+    stop_damping: float = 0.0
+    travel: float | None = None
+
+
+@dataclass(frozen=True)
+class TouchdownPlane:
+    """One touchdown bearing with its journal, race, contact laws and mount (SI, every value resolved)."""
+
+    name: str
+    bearing: BearingGeometry
+    position: float
+    radial_clearance: float
+    journal_radius: float
+    race_mass: float
+    race_inertia: float
+    line_stiffness: float
+    line_damping: float
+    ball_damping: float
+    ball_constant: float | None
+    sliding_friction: float
+    rolling_friction: float
+    slip_velocity: float
+    axial_clearance: float | None = None
+    axial_direction: str = "both"
+    face_stiffness: float = 0.0
+    face_damping: float = 0.0
+    face_friction: float = 0.0
+    face_radius: float = 0.0
+    mount: Mount | None = None
+    misalignment: tuple[float, float] = (0.0, 0.0)
+    shoulder_height: float = 0.0
+    defaults: tuple[str, ...] = ()  #: keys filled from geometry or defaults, for the report
+
+    @property
+    def catches_axially(self) -> bool:
+        """True when a collar meets the race face."""
+        return self.axial_clearance is not None
+
+
+@dataclass(frozen=True)
+class MachineRotor:
+    """The rotor (SI)."""
+
+    mass: float
+    polar_inertia: float
+    transverse_inertia: float | None
+    speed: float
+    unbalance: float = 0.0
+    unbalance_phase: float = 0.0
+    couple_unbalance: float = 0.0
+    couple_unbalance_phase: float = 0.0
+    axial_force: float = 0.0
+    side_force_x: float = 0.0
+    side_force_y: float = 0.0
+    start_x: float = 0.0
+    start_y: float = 0.0
+
+
+@dataclass(frozen=True)
+class Simulation:
+    """How a run is made: time, output, tolerances, budgets and range limits (SI)."""
+
+    duration: float = default("drop", "duration")
+    output_step: float = default("drop", "output_step")
+    rtol: float = default("drop", "rtol")
+    atol: float = default("drop", "atol")
+    max_step: float = default("drop", "max_step")
+    gravity: float = default("drop", "gravity")
+    max_steps: float = default("drop", "max_steps")
+    max_wall_time: float = default("drop", "max_wall_time")
+    max_output_points: float = default("drop", "max_output_points")
+    whirl_window: float = default("drop", "whirl_window")
+    ball_stress_limit: float = default("drop", "ball_stress_limit")
+    line_contact_limit: float = default("drop", "line_contact_limit")
+    energy_tolerance: float = default("drop", "energy_tolerance")
+
+    def __post_init__(self) -> None:
+        for p in SIMULATION:
+            object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
+        if self.output_step > self.duration:
+            raise InputError.for_field("drop.output_step", f"{self.output_step:g} s",
+                                       f"must not exceed drop.duration = {self.duration:g} s")
+
+
+class KernelModel(NamedTuple):
+    """A machine packed for the compiled kernels."""
+
+    machine: cm.Machine
+    y0: np.ndarray
+    settings: ig.Settings
+    energy0: float  #: mechanical energy at the start [J]
+
+
+@dataclass(frozen=True)
+class Machine:
+    """A machine: rotor, one or two touchdown planes, orientation and run settings."""
+
+    name: str
+    rotor: MachineRotor
+    planes: tuple[TouchdownPlane, ...]
+    orientation: str = "horizontal"
+    simulation: Simulation = field(default_factory=Simulation)
+    source: str = "user input"
+
+    def __post_init__(self) -> None:
+        if self.orientation not in ORIENTATIONS:
+            raise InputError.for_field("machine.orientation", self.orientation, "must be horizontal or vertical")
+        if not 1 <= len(self.planes) <= cm.MAX_PLANES:
+            raise InputError.for_field("touchdown", len(self.planes), "give one or two [[touchdown]] tables")
+        if self.tilt_free and self.rotor.transverse_inertia is None:
+            raise InputError("rotor.transverse_inertia: missing; a rotor on two touchdown planes needs it")
+        if self.orientation == "vertical" and not any(p.catches_axially for p in self.planes):
+            raise InputError.for_field("machine.orientation", "vertical",
+                                       "a vertical rotor rests on an axial touchdown: give axial_clearance on a plane")
+        if not self.tilt_free and self.rotor.couple_unbalance > 0.0:
+            raise InputError.for_field("rotor.couple_unbalance", f"{self.rotor.couple_unbalance * 1e3:g} mrad",
+                                       "needs two touchdown planes (one plane locks the tilt)")
+        if len(self.planes) == 2 and abs(self.planes[0].position - self.planes[1].position) < 1e-6:
+            raise InputError.for_field("touchdown.1.position", f"{self.planes[1].position * 1e3:g} mm",
+                                       "two planes must sit at different axial positions")
+
+    @property
+    def tilt_free(self) -> bool:
+        """Two planes: the rotor tilts (one plane is the planar rotor of the source paper)."""
+        return len(self.planes) == 2
+
+    @property
+    def axial_free(self) -> bool:
+        """The rotor moves axially when a plane catches axially."""
+        return any(p.catches_axially for p in self.planes)
+
+    def with_simulation(self, **changes) -> Machine:
+        """A copy with some run settings changed (values with units or SI)."""
+        return replace(self, simulation=replace(self.simulation, **changes))
+
+    def kernel(self) -> KernelModel:
+        """Pack for :mod:`auxbearing.core.machine` (see the module docstring there)."""
+        return _pack(self)
+
+    def describe(self) -> dict:
+        """Inputs with units in the keys, for files and reports."""
+        r = self.rotor
+        out = {"name": self.name, "orientation": self.orientation, "source": self.source,
+               "rotor": {"mass_kg": r.mass, "polar_inertia_kg_m2": r.polar_inertia,
+                         "transverse_inertia_kg_m2": r.transverse_inertia, "speed_rpm": r.speed * 30.0 / math.pi,
+                         "unbalance_um": r.unbalance * 1e6, "unbalance_phase_deg": math.degrees(r.unbalance_phase),
+                         "couple_unbalance_mrad": r.couple_unbalance * 1e3,
+                         "couple_unbalance_phase_deg": math.degrees(r.couple_unbalance_phase),
+                         "axial_force_N": r.axial_force, "side_force_N": [r.side_force_x, r.side_force_y]},
+               "planes": [_describe_plane(p) for p in self.planes],
+               "drop": {p.key: getattr(self.simulation, p.key) for p in SIMULATION}}
+        return out
+
+
+def _describe_plane(p: TouchdownPlane) -> dict:
+    out = {"name": p.name, "bearing": p.bearing.describe(), "position_mm": p.position * 1e3,
+           "radial_clearance_mm": p.radial_clearance * 1e3, "journal_radius_mm": p.journal_radius * 1e3,
+           "race_mass_kg": p.race_mass, "race_inertia_kg_m2": p.race_inertia,
+           "line_stiffness_N_per_m10_9": p.line_stiffness, "line_damping_N_s_per_m": p.line_damping,
+           "ball_damping_N_s_per_m": p.ball_damping, "ball_constant_N_per_m1_5": p.ball_constant,
+           "sliding_friction": p.sliding_friction, "rolling_friction": p.rolling_friction,
+           "slip_velocity_m_per_s": p.slip_velocity, "shoulder_height_mm": p.shoulder_height * 1e3,
+           "misalignment_um": [p.misalignment[0] * 1e6, p.misalignment[1] * 1e6], "from_defaults": list(p.defaults)}
+    if p.catches_axially:
+        out.update(axial_clearance_mm=p.axial_clearance * 1e3, axial_direction=p.axial_direction,
+                   face_stiffness_N_per_m=p.face_stiffness, face_damping_N_s_per_m=p.face_damping,
+                   face_friction=p.face_friction, face_radius_mm=p.face_radius * 1e3)
+    if p.mount is not None:
+        m = p.mount
+        out["mount"] = {"stiffness_N_per_m": m.stiffness, "damping_N_s_per_m": m.damping, "mass_kg": m.mass,
+                        "deadband_um": m.deadband * 1e6, "stop_um": None if m.stop is None else m.stop * 1e6,
+                        "stop_stiffness_N_per_m": m.stop_stiffness, "travel_mm": m.travel * 1e3}
+    return out
+
+
+# ----------------------------------------------------------------------------- building planes
+def _density(bearing: BearingGeometry) -> float:
+    return bearing.ring_material.density or STEEL_DENSITY
+
+
+def make_plane(bearing: BearingGeometry, values: dict, name: str, index: int) -> TouchdownPlane:
+    """A plane from SI values of a ``[[touchdown]]`` table, every missing value derived (see the table)."""
+    where = f"touchdown.{index}."
+    given = dict(values)
+    filled: list[str] = []
+
+    def value(key):
+        if given.get(key) is not None:
+            return given[key]
+        filled.append(key)
+        return default("touchdown", key)
+
+    s = values["radial_clearance"]
+    r = given.get("journal_radius")
+    if r is None:
+        if bearing.bore is None:
+            raise InputError(f"{where}journal_radius: missing; bearing {bearing.name} has no bore to derive it from")
+        r = 0.5 * bearing.bore - s
+        filled.append("journal_radius")
+        if r <= 0.0:
+            raise InputError.for_field(where + "radial_clearance", f"{s * 1e3:g} mm",
+                                       f"must be below the race bore radius {0.5e3 * bearing.bore:g} mm")
+    bore_radius = r + s
+    if bore_radius >= 0.5 * bearing.inner_raceway_diameter:
+        raise InputError.for_field(where + "journal_radius", f"{r * 1e3:g} mm",
+                                   f"journal_radius + radial_clearance = {bore_radius * 1e3:g} mm must be below the "
+                                   f"inner raceway radius {0.5e3 * bearing.inner_raceway_diameter:g} mm")
+    width = bearing.width
+    race_mass, race_inertia = given.get("race_mass"), given.get("race_inertia")
+    if race_mass is None or race_inertia is None:
+        if width is None:
+            raise InputError(f"{where}race_mass: missing; bearing {bearing.name} has no width to derive it from")
+        m_ring, j_ring = hollow_cylinder(_density(bearing), bore_radius, 0.5 * bearing.inner_raceway_diameter, width)
+        if race_mass is None:
+            race_mass = m_ring
+            filled.append("race_mass")
+        if race_inertia is None:
+            race_inertia = j_ring if "race_mass" in filled else race_mass * 0.5 * (
+                bore_radius**2 + (0.5 * bearing.inner_raceway_diameter) ** 2)
+            filled.append("race_inertia")
+    k_l = given.get("line_stiffness")
+    if k_l is None:
+        if width is None:
+            raise InputError(f"{where}line_stiffness: missing; bearing {bearing.name} has no width for Palmgren's K_l")
+        k_l = float(line_contact_constant(width, bearing.ring_material.compliance + JOURNAL_COMPLIANCE))
+        filled.append("line_stiffness")
+    axial = given.get("axial_clearance")
+    direction = str(values.get("axial_direction", "both"))
+    face = {}
+    if axial is not None:
+        if direction not in AXIAL_DIRECTIONS:
+            raise InputError.for_field(where + "axial_direction", direction, "must be both, +z or -z")
+        face_radius = given.get("face_radius")
+        if face_radius is None:
+            face_radius = 0.5 * (bore_radius + 0.5 * bearing.inner_raceway_diameter)
+            filled.append("face_radius")
+        face_k = given.get("face_stiffness")
+        if face_k is None:
+            area = math.pi * ((0.5 * bearing.inner_raceway_diameter) ** 2 - bore_radius**2)
+            face_k = steel_column_stiffness(bearing.ring_material.elastic_modulus, area, width or bearing.ball_diameter)
+            filled.append("face_stiffness")
+        friction = given.get("face_friction")
+        face = {"axial_clearance": axial, "axial_direction": direction, "face_stiffness": face_k,
+                "face_damping": value("face_damping"),
+                "face_friction": value("sliding_friction") if friction is None else friction,
+                "face_radius": face_radius}
+    mount = None
+    if given.get("mount_stiffness") is not None:
+        m_mass = given.get("mount_mass")
+        if m_mass is None:
+            if bearing.outside_diameter is None or width is None:
+                raise InputError(f"{where}mount_mass: missing; bearing {bearing.name} has no outside diameter/width")
+            m_mass = hollow_cylinder(_density(bearing), 0.5 * bearing.outer_raceway_diameter,
+                                     0.5 * bearing.outside_diameter, width)[0]
+            filled.append("mount_mass")
+        stop = given.get("mount_stop")
+        stop_k = given.get("stop_stiffness") or 100.0 * given["mount_stiffness"]
+        travel = given.get("mount_travel") or (2.0 * stop if stop is not None else 10.0 * s)
+        mount = Mount(given["mount_stiffness"], value("mount_damping"), m_mass, value("mount_deadband"), stop, stop_k,
+                      value("stop_damping"), travel)
+    shoulder = given.get("shoulder_height")
+    if shoulder is None:
+        shoulder = SHOULDER_FRACTION * bearing.ball_diameter
+        filled.append("shoulder_height")
+    return TouchdownPlane(
+        name=name, bearing=bearing, position=value("position"), radial_clearance=s, journal_radius=r,
+        race_mass=race_mass, race_inertia=race_inertia, line_stiffness=k_l, line_damping=value("line_damping"),
+        ball_damping=value("ball_damping"), ball_constant=given.get("ball_constant"),
+        sliding_friction=value("sliding_friction"), rolling_friction=value("rolling_friction"),
+        slip_velocity=value("slip_velocity"), mount=mount,
+        misalignment=(value("misalignment_x"), value("misalignment_y")), shoulder_height=shoulder,
+        defaults=tuple(dict.fromkeys(filled)), **face)
+
+
+# ----------------------------------------------------------------------------- packing
+def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
+    n = cm.MAX_PLANES
+
+    def arr(get, fill=0.0):
+        out = np.full(n, fill)
+        for k, p in enumerate(planes):
+            out[k] = get(p)
+        return out
+
+    def mount(get, fill=0.0):
+        return arr(lambda p: get(p.mount) if p.mount is not None else fill, fill)
+
+    return cm.Planes(
+        active=arr(lambda p: 1.0), position=arr(lambda p: p.position), clearance=arr(lambda p: p.radial_clearance, 1.0),
+        journal_radius=arr(lambda p: p.journal_radius, 1.0), line_stiffness=arr(lambda p: p.line_stiffness),
+        line_damping=arr(lambda p: p.line_damping), sliding_friction=arr(lambda p: p.sliding_friction),
+        rolling_friction=arr(lambda p: p.rolling_friction), slip_velocity=arr(lambda p: p.slip_velocity, 1.0),
+        race_mass=arr(lambda p: p.race_mass, 1.0), race_inertia=arr(lambda p: p.race_inertia, 1.0),
+        raceway_radius=arr(lambda p: 0.5 * p.bearing.inner_raceway_diameter, 1.0),
+        ball_damping=arr(lambda p: p.ball_damping), race_axial_free=arr(lambda p: float(p.catches_axially)),
+        ring_free=arr(lambda p: float(p.mount is not None)), ring_mass=mount(lambda m: m.mass, 1.0),
+        mount_stiffness=mount(lambda m: m.stiffness), mount_damping=mount(lambda m: m.damping),
+        mount_deadband=mount(lambda m: m.deadband),
+        stop_gap=mount(lambda m: m.stop if m.stop is not None else np.inf, np.inf),
+        stop_stiffness=mount(lambda m: m.stop_stiffness or 0.0), stop_damping=mount(lambda m: m.stop_damping),
+        centre_x=arr(lambda p: p.misalignment[0]), centre_y=arr(lambda p: p.misalignment[1]),
+        axial_clearance=arr(lambda p: p.axial_clearance if p.catches_axially else np.inf, np.inf),
+        face_plus=arr(lambda p: float(p.catches_axially and p.axial_direction in ("both", "+z"))),
+        face_minus=arr(lambda p: float(p.catches_axially and p.axial_direction in ("both", "-z"))),
+        face_stiffness=arr(lambda p: p.face_stiffness), face_damping=arr(lambda p: p.face_damping),
+        face_friction=arr(lambda p: p.face_friction), face_radius=arr(lambda p: p.face_radius, 1.0),
+    )
+
+
+def _limits(machine: Machine) -> cm.Limits:
+    sim = machine.simulation
+    n = cm.MAX_PLANES
+    force_per_length = np.full(n, np.inf)
+    length = np.ones(n)
+    shoulder_i, shoulder_o = np.full(n, np.pi), np.full(n, np.pi)
+    groove_i, groove_o = np.ones(n), np.ones(n)
+    travel, axial = np.full(n, np.inf), np.full(n, np.inf)
+    for k, p in enumerate(machine.planes):
+        b = p.bearing
+        # Hertz half-width of a journal in a bore: b/r = sqrt(4 F' / (pi E* s)) (Johnson 1985, Eq. 4.43 with
+        # the conformal radius r (r + s)/s ~ r^2/s), so b/r <= lam means F' <= lam^2 pi E* s / 4
+        e_star = 1.0 / (b.ring_material.compliance + JOURNAL_COMPLIANCE)
+        force_per_length[k] = sim.line_contact_limit**2 * math.pi * e_star * p.radial_clearance / 4.0
+        length[k] = b.width if b.width is not None else 2.0 * b.ball_diameter
+        for ratio, angle_out, groove_out in ((b.inner_groove_ratio, shoulder_i, groove_i),
+                                              (b.outer_groove_ratio, shoulder_o, groove_o)):
+            groove = ratio * b.ball_diameter
+            groove_out[k] = groove
+            angle_out[k] = math.acos(max(-1.0, 1.0 - p.shoulder_height / groove))
+        if p.mount is not None:
+            travel[k] = p.mount.travel
+        axial[k] = b.curvature_centre_distance
+    return cm.Limits(force_per_length, length, sim.ball_stress_limit, shoulder_i, shoulder_o, groove_i, groove_o,
+                     travel, axial, sim.energy_tolerance)
+
+
+def _pack(machine: Machine) -> KernelModel:
+    r = machine.rotor
+    sim = machine.simulation
+    g = sim.gravity
+    gravity = (0.0, -g, 0.0) if machine.orientation == "horizontal" else (0.0, 0.0, -g)
+    planes = machine.planes
+    lever = max((abs(p.position) for p in planes), default=0.0)
+    rotor = cm.Rotor(
+        mass=r.mass, polar_inertia=r.polar_inertia, transverse_inertia=r.transverse_inertia or 1.0,
+        unbalance=r.unbalance, unbalance_phase=r.unbalance_phase, couple_unbalance=r.couple_unbalance,
+        couple_phase=r.unbalance_phase + r.couple_unbalance_phase, gravity_x=gravity[0], gravity_y=gravity[1],
+        gravity_z=gravity[2], force_x=r.side_force_x, force_y=r.side_force_y, force_z=r.axial_force,
+        process_torque=0.0, drag_constant=0.0, drag_viscous=0.0, drag_windage=0.0, drag_speed_scale=1.0,
+        tilt_free=machine.tilt_free, axial_free=machine.axial_free)
+    ballsets = [ballset_params(p.bearing, p.ball_constant) for p in planes]
+    while len(ballsets) < cm.MAX_PLANES:
+        ballsets.append(ballsets[0])
+    clearance = np.zeros(cm.MAX_PLANES)
+    for k, p in enumerate(planes):
+        clearance[k] = p.bearing.diametral_clearance
+    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine))
+    y0 = np.zeros(cm.N_STATE)
+    y0[cm.OMEGA] = r.speed
+    y0[cm.X], y0[cm.Y] = r.start_x, r.start_y
+    for k, p in enumerate(planes):
+        b = cm.N_ROTOR + k * cm.N_PLANE
+        y0[b + cm.OX], y0[b + cm.OY] = p.misalignment
+    # error scales: clearance for positions, the speed of a fall through it for velocities
+    s = min(p.radial_clearance for p in planes)
+    v = max(math.sqrt(2.0 * g * s), 1e-3)
+    w = max(abs(r.speed), 1.0)
+    length = max(lever, 1e-3)
+    rotor_scale = (s, s, s, s / length, s / length, 1.0, v, v, v, v / length, v / length, w)
+    free = (True, True, machine.axial_free, machine.tilt_free, machine.tilt_free, True,
+            True, True, machine.axial_free, machine.tilt_free, machine.tilt_free, True)
+    atol = np.full(cm.N_STATE, np.inf)
+    for i in range(cm.N_ROTOR):
+        if free[i]:
+            atol[i] = sim.atol * rotor_scale[i]
+    for k, p in enumerate(planes):
+        b = cm.N_ROTOR + k * cm.N_PLANE
+        for i, sc in ((cm.RX, s), (cm.RY, s), (cm.RPSI, 1.0), (cm.RVX, v), (cm.RVY, v), (cm.ROMEGA, w)):
+            atol[b + i] = sim.atol * sc
+        if p.catches_axially:
+            atol[b + cm.RZ] = sim.atol * s
+            atol[b + cm.RVZ] = sim.atol * v
+        if p.mount is not None:
+            for i, sc in ((cm.OX, s), (cm.OY, s), (cm.OVX, v), (cm.OVY, v)):
+                atol[b + i] = sim.atol * sc
+    settings = ig.Settings(sim.rtol, atol, sim.max_step, 1e-14, 20000, sim.output_step)
+    kinetic, potential = cm.energy(y0, core)
+    return KernelModel(core, y0, settings, kinetic + potential)
+
+
+# ----------------------------------------------------------------------------- reading files
+def _text(table: dict, key: str, where: str, fallback: str) -> str:
+    value = table.get(key, fallback)
+    if not isinstance(value, str) or not value.strip():
+        raise InputError.for_field(where + key, value, "must be a non-empty text")
+    return value.strip()
+
+
+def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
+    """A machine from the tables of a machine TOML file (values with units); every key checked first."""
+    allowed = ("machine", "rotor", "touchdown", "drop")
+    for key in data:
+        if key not in allowed:
+            raise InputError.for_field(f"[{key}]", "table", "unknown table; allowed tables: " + ", ".join(allowed))
+    head = data.get("machine", {})
+    if not isinstance(head, dict):
+        raise InputError.for_field("machine", head, "must be a table")
+    for key in head:
+        if key not in ("name", "orientation", "source"):
+            raise InputError.for_field(f"machine.{key}", head[key], "unknown key; allowed keys: name, orientation, "
+                                                                     "source")
+    rotor_values = read_table(data.get("rotor"), TABLES["rotor"], "rotor.")
+    for key in ("mass", "polar_inertia", "speed"):
+        if key not in rotor_values:
+            raise InputError(f"rotor.{key}: missing; a machine's [rotor] needs mass, polar_inertia and speed")
+    rotor = MachineRotor(**{k: rotor_values.get(k, default("rotor", k)) for k in TABLES["rotor"]})
+    tables = data.get("touchdown")
+    if not isinstance(tables, list) or not tables or not all(isinstance(t, dict) for t in tables):
+        raise InputError.for_field("touchdown", tables, "give one or two [[touchdown]] tables")
+    planes = []
+    for k, table in enumerate(tables):
+        where = f"touchdown.{k}."
+        numbers = {key: v for key, v in table.items() if key not in TOUCHDOWN_TEXT}
+        values = read_table(numbers, TABLES["touchdown"], where)
+        if "radial_clearance" not in values:
+            raise InputError(f"{where}radial_clearance: missing; every [[touchdown]] needs it")
+        spec = _text(table, "bearing", where, "")
+        path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
+        bearing = _bearing(spec, path, where)
+        values["axial_direction"] = _text(table, "axial_direction", where, "both")
+        planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
+    sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")
+    return Machine(name=_text(head, "name", "machine.", name), rotor=rotor, planes=tuple(planes),
+                   orientation=_text(head, "orientation", "machine.", "horizontal"),
+                   simulation=Simulation(**sim_values), source=str(head.get("source", "user input")))
+
+
+def _bearing(spec: str, path: Path, where: str) -> BearingGeometry:
+    from auxbearing.bearing import get_bearing
+
+    if spec.lower().endswith(".toml") or path.is_file():
+        table = read_toml(path)
+        if "bearing" not in table:
+            raise InputError.for_field(where + "bearing", spec, "this file has no [bearing] table")
+        return bearing_from_mapping(table["bearing"], name=path.stem)
+    try:
+        return get_bearing(spec)
+    except InputError as err:
+        raise InputError(where + str(err)) from None
+
+
+@cache
+def _catalogue_files() -> dict[str, str]:
+    folder = resources.files("auxbearing.catalog").joinpath("machines")
+    return {entry.name.removesuffix(".toml"): entry.read_text() for entry in folder.iterdir()
+            if entry.name.endswith(".toml")}
+
+
+def machine_names() -> list[str]:
+    """Names of the example machines shipped in the catalogue."""
+    return sorted(_catalogue_files())
+
+
+def read_machine(spec: str | Path) -> Machine:
+    """A machine from a TOML file or a catalogue name (:func:`machine_names`)."""
+    import tomllib
+
+    text = str(spec)
+    if text in _catalogue_files():
+        return machine_from_mapping(tomllib.loads(_catalogue_files()[text]), text)
+    path = Path(text)
+    if not path.is_file():
+        raise InputError.for_field("machine", text, "neither a file nor a catalogue machine ("
+                                   + ", ".join(machine_names()) + ")")
+    return machine_from_mapping(read_toml(path), path.stem, path.parent)
+
+
+def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
+    """The source paper's drop as a machine: one plane at the mass centre, tilt and axial motion locked.
+
+    ``rotor`` and ``case`` are :class:`auxbearing.drop_params.Rotor` and ``DropCase``.
+    """
+    values = {"radial_clearance": case.clearance, "race_mass": case.race_mass, "race_inertia": case.race_inertia,
+              "line_stiffness": case.line_stiffness, "line_damping": case.line_damping,
+              "ball_damping": case.ball_damping, "ball_constant": case.ball_constant,
+              "sliding_friction": case.sliding_friction, "rolling_friction": case.rolling_friction,
+              "slip_velocity": case.slip_velocity, "journal_radius": rotor.radius}
+    if rotor.radius is not None and bearing.bore is not None and abs(rotor.radius + case.clearance
+                                                                      - 0.5 * bearing.bore) > 1e-9:
+        raise InputError.for_field(
+            "rotor.radius", f"{rotor.radius * 1e3:g} mm",
+            f"rotor.radius + drop.clearance = {(rotor.radius + case.clearance) * 1e3:g} mm must equal the race bore "
+            f"radius {bearing.bore * 500:g} mm (bore {bearing.bore * 1e3:g} mm); leave rotor.radius unset to derive it")
+    plane = make_plane(bearing, values, bearing.name, 0)
+    machine_rotor = MachineRotor(rotor.mass, rotor.polar_inertia, None, case.speed, rotor.eccentricity,
+                                 case.unbalance_phase, start_x=case.start_x, start_y=case.start_y)
+    sim = Simulation(duration=case.duration, output_step=case.output_step, rtol=case.rtol, atol=case.atol,
+                     max_step=case.max_step, gravity=case.gravity)
+    return Machine(f"paper drop on {bearing.name}", machine_rotor, (plane,), "horizontal", sim,
+                   "source paper Sec. II.D, Table II")
+
+
+def paper_rig() -> Machine:
+    """The source paper's QJ202 drop with Table II and our stated defaults (a doctest helper)."""
+    from auxbearing.bearing import get_bearing
+    from auxbearing.drop_params import DropCase, Rotor
+
+    return planar_machine(get_bearing("QJ202"), Rotor(), DropCase())
+
+
+__all__ = ["G0", "KernelModel", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
+           "machine_from_mapping", "machine_names", "make_plane", "paper_rig", "planar_machine", "read_machine"]

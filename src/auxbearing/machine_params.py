@@ -1,0 +1,159 @@
+"""Every input of a machine file: one :class:`~auxbearing.params.Param` row per key, with unit and source.
+
+The tables of a machine TOML file are ``[machine]``, ``[rotor]``, one ``[[touchdown]]`` per plane and
+``[drop]`` (how the run is made); the keys of ``[[touchdown]]`` that the source paper's drop also has
+keep their meaning and units. Values the literature does not fix are marked "ours" with the reasoning.
+"""
+
+from __future__ import annotations
+
+import math
+
+from auxbearing.params import Param, by_key
+
+G0 = 9.80665  #: standard gravity [m/s^2] (CGPM 1901)
+
+ROTOR: tuple[Param, ...] = (
+    Param("rotor", "mass", "mass", None, "kg", "positive", "Rotor mass m", "required"),
+    Param("rotor", "polar_inertia", "inertia", None, "kg*m**2", "positive",
+          "Polar moment of inertia J_p about the spin axis", "required"),
+    Param("rotor", "transverse_inertia", "inertia", None, "kg*m**2", "optional_positive",
+          "Moment of inertia J_t about a transverse axis through the mass centre", "required with two planes"),
+    Param("rotor", "speed", "angular_speed", None, "rpm", "finite", "Spin speed at the drop", "required"),
+    Param("rotor", "unbalance", "length", 0.0, "um", "nonnegative",
+          "Static unbalance: offset of the mass centre from the journal axis", "ours: none unless given"),
+    Param("rotor", "unbalance_phase", "angle", 0.0, "deg", "finite",
+          "Direction of the mass-centre offset at the drop, from +x", "ours"),
+    Param("rotor", "couple_unbalance", "angle", 0.0, "mrad", "nonnegative",
+          "Couple unbalance: tilt of the principal axis from the journal axis", "ours: none unless given"),
+    Param("rotor", "couple_unbalance_phase", "angle", 0.0, "deg", "finite",
+          "Direction the principal axis leans towards at +z, relative to unbalance_phase's reference", "ours"),
+    Param("rotor", "axial_force", "force", 0.0, "N", "finite", "Constant process thrust on the rotor along +z",
+          "ours: none unless given"),
+    Param("rotor", "side_force_x", "force", 0.0, "N", "finite", "Constant radial process force along x", "ours"),
+    Param("rotor", "side_force_y", "force", 0.0, "N", "finite", "Constant radial process force along y", "ours"),
+    Param("rotor", "start_x", "length", 0.0, "mm", "finite", "Journal-axis position at the drop, x", "ours: centred"),
+    Param("rotor", "start_y", "length", 0.0, "mm", "finite", "Journal-axis position at the drop, y", "ours: centred"),
+)
+
+TOUCHDOWN: tuple[Param, ...] = (
+    Param("touchdown", "position", "length", 0.0, "mm", "finite",
+          "Axial position of the plane from the mass centre (+z)", "required with two planes"),
+    Param("touchdown", "radial_clearance", "length", None, "mm", "positive",
+          "Radial clearance s between journal and inner-race bore", "required"),
+    Param("touchdown", "axial_clearance", "length", None, "mm", "optional_positive",
+          "Clearance between the rotor collar and the race face; absent: the plane does not catch axially",
+          "ours: no axial touchdown unless given"),
+    Param("touchdown", "journal_radius", "length", None, "mm", "optional_positive",
+          "Journal radius r; default bore/2 - radial_clearance", "NOTES item 6"),
+    Param("touchdown", "race_mass", "mass", None, "kg", "optional_positive",
+          "Inner race mass; default from bore, inner raceway diameter, width and ring density",
+          "ours: the ring as a hollow cylinder from the bore to the groove bottom"),
+    Param("touchdown", "race_inertia", "inertia", None, "kg*m**2", "optional_positive",
+          "Inner race polar moment of inertia; default from the same hollow cylinder", "ours"),
+    Param("touchdown", "line_stiffness", "line_stiffness", None, "N/m**(10/9)", "optional_positive",
+          "Journal/race line-contact constant K_l; default Palmgren with the bearing width", "Palmgren (Eq. 19)"),
+    Param("touchdown", "line_damping", "damping", 1000.0, "N*s/m", "nonnegative",
+          "Journal/race contact damping C_l", "source paper Table II"),
+    Param("touchdown", "ball_damping", "damping", 500.0, "N*s/m", "nonnegative",
+          "Ball-set damping C_b on the race velocity", "source paper Table II"),
+    Param("touchdown", "ball_constant", "ball_constant", None, "N/m**1.5", "optional_positive",
+          "Override of the ball contact constant K_b; default Hertz (Eq. 15)", "source paper Eq. 15"),
+    Param("touchdown", "sliding_friction", "dimensionless", 0.2, "", "unit_interval",
+          "Journal/race sliding friction coefficient mu_1", "source paper Table II"),
+    Param("touchdown", "rolling_friction", "dimensionless", 0.01, "", "unit_interval",
+          "Rolling resistance coefficient of the race mu_2", "source paper Table II"),
+    Param("touchdown", "slip_velocity", "velocity", 1e-2, "mm/s", "positive",
+          "Regularisation v_eps of sign(slip), tanh(v/v_eps)", "ours: results insensitive (tests)"),
+    Param("touchdown", "mount_stiffness", "stiffness", None, "N/m", "optional_positive",
+          "Radial stiffness of the outer-ring mount; absent: rigid housing", "ours: rigid unless given"),
+    Param("touchdown", "mount_damping", "damping", 0.0, "N*s/m", "nonnegative", "Radial damping of the mount",
+          "ours"),
+    Param("touchdown", "mount_mass", "mass", None, "kg", "optional_positive",
+          "Mass moving with the outer ring in the mount; default the outer ring's", "ours: ring as a hollow cylinder"),
+    Param("touchdown", "mount_deadband", "length", 0.0, "um", "nonnegative",
+          "Radial travel of the outer ring before the mount spring engages", "ours"),
+    Param("touchdown", "mount_stop", "length", None, "um", "optional_positive",
+          "Radial travel to a hard stop; absent: none", "Hawkins et al. GT2007-28290 (flexible support, hard stop)"),
+    Param("touchdown", "stop_stiffness", "stiffness", None, "N/m", "optional_positive",
+          "Hard-stop stiffness; default 100 x mount_stiffness", "ours"),
+    Param("touchdown", "stop_damping", "damping", 0.0, "N*s/m", "nonnegative", "Hard-stop damping", "ours"),
+    Param("touchdown", "mount_travel", "length", None, "mm", "optional_positive",
+          "Largest radial travel the mount allows before the run stops; default 2 x the stop, or 10 x the clearance",
+          "ours"),
+    Param("touchdown", "misalignment_x", "length", 0.0, "um", "finite", "Bearing centre offset along x", "ours"),
+    Param("touchdown", "misalignment_y", "length", 0.0, "um", "finite", "Bearing centre offset along y", "ours"),
+    Param("touchdown", "face_stiffness", "stiffness", None, "N/m", "optional_positive",
+          "Axial stiffness of the collar on the race face; default the race ring as an axial column E A / B",
+          "ours"),
+    Param("touchdown", "face_damping", "damping", 1000.0, "N*s/m", "nonnegative", "Axial face contact damping",
+          "ours: as C_l"),
+    Param("touchdown", "face_friction", "dimensionless", None, "", "unit_interval",
+          "Friction coefficient of the collar on the race face; default sliding_friction",
+          "Wilkes et al. GT2013-94594 (face friction drives forward whirl)"),
+    Param("touchdown", "face_radius", "length", None, "mm", "optional_positive",
+          "Mean radius of the collar/race-face annulus; default midway between bore and groove bottom", "ours"),
+    Param("touchdown", "shoulder_height", "length", None, "mm", "optional_positive",
+          "Groove shoulder height above the groove bottom (both rings); default 0.25 x ball diameter",
+          "ours: an assumption; give the maker's value"),
+)
+#: Keys of ``[[touchdown]]`` that are text, not quantities.
+TOUCHDOWN_TEXT = ("name", "bearing", "axial_direction")
+AXIAL_DIRECTIONS = ("both", "+z", "-z")
+
+SIMULATION: tuple[Param, ...] = (
+    Param("drop", "duration", "time", 0.2, "s", "positive", "Simulated time", "ours"),
+    Param("drop", "output_step", "time", 1e-5, "us", "positive", "Uniform output interval", "ours"),
+    Param("drop", "rtol", "dimensionless", 1e-6, "", "tolerance", "Relative tolerance of the integration",
+          "ours (converged, tests)"),
+    Param("drop", "atol", "dimensionless", 1e-6, "", "tolerance",
+          "Absolute tolerance as a fraction of each state's scale", "ours"),
+    Param("drop", "max_step", "time", 5e-5, "us", "positive", "Largest integration step", "ours"),
+    Param("drop", "gravity", "acceleration", G0, "m/s**2", "nonnegative", "Gravitational acceleration",
+          "standard gravity"),
+    Param("drop", "max_steps", "dimensionless", 5e7, "", "count", "Step budget: the run stops with a verdict past it",
+          "ours: about 5 min on this machine"),
+    Param("drop", "max_wall_time", "time", 600.0, "s", "positive", "Wall-time budget of one run", "ours"),
+    Param("drop", "max_output_points", "dimensionless", 4e5, "", "count",
+          "Most output instants kept; a longer run is written at a coarser step (said in the result)",
+          "ours: ~150 MB for two planes"),
+    Param("drop", "whirl_window", "time", None, "ms", "optional_positive",
+          "Length of the windows in which whirl is classified; default 3 spin periods at the drop, at least 5 ms",
+          "ours: a whirl must turn half a revolution within a window to count"),
+    Param("drop", "ball_stress_limit", "pressure", 6000e6, "MPa", "positive",
+          "Ball contact stress beyond which elastic Hertz values mean nothing (the run stops)",
+          "ours: Palmgren's dent grows as sigma^6, so 6000 MPa dents about 8.5x ISO 76's 1e-4 D"),
+    Param("drop", "line_contact_limit", "dimensionless", 0.3, "", "unit_interval",
+          "Largest Hertz half-width of the journal/race contact, as a fraction of the journal radius",
+          "ours: the half-space assumption behind the line-contact law fails as the contact wraps"),
+    Param("drop", "energy_tolerance", "dimensionless", 1e-3, "", "unit_interval",
+          "Energy gain, relative to the energy brought in, that stops a run as a numerical run-away", "ours"),
+)
+
+TABLES = {"rotor": by_key(ROTOR, "rotor"), "touchdown": by_key(TOUCHDOWN, "touchdown"),
+          "drop": by_key(SIMULATION, "drop")}
+
+
+def default(section: str, key: str) -> float | None:
+    """The SI default of a row."""
+    return TABLES[section][key].default
+
+
+def steel_column_stiffness(modulus: float, area: float, length: float) -> float:
+    """Axial stiffness of a prismatic bar E A / L [N/m] (Timoshenko & Gere, Mechanics of Materials, Eq. 2.3).
+
+    >>> round(steel_column_stiffness(207e9, 1e-4, 0.01) / 1e9, 2)
+    2.07
+    """
+    return modulus * area / length
+
+
+def hollow_cylinder(density: float, inner: float, outer: float, width: float) -> tuple[float, float]:
+    """Mass [kg] and polar moment of inertia [kg m^2] of a hollow cylinder, m (r_i^2 + r_o^2) / 2.
+
+    >>> m, j = hollow_cylinder(7810.0, 0.0075, 0.00975, 0.011)
+    >>> round(m * 1e3, 2), f"{j:.3e}"
+    (10.47, 7.925e-07)
+    """
+    mass = density * math.pi * (outer**2 - inner**2) * width
+    return mass, 0.5 * mass * (inner**2 + outer**2)

@@ -1,0 +1,1 @@
+"""The source paper's reproduction: study stages, claims, the paper's numbers and captions."""

@@ -1,0 +1,172 @@
+"""Parameter tables: one row per input (key, dimension, default, display unit, rule, help, source).
+
+Model objects, their TOML tables and the command-line options are all generated from such tables, so
+a new input is one row. Values arrive as strings with units ("0.2 mm", "6000 rpm"), pint quantities
+or plain numbers; a plain number is SI (the message says so) except on the command line, where it is
+in the row's display unit.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import pint
+
+from auxbearing.errors import InputError
+from auxbearing.units import SI_UNITS, Quantity, parse_quantity
+
+#: Units beyond :data:`auxbearing.units.SI_UNITS` that the dynamics need: (SI unit, examples).
+EXTRA_UNITS = {
+    "line_stiffness": ("N/m**(10/9)", "N/m**(10/9)"),
+    "ball_constant": ("N/m**1.5", "N/m**1.5, N/mm**1.5"),
+    "velocity": ("m/s", "m/s, mm/s"),
+    "acceleration": ("m/s**2", "m/s**2"),
+    "stiffness": ("N/m", "N/m, N/mm"),
+    "torque_per_speed": ("N*m*s", "N*m*s, N*m/rpm"),
+    "torque_per_speed2": ("N*m*s**2", "N*m*s**2, N*m/rpm**2"),
+}
+RULES = ("positive", "nonnegative", "unit_interval", "finite", "tolerance", "optional_positive",
+         "optional_nonnegative", "count")
+
+
+class Param(NamedTuple):
+    """One input: where it lives, its unit, default, rule and source."""
+
+    section: str  #: TOML table ("rotor", "drop", "touchdown", ...)
+    key: str  #: TOML key and dataclass field
+    dimension: str  #: key of SI_UNITS or of EXTRA_UNITS
+    default: float | None  #: SI default; None means derived or absent (see help)
+    display_unit: str  #: unit of plain command-line numbers and help texts
+    rule: str  #: one of :data:`RULES`
+    help: str
+    source: str
+
+
+def si_unit(dimension: str) -> str:
+    """SI unit of a dimension."""
+    return SI_UNITS[dimension] if dimension in SI_UNITS else EXTRA_UNITS[dimension][0]
+
+
+def convert(field: str, value: object, dimension: str, default_unit: str | None = None) -> float:
+    """A user value in the SI unit of ``dimension``; a plain number is taken in ``default_unit`` or SI.
+
+    Examples
+    --------
+    >>> f"{convert('ball_constant', '5.42e5 N/mm**1.5', 'ball_constant'):.4g}"
+    '1.714e+10'
+    >>> convert("slip_velocity", "10 mm/s", "velocity")
+    0.01
+    >>> convert("speed", 100.0, "angular_speed")  # a plain number is SI: rad/s
+    100.0
+    """
+    if isinstance(value, bool) or not isinstance(value, (int, float, str, pint.Quantity)):
+        raise InputError.for_field(field, value, f"must be a number with a unit such as {_examples(dimension)}")
+    unit = si_unit(dimension)
+    if isinstance(value, (int, float)):
+        quantity = Quantity(float(value), default_unit or unit)
+    else:
+        quantity = parse_quantity(field, value, dimension, default_unit or unit)
+    try:
+        magnitude = float(quantity.to(unit).magnitude)
+    except pint.DimensionalityError:
+        raise InputError.for_field(field, value, f"unit {quantity.units} is not a {dimension.replace('_', ' ')} "
+                                                 f"(use e.g. {_examples(dimension)})") from None
+    except (OverflowError, ValueError, TypeError):
+        raise InputError.for_field(field, value, "is not a finite number") from None
+    if not math.isfinite(magnitude):
+        raise InputError.for_field(field, value, "must be a finite number")
+    return magnitude
+
+
+def _examples(dimension: str) -> str:
+    from auxbearing.units import _EXAMPLES
+
+    return _EXAMPLES[dimension][0] if dimension in _EXAMPLES else EXTRA_UNITS[dimension][1]
+
+
+def display_value(param: Param, value: float) -> object:
+    """The value in the parameter's display unit, as a user would type it (SI when it has none)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return value
+    unit = param.display_unit or si_unit(param.dimension)
+    if not unit:
+        return value
+    try:
+        return f"{Quantity(value, si_unit(param.dimension)).to(unit).magnitude:.6g} {unit}"
+    except (pint.DimensionalityError, OverflowError):  # pragma: no cover - table consistency is tested
+        return value
+
+
+def check(param: Param, value: object, field: str | None = None) -> None:
+    """Apply the row's rule; the InputError names the field, the value as a person reads it and the rule."""
+    name = field or f"{param.section}.{param.key}"
+    if value is None:
+        if param.rule.startswith("optional"):
+            return
+        raise InputError.for_field(name, value, "is required")
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or math.isnan(value):
+        raise InputError.for_field(name, value, f"must be a number in {param.display_unit or 'SI units'}")
+    shown = display_value(param, value)
+    if math.isinf(value):
+        raise InputError.for_field(name, shown, "must be finite")
+    rule = param.rule
+    if rule in ("positive", "optional_positive") and value <= 0.0:
+        raise InputError.for_field(name, shown, "must be > 0")
+    if rule in ("nonnegative", "optional_nonnegative") and value < 0.0:
+        raise InputError.for_field(name, shown, "must be >= 0")
+    if rule == "unit_interval" and not 0.0 <= value <= 1.0:
+        raise InputError.for_field(name, shown, "must lie in [0, 1]")
+    if rule == "tolerance" and not 0.0 < value <= 1e-2:
+        raise InputError.for_field(name, shown, "must lie in (0, 0.01]")
+    if rule == "count" and (value != int(value) or value < 1):
+        raise InputError.for_field(name, shown, "must be a whole number >= 1")
+
+
+def accept(param: Param, value: object, field: str | None = None) -> float | None:
+    """A value given to the Python API (string with unit, quantity or SI number), converted and checked."""
+    name = field or f"{param.section}.{param.key}"
+    if value is None:
+        check(param, None, name)
+        return None
+    si = value if isinstance(value, (int, float)) and not isinstance(value, bool) else convert(
+        name, value, param.dimension)
+    si = float(si) if not isinstance(si, bool) else si
+    check(param, si, name)
+    return si
+
+
+def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, float]:
+    """SI values of a TOML table whose values carry units; unknown keys refused with the allowed list.
+
+    Examples
+    --------
+    >>> rows = {"mass": Param("rotor", "mass", "mass", 1.0, "kg", "positive", "Rotor mass", "-")}
+    >>> read_table({"mass": "2 kg"}, rows, "rotor.")
+    {'mass': 2.0}
+    >>> read_table({"mas": "2 kg"}, rows, "rotor.")
+    Traceback (most recent call last):
+    ...
+    auxbearing.errors.InputError: rotor.mas = '2 kg': unknown key; allowed keys: mass
+    """
+    if data is None:
+        return {}
+    if not isinstance(data, dict):
+        raise InputError.for_field(prefix.rstrip("."), data, "must be a table of keys")
+    out = {}
+    for key, value in data.items():
+        if key not in table:
+            raise InputError.for_field(prefix + key, value, "unknown key; allowed keys: " + ", ".join(table))
+        param = table[key]
+        if isinstance(value, (int, float)) and not isinstance(value, bool) and param.dimension not in (
+                "dimensionless",) and si_unit(param.dimension):
+            raise InputError.for_field(prefix + key, value,
+                                       f"needs a unit, e.g. '{value} {param.display_unit or si_unit(param.dimension)}'")
+        out[key] = convert(prefix + key, value, param.dimension)
+        check(param, out[key], prefix + key)
+    return out
+
+
+def by_key(rows: tuple[Param, ...], section: str) -> dict[str, Param]:
+    """The rows of one section, by key."""
+    return {p.key: p for p in rows if p.section == section}

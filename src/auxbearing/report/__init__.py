@@ -1,0 +1,1 @@
+"""Reports: the data model of a report and its HTML rendering."""
