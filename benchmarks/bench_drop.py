@@ -28,7 +28,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from auxbearing import get_bearing
-from auxbearing.analysis import drop as ad
+from auxbearing import drop as ad
 from auxbearing.core import ballset
 from auxbearing.core import drop as cd
 
@@ -96,7 +96,7 @@ def normal_force(states: np.ndarray, model: ad.DropModel) -> np.ndarray:
 
 def compile_times() -> tuple[float, float]:
     """Seconds to compile in a fresh process with an empty cache, and to start from the cache."""
-    code = ("import time; t = time.perf_counter(); from auxbearing.analysis import drop as ad; "
+    code = ("import time; t = time.perf_counter(); from auxbearing import drop as ad; "
             "m = ad.build_model(ad.load_bearing('QJ202'), ad.Rotor(), ad.DropCase()); "
             "t1 = time.perf_counter(); ad._warm_up(m); print(time.perf_counter() - t1)")
     with tempfile.TemporaryDirectory() as cache:

@@ -6,7 +6,7 @@ Both solve load + F_ballset(u) = 0 for 5-DOF loads (Fa, Fx, Fy, Mx, My) drawn un
 |F| <= 3 kN, |M| <= 10 N m, with the same scaling (moments / r_ic, tilts * r_ic), the same
 analytic Jacobian and the same rigid-ring starting point:
 
-* ours: auxbearing.core.static.solve_cases (compiled damped Newton, all cases in one call);
+* ours: auxbearing.core.statics.solve_cases (compiled damped Newton, all cases in one call);
 * peer: scipy.optimize.root(method="hybr", jac=True) per case, once with the vectorised numpy
   ball-set form (the public numpy API) and once with the compiled 5-DOF kernel as the
   residual function (scipy's own overhead only). The peer runs on the first ``--subset`` cases
