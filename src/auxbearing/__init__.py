@@ -1,9 +1,11 @@
 """auxbearing: design of auxiliary (touchdown) ball bearings for active-magnetic-bearing machines.
 
-The public API takes values with units (strings such as ``"6 mm"`` or pint quantities),
-validates them, and calls SI kernels in :mod:`auxbearing.core`.
+The public API takes values with units (strings such as ``"6 mm"`` or pint quantities, or plain numbers
+in SI), validates them, and calls SI kernels in :mod:`auxbearing.core`. The names below are loaded on
+first use, so ``import auxbearing`` (and the pure core under it) pulls in no unit or I/O library.
 """
 
+from importlib import import_module
 from importlib.metadata import PackageNotFoundError, version
 
 try:
@@ -11,18 +13,28 @@ try:
 except PackageNotFoundError:  # running from a source tree without installation
     __version__ = "0.0.0+unknown"
 
-from auxbearing.bearing import BearingGeometry, bearing_from_mapping, get_bearing, load_bearing
-from auxbearing.errors import ConvergenceError, InputError
-from auxbearing.materials import Material, get_material
+_LAZY = {
+    "BearingGeometry": "auxbearing.bearing",
+    "bearing_from_mapping": "auxbearing.bearing",
+    "get_bearing": "auxbearing.bearing",
+    "load_bearing": "auxbearing.bearing",
+    "ConvergenceError": "auxbearing.errors",
+    "InputError": "auxbearing.errors",
+    "Material": "auxbearing.materials",
+    "get_material": "auxbearing.materials",
+    "Machine": "auxbearing.machine",
+    "read_machine": "auxbearing.machine",
+    "run_machine": "auxbearing.drop",
+    "run_drop": "auxbearing.drop",
+}
 
-__all__ = [
-    "BearingGeometry",
-    "ConvergenceError",
-    "InputError",
-    "Material",
-    "__version__",
-    "bearing_from_mapping",
-    "get_bearing",
-    "get_material",
-    "load_bearing",
-]
+__all__ = ["__version__", *sorted(_LAZY)]
+
+
+def __getattr__(name: str):
+    """Load a public name from its module on first use (PEP 562)."""
+    if name in _LAZY:
+        value = getattr(import_module(_LAZY[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'auxbearing' has no attribute {name!r}")

@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 import tomllib
 from dataclasses import dataclass, replace
-from functools import cache
-from importlib import resources
 from pathlib import Path
 
+from auxbearing.catalog import bearing_names as bearing_names  # re-exported: the CLI and tests use it here
+from auxbearing.catalog import bearing_table
 from auxbearing.errors import InputError
 from auxbearing.materials import Material, check_positive, get_material, material_from_mapping
 from auxbearing.units import to_si
@@ -315,15 +315,8 @@ def _material(value: object, prefix: str) -> Material:
     raise InputError.for_field(prefix.rstrip("."), value, "must be a catalogue name or a table")
 
 
-@cache
 def _catalogue() -> dict[str, dict]:
-    text = resources.files("auxbearing.catalog").joinpath("bearings.toml").read_text()
-    return tomllib.loads(text)
-
-
-def bearing_names() -> list[str]:
-    """Names of the catalogue bearings."""
-    return list(_catalogue())
+    return bearing_table()
 
 
 def get_bearing(name: str) -> BearingGeometry:

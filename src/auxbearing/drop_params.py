@@ -18,7 +18,6 @@ import math
 from dataclasses import dataclass, fields
 from pathlib import Path
 
-from auxbearing.bearing import BearingGeometry, bearing_from_mapping, read_toml
 from auxbearing.errors import InputError
 from auxbearing.params import Param, accept, by_key, check, convert, display_value, read_table, si_unit
 
@@ -207,13 +206,16 @@ def from_mapping(data: dict | None, section: str, prefix: str | None = None) -> 
     return read_table(data, _BY_SECTION[section], f"{section}." if prefix is None else prefix)
 
 
-def read_config(path: str | Path) -> tuple[BearingGeometry | None, dict, dict]:
+def read_config(path: str | Path) -> tuple:
     """The ``[bearing]``, ``[rotor]`` and ``[drop]`` tables of a TOML file (values with units).
 
-    Returns the bearing (None when the file has no ``[bearing]`` table) and the SI keyword
+    Returns the :class:`~auxbearing.bearing.BearingGeometry` (None when the file has no ``[bearing]``
+    table) and the SI keyword
     arguments of :class:`Rotor` and :class:`DropCase`. Other tables are refused: a drop file
     holds these three only.
     """
+    from auxbearing.bearing import bearing_from_mapping, read_toml
+
     data = read_toml(path)
     unknown = [k for k in data if k not in ("bearing", "rotor", "drop")]
     if unknown:

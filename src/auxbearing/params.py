@@ -11,10 +11,20 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-import pint
-
 from auxbearing.errors import InputError
-from auxbearing.units import SI_UNITS, Quantity, parse_quantity
+
+#: SI unit of each dimension (the unit library is imported only when a value is converted, so that
+#: ``--help`` texts built from these tables need none).
+SI_UNITS: dict[str, str] = {
+    "length": "m", "angle": "rad", "force": "N", "pressure": "Pa", "moment": "N*m", "mass": "kg",
+    "inertia": "kg*m**2", "time": "s", "angular_speed": "rad/s", "damping": "N*s/m", "density": "kg/m**3",
+    "specific_heat": "J/(kg*K)", "thermal_conductivity": "W/(m*K)", "thermal_expansion": "1/K", "temperature": "K",
+    "power": "W", "thermal_conductance": "W/K", "heat_transfer_coefficient": "W/(m**2*K)",
+    "dynamic_viscosity": "Pa*s", "kinematic_viscosity": "m**2/s", "dimensionless": "",
+}
+#: Display units of the tables as multiples of SI (exact), for help texts without the unit library.
+_DISPLAY_SCALE = {"mm": 1e3, "um": 1e6, "us": 1e6, "ms": 1e3, "deg": 180.0 / math.pi, "rpm": 30.0 / math.pi,
+                  "mrad": 1e3, "MPa": 1e-6, "mm/s": 1e3, "kN": 1e-3, "GPa": 1e-9, "degC": None}
 
 #: Units beyond :data:`auxbearing.units.SI_UNITS` that the dynamics need: (SI unit, examples).
 EXTRA_UNITS = {
@@ -60,6 +70,10 @@ def convert(field: str, value: object, dimension: str, default_unit: str | None 
     >>> convert("speed", 100.0, "angular_speed")  # a plain number is SI: rad/s
     100.0
     """
+    import pint
+
+    from auxbearing.units import Quantity, parse_quantity
+
     if isinstance(value, bool) or not isinstance(value, (int, float, str, pint.Quantity)):
         raise InputError.for_field(field, value, f"must be a number with a unit such as {_examples(dimension)}")
     unit = si_unit(dimension)
@@ -92,10 +106,13 @@ def display_value(param: Param, value: float) -> object:
     unit = param.display_unit or si_unit(param.dimension)
     if not unit:
         return value
-    try:
-        return f"{Quantity(value, si_unit(param.dimension)).to(unit).magnitude:.6g} {unit}"
-    except (pint.DimensionalityError, OverflowError):  # pragma: no cover - table consistency is tested
-        return value
+    if unit == si_unit(param.dimension):
+        return f"{value:.6g} {unit}"
+    if _DISPLAY_SCALE.get(unit) is not None:
+        return f"{value * _DISPLAY_SCALE[unit]:.6g} {unit}"
+    from auxbearing.units import Quantity
+
+    return f"{Quantity(value, si_unit(param.dimension)).to(unit).magnitude:.6g} {unit}"
 
 
 def check(param: Param, value: object, field: str | None = None) -> None:

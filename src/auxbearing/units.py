@@ -14,36 +14,15 @@ from numbers import Real
 import pint
 
 from auxbearing.errors import InputError
+from auxbearing.params import SI_UNITS as _SI_UNITS
 
 ureg = pint.UnitRegistry()
 ureg.define("rpm = revolution / minute")
 ureg.define("rps = revolution / second")
 Quantity = ureg.Quantity
 
-#: SI unit of each physical dimension the package reads.
-SI_UNITS: dict[str, str] = {
-    "length": "m",
-    "angle": "rad",
-    "force": "N",
-    "pressure": "Pa",
-    "moment": "N*m",
-    "mass": "kg",
-    "inertia": "kg*m**2",
-    "time": "s",
-    "angular_speed": "rad/s",
-    "damping": "N*s/m",
-    "density": "kg/m**3",
-    "specific_heat": "J/(kg*K)",
-    "thermal_conductivity": "W/(m*K)",
-    "thermal_expansion": "1/K",
-    "temperature": "K",
-    "power": "W",
-    "thermal_conductance": "W/K",
-    "heat_transfer_coefficient": "W/(m**2*K)",
-    "dynamic_viscosity": "Pa*s",
-    "kinematic_viscosity": "m**2/s",
-    "dimensionless": "",
-}
+#: SI unit of each physical dimension the package reads (one table, kept in :mod:`auxbearing.params`).
+SI_UNITS = _SI_UNITS
 
 
 def to_si(field: str, value: object, dimension: str, default_unit: str | None = None) -> float:

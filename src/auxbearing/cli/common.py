@@ -6,9 +6,7 @@ from pathlib import Path
 
 import click
 
-from auxbearing.bearing import BearingGeometry, bearing_names, load_bearing
-from auxbearing.io import check_output_dir, dumps
-from auxbearing.units import to_si
+from auxbearing.catalog import bearing_names
 
 
 def bearing_option(default: str = "QJ202"):
@@ -26,6 +24,8 @@ def json_option():
 
 def checked_out_dir(ctx: click.Context, param: click.Parameter, value: Path | None) -> Path | None:
     """Click callback: refuse an output folder that cannot be made before the command does any work."""
+    from auxbearing.io import check_output_dir
+
     # An InputError here reaches the group's one-line handler (click parses inside Group.invoke).
     return None if value is None else check_output_dir(value)
 
@@ -47,13 +47,18 @@ def out_option(default: str):
 
 def quantity(field: str, text: str | None, dimension: str, default_unit: str | None = None) -> float | None:
     """A command-line value with an optional unit, in SI (None stays None)."""
+    from auxbearing.units import to_si
+
     if text is None:
         return None
     return to_si(field, text, dimension, default_unit)
 
 
-def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: str | None = None) -> BearingGeometry:
-    """Load a bearing and apply the common overrides."""
+def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: str | None = None):
+    """Load a bearing (a :class:`~auxbearing.bearing.BearingGeometry`) and apply the common overrides."""
+    from auxbearing.bearing import load_bearing
+    from auxbearing.units import to_si
+
     bearing = load_bearing(spec)
     changes: dict = {}
     if contact_angle is not None:
@@ -66,4 +71,53 @@ def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: s
 
 def echo_json(obj: object) -> None:
     """Print a JSON document."""
+    from auxbearing.io import dumps
+
     click.echo(dumps(obj))
+
+
+class ProgressReporter:
+    """Progress on stderr: a bar on a terminal, otherwise a plain line every :attr:`every` seconds.
+
+    Use as a context manager; call it with (fraction done, status text).
+    """
+
+    every = 5.0
+
+    def __init__(self, label: str, quiet: bool = False) -> None:
+        import sys
+        import time
+
+        self.label = label
+        self.quiet = quiet
+        self.tty = sys.stderr.isatty()
+        self._clock = time.monotonic
+        self._last = self._clock()
+        self._bar = None
+
+    def __enter__(self) -> ProgressReporter:
+        if not self.quiet and self.tty:
+            from rich.console import Console
+            from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+            self._bar = Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
+                                 TimeElapsedColumn(), console=Console(stderr=True), transient=True)
+            self._bar.__enter__()
+            self._task = self._bar.add_task(self.label, total=1.0)
+        return self
+
+    def __call__(self, fraction: float, status: str = "") -> None:
+        """Report ``fraction`` (0-1) of the work done and a short status."""
+        if self.quiet:
+            return
+        if self._bar is not None:
+            self._bar.update(self._task, completed=fraction, description=f"{self.label} {status}".strip())
+            return
+        now = self._clock()
+        if now - self._last >= self.every:
+            self._last = now
+            click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status}".rstrip(), err=True)
+
+    def __exit__(self, *exc) -> None:
+        if self._bar is not None:
+            self._bar.__exit__(*exc)

@@ -5,9 +5,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import click
-import numpy as np
-from rich.console import Console
-from rich.table import Table
 
 from auxbearing.cli.common import (
     bearing_option,
@@ -18,10 +15,6 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
-from auxbearing.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
-from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
-from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
-from auxbearing.statics import stress_warning
 
 _ROWS = (
     ("contact_load_N", "Contact load", "N", "{:.1f}"),
@@ -50,6 +43,11 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
     The radial ball load is split over the ball's contacts: Q/(2 cos α) on each of the two
     contacts of a four-point bearing, Q/cos α on the one contact of an angular-contact bearing.
     """
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing.contact import ball_contact
+    from auxbearing.statics import stress_warning
     bearing = resolve_bearing(bearing_spec, contact_angle, groove_ratio)
     load = quantity("--ball-load", ball_load, "force", "N")
     result = ball_contact(bearing, load, method=method)
@@ -85,6 +83,11 @@ def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, out
     fig2_contact_angle.png, fig3_groove_ratio.png, contact_map.png and contact_summary.json
     (the Fig. 4 comparison of four-point and angular-contact beside the paper's numbers).
     """
+    import numpy as np
+
+    from auxbearing.contact import PAPER_CONTACT, contact_map, type_comparison
+    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
     bearing = resolve_bearing(bearing_spec)
     load = quantity("--ball-load", ball_load, "force", "N")
     angles = _grid("--angle-range", angle_range)
@@ -111,7 +114,9 @@ def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, out
     click.echo(f"Wrote {Path(out_dir) / 'contact_map.nc'} and the Fig. 2-3 figures in {out_dir}/")
 
 
-def _grid(name: str, triple: tuple[float, float, float]) -> np.ndarray:
+def _grid(name: str, triple: tuple[float, float, float]):
+    import numpy as np
+
     start, stop, step = triple
     if step <= 0 or stop < start:
         from auxbearing.errors import InputError

@@ -1,23 +1,23 @@
-"""``auxbearing drop`` and ``auxbearing drop-compare`` (source paper Sec. II.D, Fig. 9-11).
+"""``auxbearing drop``, ``auxbearing machines`` and ``auxbearing drop-compare``.
 
-Every rotor and drop parameter of :data:`auxbearing.drop_params.PARAMETERS` is an
-option (generated from that table, so help, unit and default cannot drift apart) and a key of
-the ``[rotor]`` / ``[drop]`` tables of a ``--config`` TOML file; options win over the file.
+``drop --machine FILE_OR_NAME`` runs a machine (rigid rotor on one or two touchdown planes,
+:mod:`auxbearing.machine`); without it, ``drop`` runs the source paper's planar drop (Sec. II.D,
+Fig. 9-11), whose rotor and drop parameters of :data:`auxbearing.drop_params.PARAMETERS` are options
+(generated from that table, so help, unit and default cannot drift apart) and keys of the
+``[rotor]`` / ``[drop]`` tables of a ``--config`` TOML file; options win over the file. Heavy
+libraries are imported inside the commands, so ``--help`` answers at once.
 """
 
 from __future__ import annotations
 
 import contextlib
 import functools
-from dataclasses import replace
 from pathlib import Path
 
 import click
-from rich.console import Console
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
-from rich.table import Table
 
 from auxbearing.cli.common import (
+    ProgressReporter,
     bearing_option,
     checked_out_dir,
     echo_json,
@@ -26,12 +26,8 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
-from auxbearing.drop import DropCase, Rotor, read_config, run_drop
 from auxbearing.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.errors import InputError
-from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
-from auxbearing.paper.drop_paper import PAPER_DROP, drop_compare
-from auxbearing.statics import stress_warning
 
 #: Option names that differ from the parameter key ("--friction" is the issue's name for mu_1).
 _OPTION_NAMES = {
@@ -91,6 +87,8 @@ def quiet_option():
 
 def build_inputs(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
     """Bearing, Rotor and DropCase from catalogue/TOML/options (options win)."""
+    from auxbearing.drop_params import DropCase, Rotor, read_config
+
     bearing, rotor_kw, drop_kw = (None, {}, {}) if config is None else read_config(config)
     source = ctx.get_parameter_source("bearing_spec")
     if bearing is None or source != click.core.ParameterSource.DEFAULT:
@@ -103,11 +101,6 @@ def build_inputs(ctx: click.Context, bearing_spec: str, config: Path | None, par
         check(param, value, field)
         (rotor_kw if section == "rotor" else drop_kw)[key] = value
     return bearing, Rotor(**rotor_kw), DropCase(**drop_kw)
-
-
-def _progress(quiet: bool) -> Progress:
-    return Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
-                    TimeElapsedColumn(), console=Console(stderr=True), disable=quiet, transient=True)
 
 
 _ROWS = (("peak_contact_force_N", "Peak collision force", "N", "{:.1f}"),
@@ -131,29 +124,55 @@ def _fmt(fmt: str, value) -> str:
 
 
 @click.command("drop")
+@click.option("--machine", "machine_spec", default=None, metavar="FILE|NAME",
+              help="A machine TOML file or an example machine (`auxbearing machines`); without it, the paper's rig.")
 @bearing_option()
 @config_option()
 @parameter_options
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
               callback=checked_out_dir,
-              help="Write drop.nc, the Fig. 10-11 style figures and drop_summary.json into this folder.")
+              help="Write the time series (drop.nc), drop_summary.json and the figures into this folder.")
 @json_option()
 @quiet_option()
 @click.pass_context
-def drop_command(ctx, bearing_spec, config, params, out_dir, as_json, quiet):
-    """Rotor drop onto the auxiliary bearing (source paper Sec. II.D, Eq. 17-26, corrected).
+def drop_command(ctx, machine_spec, bearing_spec, config, params, out_dir, as_json, quiet):
+    """Drop of a rotor onto its touchdown bearings.
 
-    12 states (rotor and inner race: x, y, spin), Hertz line contact with damping, friction
-    against the slip, the inner race carried by the shared ball-set model; Table II defaults
-    with the corrected units, clearance 0.2 mm, 6000 rpm, 0.15 s. Values take units
+    With --machine: a rigid rotor on one or two touchdown planes (gyroscopics, axial touchdown,
+    compliant mounts). The run watches the model's range and ends with a verdict: "ok", or the limit it
+    crossed (then no peak is reported as a result). Whirl is judged window by window.
+
+    Without --machine: the source paper's planar drop (Sec. II.D, Eq. 17-26, corrected): Table II
+    defaults with the corrected units, clearance 0.2 mm, 6000 rpm, 0.15 s. Values take units
     ("0.2mm", "6000rpm"); plain numbers use the unit named in each option's help.
     """
+    if machine_spec is not None:
+        duration = params.pop(("drop", "duration"), None)  # --duration applies to both kinds of run
+        paper_options = [f"--{_option_name(p)}" for p in PARAMETERS if (p.section, p.key) in params]
+        source = ctx.get_parameter_source
+        if paper_options or config is not None or source("bearing_spec") != click.core.ParameterSource.DEFAULT:
+            given = paper_options or (["--config"] if config is not None else ["--bearing"])
+            raise InputError.for_field(given[0], "given with --machine",
+                                       "the paper-rig options do not apply to a machine; set them in its file")
+        _machine_drop(machine_spec, duration, out_dir, as_json, quiet)
+        return
+    _paper_drop(ctx, bearing_spec, config, params, out_dir, as_json, quiet)
+
+
+def _paper_drop(ctx, bearing_spec, config, params, out_dir, as_json, quiet) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing.drop import run_drop
+    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.paper.drop_paper import PAPER_DROP
+    from auxbearing.statics import stress_warning
+
     bearing, rotor, case = build_inputs(ctx, bearing_spec, config, params)
     # The output folder is checked before the integration, so a bad --out costs no run.
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
-        with _progress(quiet) as bar:
-            task = bar.add_task(f"drop on {bearing.name} (first run compiles)", total=1.0)
-            ds, summary = run_drop(bearing, rotor, case, progress=lambda f: bar.update(task, completed=f))
+        with ProgressReporter(f"drop on {bearing.name}", quiet) as progress:
+            ds, summary = run_drop(bearing, rotor, case, progress=progress)
         if tmp is not None:
             from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress
 
@@ -164,22 +183,122 @@ def drop_command(ctx, bearing_spec, config, params, out_dir, as_json, quiet):
             write_json(summary, tmp / "drop_summary.json", inputs)
     if out_dir is not None:
         summary = {**summary, "out": str(out_dir)}
-    warn(stress_warning(summary["peak_ball_stress_MPa"] * 1e6))
+    if summary["verdict"] != "ok":
+        warn(summary["reason"])
+    elif summary["peak_ball_stress_MPa"] is not None:
+        warn(stress_warning(summary["peak_ball_stress_MPa"] * 1e6))
     if as_json:
         echo_json(summary)
         return
     paper = PAPER_DROP.get(bearing.name, {})
     table = Table(title=f"Rotor drop on {bearing.name} ({bearing.label}), s = {case.clearance * 1e3:g} mm, "
                         f"μ1 = {case.sliding_friction:g}, {case.speed * 30 / 3.141592653589793:.0f} rpm")
-    table.add_column("quantity")
-    table.add_column("unit")
-    table.add_column("ours", justify="right")
-    table.add_column("paper", justify="right")
+    for col in ("quantity", "unit", "ours", *(["paper"] if paper else [])):
+        table.add_column(col, justify="right" if col in ("ours", "paper") else "left")
     for key, label, unit, fmt in _ROWS:
-        table.add_row(label, unit, _fmt(fmt, summary[key]), _fmt("{:g}", paper.get(key)))
+        row = [label, unit, _fmt(fmt, summary.get(key))]
+        table.add_row(*row, *([_fmt("{:g}", paper.get(key))] if paper else []))
     Console().print(table)
     if out_dir is not None:
         click.echo(f"Wrote {Path(out_dir) / 'drop.nc'}, figures and drop_summary.json in {out_dir}/")
+
+
+_PLANE_ROWS = (("peak_contact_force_N", "Peak collision force", "N", "{:.1f}"),
+               ("peak_ball_stress_MPa", "Peak ball contact stress", "MPa", "{:.1f}"),
+               ("s0", "Static safety factor s0 (ISO 76)", "-", "{:.2f}"),
+               ("peak_axial_force_N", "Peak axial (face) force", "N", "{:.1f}"),
+               ("final_contact_force_N", "Final collision force", "N", "{:.1f}"),
+               ("first_impact_ms", "First impact", "ms", "{:.3f}"),
+               ("impacts", "Impacts (contact onsets)", "-", "{}"),
+               ("whirl", "Whirl at the end", "", "{}"),
+               ("backward_whirl_onset_ms", "Onset of sustained backward whirl", "ms", "{:.1f}"),
+               ("max_mount_deflection_um", "Largest mount deflection", "µm", "{:.1f}"))
+
+
+def _machine_drop(spec: str, duration: str | None, out_dir: Path | None, as_json: bool, quiet: bool) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing.drop import run_machine
+    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.machine import read_machine
+    from auxbearing.units import to_si
+
+    machine = read_machine(spec)
+    seconds = None
+    if duration is not None:
+        seconds = to_si("--duration", duration, "time", "s")
+        if not 0.0 < seconds < 1e6:
+            raise InputError.for_field("--duration", duration, "must lie between 0 and 1e6 s")
+    with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
+        with ProgressReporter(f"drop of {machine.name}", quiet) as progress:
+            run = run_machine(machine, seconds, progress=progress)
+        summary = run.summary
+        if tmp is not None:
+            from auxbearing.plots.drop import machine_figures
+
+            inputs = machine.describe()
+            save_dataset(run.dataset, tmp / "drop.nc", inputs)
+            for name, fig in machine_figures(run.dataset, summary).items():
+                save_figure(fig, tmp / f"drop_{name}")
+            write_json(summary, tmp / "drop_summary.json", inputs)
+    if out_dir is not None:
+        summary = {**summary, "out": str(out_dir)}
+    if summary["verdict"] != "ok":
+        warn(f"verdict {summary['verdict']}: {summary['reason']}")
+    if as_json:
+        echo_json(summary)
+        return
+    table = Table(title=f"Drop of {machine.name}: verdict {summary['verdict']}")
+    table.add_column("quantity")
+    table.add_column("unit")
+    for plane in summary["planes"]:
+        table.add_column(plane["name"], justify="right")
+    for key, label, unit, fmt in _PLANE_ROWS:
+        table.add_row(label, unit, *(_fmt(fmt, p.get(key)) for p in summary["planes"]))
+    console = Console()
+    console.print(table)
+    console.print(f"simulated {summary['simulated_s'] * 1e3:.1f} ms in {summary['wall_time_s']:.2f} s "
+                  f"({summary['steps']} steps); energy balance error {summary['energy_balance_error']:.1e}",
+                  highlight=False)
+    if summary["reason"]:
+        console.print(f"[bold]{summary['reason']}[/bold]")
+    if out_dir is not None:
+        click.echo(f"Wrote drop.nc, drop_summary.json and the figures in {out_dir}/")
+
+
+@click.command("machines")
+@json_option()
+def machines_command(as_json):
+    """List the example machines shipped in the catalogue (use with drop --machine NAME)."""
+    import math
+
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing.machine import machine_names, read_machine
+
+    rows = []
+    for name in machine_names():
+        m = read_machine(name)
+        rows.append({"name": name, "title": m.name, "orientation": m.orientation, "mass_kg": m.rotor.mass,
+                     "speed_rpm": m.rotor.speed * 30.0 / math.pi,
+                     "planes": [{"name": p.name, "bearing": p.bearing.name,
+                                 "radial_clearance_mm": p.radial_clearance * 1e3,
+                                 "axial": p.catches_axially, "mount": p.mount is not None} for p in m.planes],
+                     "source": m.source})
+    if as_json:
+        echo_json({"machines": rows})
+        return
+    table = Table(title="Example machines (auxbearing drop --machine NAME)")
+    for col in ("name", "rotor", "speed", "planes"):
+        table.add_column(col)
+    for r in rows:
+        planes = "; ".join(f"{p['name']}: {p['bearing']}, s = {p['radial_clearance_mm']:g} mm"
+                           + (", axial" if p["axial"] else "") + (", mount" if p["mount"] else "")
+                           for p in r["planes"])
+        table.add_row(r["name"], f"{r['mass_kg']:g} kg, {r['orientation']}", f"{r['speed_rpm']:.0f} rpm", planes)
+    Console().print(table)
 
 
 def _list(name: str, text: str, dimension: str, unit: str | None) -> tuple[float, ...]:
@@ -215,6 +334,13 @@ def drop_compare_command(ctx, config, params, bearings, clearances, frictions, p
     drop_compare.json (peaks beside 618 N / 1483 MPa and 391 N / 1634 MPa, the paper's K_b read as
     N/mm^1.5, convergence checks and the parameters the paper leaves out).
     """
+    from dataclasses import replace
+
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing.paper.drop_paper import PAPER_DROP, drop_compare
+
     _, rotor, case = build_inputs(ctx, "QJ202", config, params)
     names = tuple(b.strip() for b in bearings.split(",") if b.strip())
     for name in names:
@@ -226,11 +352,11 @@ def drop_compare_command(ctx, config, params, bearings, clearances, frictions, p
     for mu in mu_list:
         check(next(p for p in PARAMETERS if p.key == "sliding_friction"), mu, "--frictions")
     phase_list = _list("--phases", phases, "angle", "deg")
-    with _progress(quiet) as bar:
-        task = bar.add_task("drop-compare (first run compiles)", total=1.0)
+    if not names:
+        raise InputError.for_field("--bearings", bearings, "needs at least one catalogue bearing")
+    with ProgressReporter("drop-compare", quiet) as progress:
         result = drop_compare(out_dir, names, s_list, mu_list, rotor, replace(case), checks,
-                              progress=lambda label, f: bar.update(task, completed=f, description=label),
-                              phases=phase_list)
+                              progress=lambda label, f: progress(f, label), phases=phase_list)
     if as_json:
         echo_json({**result, "out": str(out_dir)})
         return
@@ -249,4 +375,4 @@ def drop_compare_command(ctx, config, params, bearings, clearances, frictions, p
     click.echo(f"Wrote the comparison, sweep and figures in {out_dir}/ ({result['wall_time_s']:.1f} s)")
 
 
-COMMANDS = [drop_command, drop_compare_command]
+COMMANDS = [drop_command, machines_command, drop_compare_command]

@@ -11,24 +11,14 @@ import math
 from pathlib import Path
 
 import click
-import pint
-from rich.console import Console
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
-from rich.table import Table
 
-from auxbearing.bearing import bearing_names
+from auxbearing.catalog import bearing_names
 from auxbearing.cli.common import echo_json, json_option, out_option, quantity, resolve_bearing
-from auxbearing.drop import DropCase, Rotor, read_config
 from auxbearing.errors import InputError
-from auxbearing.experiment.fit import FitOptions
-from auxbearing.experiment.io import read_measured
-from auxbearing.experiment.orbit import Preprocessing
-from auxbearing.experiment.run import run_experiment
-from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
-from auxbearing.units import to_si, ureg
 
 
 def _offset(text: str) -> str | tuple[float, float]:
+    from auxbearing.units import to_si
     if text in ("auto", "fit", "start"):
         return text
     parts = text.split(",")
@@ -74,6 +64,16 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     experiment_*.png and experiment_summary.json (peaks side by side, fitted parameters with
     their standard errors, recovered vs true values for a SYNTHETIC file).
     """
+    from rich.console import Console
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from auxbearing.drop import DropCase, Rotor, read_config
+    from auxbearing.experiment.fit import FitOptions
+    from auxbearing.experiment.io import read_measured
+    from auxbearing.experiment.orbit import Preprocessing
+    from auxbearing.experiment.run import run_experiment
+    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.units import to_si
     unit_map = {}
     for item in units:
         channel, sep, unit = item.partition("=")
@@ -114,6 +114,9 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
 
 def _frequency(text: str) -> float:
     """A cutoff frequency in Hz ('8 kHz', '8000'); units.SI_UNITS has no frequency, so pint directly."""
+    import pint
+
+    from auxbearing.units import ureg
     try:
         q = ureg.Quantity(text.strip())
         value = float(q.to("Hz").magnitude) if isinstance(q, pint.Quantity) and not q.dimensionless else float(
@@ -126,6 +129,9 @@ def _frequency(text: str) -> float:
 
 
 def _print(summary: dict, out_dir: Path) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
     console = Console()
     if summary["synthetic"]:
         console.print("[bold]Note: this record is SYNTHETIC (made by the simulation), not a measurement.[/bold]")

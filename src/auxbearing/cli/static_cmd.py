@@ -6,11 +6,7 @@ import contextlib
 from pathlib import Path
 
 import click
-from rich.console import Console
-from rich.progress import Progress
-from rich.table import Table
 
-from auxbearing import __version__
 from auxbearing.cli.common import (
     bearing_option,
     checked_out_dir,
@@ -21,16 +17,11 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
-from auxbearing.io import atomic_output_dir, save_dataset, write_json
-from auxbearing.paper.static_paper import static_study
-from auxbearing.static_cases import RESULT_COLUMNS, case_rows, load_cases, worst_case, write_rows_csv
-from auxbearing.statics import (
-    AXIAL_CONDITIONS,
-    TILT_CONDITIONS,
-    load_distribution,
-    summary,
-    validity_warnings,
-)
+
+#: The choices of :data:`auxbearing.statics.AXIAL_CONDITIONS` and ``TILT_CONDITIONS``, repeated here so that
+#: ``--help`` needs no numerics (a test keeps them equal).
+AXIAL_CONDITIONS = ("free", "located")
+TILT_CONDITIONS = ("free", "fixed")
 
 
 def _condition_options(command):
@@ -67,6 +58,14 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     ring displacements, per-ball pair loads, loaded contact angles, Hertz max stresses and the
     static safety factor s0 = (4200 MPa / σ_max)^3 (ISO 76:2006 with Hertz σ ~ Q^(1/3)).
     """
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing.statics import (
+        load_distribution,
+        summary,
+        validity_warnings,
+    )
     bearing = resolve_bearing(bearing_spec)
     loads = {
         "axial": quantity("--axial", axial, "force", "N"),
@@ -119,6 +118,9 @@ def static_study_command(bearing_4pt, bearing_ac, out_dir, as_json):
     (displacements over an axial x radial load grid), fig8.nc (max stress against radial load,
     four-point versus angular contact), stribeck.nc, the three figures and static_summary.json.
     """
+    from rich.progress import Progress
+
+    from auxbearing.paper.static_paper import static_study
     four = resolve_bearing(bearing_4pt)
     angular = resolve_bearing(bearing_ac)
     with Progress(transient=True, disable=as_json) as bar:
@@ -159,6 +161,12 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
     s0, names the worst case, and flags cases outside the model's range (stderr). Missing
     columns are zero; the CSV format is that of a measured drop (units in brackets, '#' comments).
     """
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing import __version__
+    from auxbearing.io import atomic_output_dir, save_dataset, write_json
+    from auxbearing.static_cases import RESULT_COLUMNS, case_rows, load_cases, worst_case, write_rows_csv
     bearing = resolve_bearing(bearing_spec)
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
         ds = load_cases(bearing, loads_path, axial_condition=axial_condition, tilt=tilt,
