@@ -72,7 +72,7 @@ def _warm_up(model) -> float:
     memory = ig.new_memory(0.0, 1e-7, y.size)
     watch = cw.new_watch(y.size, 1.0, 1, model.energy0)
     drive.advance(model.machine, watch, y, 1e-6, model.settings, memory, np.empty((0, y.size)))
-    probes.series(np.zeros((1, y.size)), model.machine)
+    probes.series(np.zeros((1, y.size)), model.machine, True)
     _WARM.add("machine")
     return time.perf_counter() - start
 
@@ -155,7 +155,7 @@ def _integrate(machine: Machine, duration: float, output_step: float | None,
 
 
 def run_machine(machine: Machine, duration: float | None = None,
-                progress: Callable[[float, str], None] | None = None) -> MachineRun:
+                progress: Callable[[float, str], None] | None = None, lean: bool = False) -> MachineRun:
     """Integrate a machine's touchdown and summarise it (module docstring).
 
     Parameters
@@ -165,6 +165,8 @@ def run_machine(machine: Machine, duration: float | None = None,
         Simulated time [s]; default ``machine.simulation.duration``.
     progress : callable, optional
         Called with (fraction done, a short status line) after every slice of 20 000 steps.
+    lean : bool
+        Keep only what the summary needs: no per-ball arrays and no stress time series (campaigns).
 
     Returns
     -------
@@ -172,7 +174,7 @@ def run_machine(machine: Machine, duration: float | None = None,
     """
     duration = machine.simulation.duration if duration is None else float(duration)
     run = _integrate(machine, duration, None, progress)
-    ds = _dataset(machine, run.model, run.grid, run.output_step)
+    ds = _dataset(machine, run.model, run.grid, run.output_step, lean)
     summary = _summary(machine, run, ds, duration)
     ds.attrs["summary"] = json.dumps(to_jsonable(summary))
     return MachineRun(ds, summary)
@@ -230,7 +232,7 @@ _DIAG_SERIES = {
 }
 
 
-def _dataset(machine: Machine, model, grid: np.ndarray, out_step: float) -> xr.Dataset:
+def _dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: bool = False) -> xr.Dataset:
     n = grid.shape[0]
     n_planes = len(machine.planes)
     t = np.arange(n) * out_step
@@ -246,17 +248,18 @@ def _dataset(machine: Machine, model, grid: np.ndarray, out_step: float) -> xr.D
                          {"units": "m", "long_name": "Journal centre x at the plane"})
     data["journal_y"] = (("time", "plane"), grid[:, [cm.Y]] - positions * grid[:, [cm.TX]],
                          {"units": "m", "long_name": "Journal centre y at the plane"})
-    diag = probes.series(grid, model.machine)[:, :n_planes]
+    diag = probes.series(grid, model.machine, not lean)[:, :n_planes]
     for i, name in enumerate(cm.DIAG_FIELDS):
         unit, long_name = _DIAG_SERIES[name]
         data[name] = (("time", "plane"), diag[:, :, i], {"units": unit, "long_name": long_name})
-    data["max_ball_stress"] = (("time", "plane"), diag[:, :, len(cm.DIAG_FIELDS)],
-                               {"units": "Pa", "long_name": "Hertz max stress of the most loaded ball contact"})
+    if not lean:
+        data["max_ball_stress"] = (("time", "plane"), diag[:, :, len(cm.DIAG_FIELDS)],
+                                   {"units": "Pa", "long_name": "Hertz max stress of the most loaded ball contact"})
     coords = {"time": ("time", t, {"units": "s", "long_name": "Time since the drop"}),
               "plane": ("plane", [p.name for p in machine.planes])}
     for k, plane in enumerate(machine.planes):
         bs = model.machine.ballsets[k]
-        if n * bs.cos_azimuth.size * bs.signs.size > MAX_BALL_SERIES:
+        if lean or n * bs.cos_azimuth.size * bs.signs.size > MAX_BALL_SERIES:
             continue
         b = cm.N_ROTOR + k * cm.N_PLANE
         disp = np.zeros((n, 5))

@@ -96,8 +96,11 @@ def orbit(y, m, k):
 
 
 @njit(cache=True)
-def series(grid, m):
-    """Per output instant and plane: the diagnostics and the largest ball stress, (n, 2, len(DIAG_FIELDS) + 1)."""
+def series(grid, m, with_stress):
+    """Per output instant and plane: the diagnostics and the largest ball stress, (n, 2, len(DIAG_FIELDS) + 1).
+
+    Without ``with_stress`` the stress column is left at zero (a summary that needs no time series of it).
+    """
     n = grid.shape[0]
     out = np.zeros((n, MAX_PLANES, len(DIAG_FIELDS) + 1))
     for i in range(n):
@@ -105,5 +108,6 @@ def series(grid, m):
             if m.planes.active[k] <= 0.0:
                 continue
             out[i, k, :len(DIAG_FIELDS)] = plane_diagnostics(grid[i], m, k)
-            out[i, k, len(DIAG_FIELDS)] = ball_extremes(grid[i], m, k)[0]
+            if with_stress:
+                out[i, k, len(DIAG_FIELDS)] = ball_extremes(grid[i], m, k)[0]
     return out
