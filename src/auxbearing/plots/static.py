@@ -1,6 +1,9 @@
 """Figures of the static study in the manner of Fig. 6, 7 and 8 of the source paper.
 
-Each function returns a :class:`matplotlib.figure.Figure` and touches no global state.
+A function that draws one panel takes ``ax=None``: given an axes it draws there and returns
+that axes' figure, otherwise it makes a new :class:`matplotlib.figure.Figure`. The
+multi-panel figures take ``fig=None`` and are built from the one-panel functions. Nothing
+global changes.
 """
 
 from __future__ import annotations
@@ -9,9 +12,12 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from auxbearing.plots._axes import axes_for, figure_for
 from auxbearing.statics import ISO76_BALL_STRESS
 
 _MARKERS = "osd^v<>"
+#: Load levels a displacement panel draws by default (evenly picked from the grid).
+DEFAULT_LEVELS = 5
 
 
 def _position_order(ds: xr.Dataset) -> tuple[np.ndarray, np.ndarray]:
@@ -21,87 +27,132 @@ def _position_order(ds: xr.Dataset) -> tuple[np.ndarray, np.ndarray]:
     return phi[order], order
 
 
-def _angle_panel(ax, ds: xr.Dataset, pair: int, label_var: str, label_unit: str) -> None:
-    phi, order = _position_order(ds)
-    for i in range(ds.sizes["case"]):
-        angle = np.degrees(ds["contact_angle"].isel(case=i, pair=pair - 1).values[order])
-        loaded = ds["load"].isel(case=i, pair=pair - 1).values[order] > 0.0
-        value = float(ds[label_var].isel(case=i))
-        line = ax.plot(phi, angle, marker=_MARKERS[i % len(_MARKERS)], markersize=4,
-                       label=f"{value:g} {label_unit}")[0]
+def _swept(ds: xr.Dataset) -> str:
+    """The load that changes from case to case (radial unless only the axial one does)."""
+    varies = {name: np.ptp(np.atleast_1d(ds[name].values)) > 0.0 for name in ("radial_load", "axial_load")}
+    return "axial_load" if varies["axial_load"] and not varies["radial_load"] else "radial_load"
+
+
+def plot_contact_angle_profile(sweep: xr.Dataset, pair: int = 1, ax=None) -> Figure:
+    """One panel of Fig. 6: loaded contact angle of one pair [deg] along the position angle [deg].
+
+    One line per load case, labelled by the swept load (radial, or axial when only it varies);
+    open markers: the pair carries nothing at that position.
+
+    Parameters
+    ----------
+    sweep : xarray.Dataset
+        :func:`auxbearing.statics.load_distribution` over several cases.
+    pair : {1, 2}
+        Contact pair of the four-point ball.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw in; default a new figure.
+    """
+    fig, ax = axes_for(ax, (6, 4))
+    var = _swept(sweep)
+    fixed = "axial_load" if var == "radial_load" else "radial_load"
+    phi, order = _position_order(sweep)
+    for i in range(sweep.sizes["case"]):
+        marker = _MARKERS[i % len(_MARKERS)]
+        angle = np.degrees(sweep["contact_angle"].isel(case=i, pair=pair - 1).values[order])
+        loaded = sweep["load"].isel(case=i, pair=pair - 1).values[order] > 0.0
+        value = float(sweep[var].isel(case=i))
+        line = ax.plot(phi, angle, marker=marker, markersize=4, label=f"{value:g} N")[0]
         # open markers: the pair is not compressed (carries nothing) at that position
-        ax.plot(phi[~loaded], angle[~loaded], linestyle="none", marker=_MARKERS[i % len(_MARKERS)],
-                markersize=6, markerfacecolor="white", color=line.get_color())
+        ax.plot(phi[~loaded], angle[~loaded], linestyle="none", marker=marker, markersize=6,
+                markerfacecolor="white", color=line.get_color())
     ax.set_xlabel("Position angle φ [deg]")
     ax.set_ylabel(f"Contact angle α{pair} [deg]")
     ax.set_xticks(np.arange(-180, 181, 60))
     ax.grid(alpha=0.3)
+    ax.legend(title=var.replace("_", " "), fontsize=8)
+    fixed_value = float(np.atleast_1d(sweep[fixed].values)[0])
+    ax.set_title(f"pair {pair}, {fixed.replace('_', ' ')} {fixed_value:g} N", loc="left")
+    return fig
 
 
-def plot_contact_angles(radial_sweep: xr.Dataset, axial_sweep: xr.Dataset) -> Figure:
+def plot_contact_angles(radial_sweep: xr.Dataset, axial_sweep: xr.Dataset, fig=None) -> Figure:
     """Loaded contact angle of pair 1 and pair 2 along the position angle (source paper Fig. 6).
 
     (a), (b): pairs 1 and 2 for several radial loads at a fixed axial load; (c), (d): pairs 1
     and 2 for several axial loads at a fixed radial load. Open markers: pair not loaded.
     """
-    fig = Figure(figsize=(10, 7.5), layout="constrained")
+    fig = figure_for(fig, (10, 7.5))
     axes = fig.subplots(2, 2)
-    fa = float(radial_sweep["axial_load"][0])
-    fr = float(axial_sweep["radial_load"][0])
-    panels = ((radial_sweep, 1, "radial_load", f"(a) pair 1, axial load {fa:g} N"),
-              (radial_sweep, 2, "radial_load", f"(b) pair 2, axial load {fa:g} N"),
-              (axial_sweep, 1, "axial_load", f"(c) pair 1, radial load {fr:g} N"),
-              (axial_sweep, 2, "axial_load", f"(d) pair 2, radial load {fr:g} N"))
-    for ax, (ds, pair, var, title) in zip(axes.ravel(), panels, strict=True):
-        _angle_panel(ax, ds, pair, var, "N")
-        ax.set_title(title, loc="left")
-        ax.legend(title="radial load" if var == "radial_load" else "axial load", fontsize=8)
+    panels = ((radial_sweep, 1), (radial_sweep, 2), (axial_sweep, 1), (axial_sweep, 2))
+    for label, ax, (ds, pair) in zip("abcd", axes.ravel(), panels, strict=True):
+        plot_contact_angle_profile(ds, pair, ax=ax)
+        ax.set_title(f"({label}) {ax.get_title(loc='left')}", loc="left")
     bearing = radial_sweep.attrs.get("title", "").split(", ")[-1]
     fig.suptitle(f"Fig. 6: contact angle along the position angle, {bearing}")
     return fig
 
 
-def plot_displacements(fig7: xr.Dataset, levels: int = 5) -> Figure:
+def _picks(n: int, levels: int) -> np.ndarray:
+    """About ``levels`` indices spread evenly over 0..n-1."""
+    return np.unique(np.linspace(0, n - 1, levels).round().astype(int))
+
+
+def plot_axial_displacement(fig7: xr.Dataset, levels: int = DEFAULT_LEVELS, ax=None) -> Figure:
+    """Fig. 7 (a): axial ring displacement [µm] against axial load [N], one line per radial load.
+
+    ``fig7`` holds ``axial_displacement`` [m] over (``axial_load``, ``radial_load``) [N]
+    (:func:`auxbearing.paper.static_paper.static_study`'s ``fig7``).
+    """
+    fig, ax = axes_for(ax, (5, 4))
+    fa = fig7["axial_load"].values
+    fr = fig7["radial_load"].values
+    for k, j in enumerate(_picks(fr.size, levels)):
+        ax.plot(fa, fig7["axial_displacement"].values[:, j] * 1e6, marker=_MARKERS[k % len(_MARKERS)], markevery=4,
+                markersize=4, label=f"Fr = {fr[j]:g} N")
+    ax.set_xlabel("Axial load Fa [N]")
+    ax.set_ylabel("Axial displacement δa [µm]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_radial_displacement(fig7: xr.Dataset, levels: int = DEFAULT_LEVELS, ax=None) -> Figure:
+    """Fig. 7 (b): radial ring displacement [µm] against radial load [N], one line per axial load."""
+    fig, ax = axes_for(ax, (5, 4))
+    fa = fig7["axial_load"].values
+    fr = fig7["radial_load"].values
+    for k, i in enumerate(_picks(fa.size, levels)):
+        ax.plot(fr, fig7["radial_displacement"].values[i, :] * 1e6, marker=_MARKERS[k % len(_MARKERS)], markevery=4,
+                markersize=4, label=f"Fa = {fa[i]:g} N")
+    ax.set_xlabel("Radial load Fr [N]")
+    ax.set_ylabel("Radial displacement δr [µm]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_displacements(fig7: xr.Dataset, levels: int = DEFAULT_LEVELS, fig=None) -> Figure:
     """Axial and radial ring displacement against axial and radial load (source paper Fig. 7).
 
     (a) axial displacement against axial load, one line per radial load; (b) radial
     displacement against radial load, one line per axial load.
     """
-    fig = Figure(figsize=(10, 4), layout="constrained")
+    fig = figure_for(fig, (10, 4))
     ax_a, ax_r = fig.subplots(1, 2)
-    fa = fig7["axial_load"].values
-    fr = fig7["radial_load"].values
-    pick_r = np.unique(np.linspace(0, fr.size - 1, levels).round().astype(int))
-    pick_a = np.unique(np.linspace(0, fa.size - 1, levels).round().astype(int))
-    for k, j in enumerate(pick_r):
-        ax_a.plot(fa, fig7["axial_displacement"].values[:, j] * 1e6, marker=_MARKERS[k % 7], markevery=4,
-                  markersize=4, label=f"Fr = {fr[j]:g} N")
-    for k, i in enumerate(pick_a):
-        ax_r.plot(fr, fig7["radial_displacement"].values[i, :] * 1e6, marker=_MARKERS[k % 7], markevery=4,
-                  markersize=4, label=f"Fa = {fa[i]:g} N")
-    ax_a.set_xlabel("Axial load Fa [N]")
-    ax_a.set_ylabel("Axial displacement δa [µm]")
-    ax_r.set_xlabel("Radial load Fr [N]")
-    ax_r.set_ylabel("Radial displacement δr [µm]")
+    plot_axial_displacement(fig7, levels, ax=ax_a)
+    plot_radial_displacement(fig7, levels, ax=ax_r)
     for label, ax in zip("ab", (ax_a, ax_r), strict=True):
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
         ax.set_title(f"({label})", loc="left")
     fig.suptitle(fig7.attrs.get("title", "Fig. 7: displacements"))
     return fig
 
 
-def plot_max_stress(fig8: xr.Dataset) -> Figure:
-    """Max Hertz contact stress against radial load, one line per bearing (source paper Fig. 8)."""
-    fig = Figure(figsize=(6.5, 4.5), layout="constrained")
-    ax = fig.subplots()
+def plot_max_stress(fig8: xr.Dataset, ax=None) -> Figure:
+    """Max Hertz contact stress [MPa] against radial load [N], one line per bearing (source paper Fig. 8)."""
+    fig, ax = axes_for(ax, (6.5, 4.5))
     r = fig8["radial_load"].values
     for k, name in enumerate(fig8["bearing"].values):
         kind = str(fig8["type"].values[k]).replace("_", "-")
-        ax.plot(r, fig8["max_stress"].values[k] / 1e6, marker=_MARKERS[k], markevery=4, markersize=4,
-                label=f"{name} ({kind})")
+        ax.plot(r, fig8["max_stress"].values[k] / 1e6, marker=_MARKERS[k % len(_MARKERS)], markevery=4,
+                markersize=4, label=f"{name} ({kind})")
     ax.axhline(ISO76_BALL_STRESS / 1e6, color="grey", linestyle="--", linewidth=1,
-               label="ISO 76 permissible 4200 MPa (s0 = 1)")
+               label=f"ISO 76 permissible {ISO76_BALL_STRESS / 1e6:g} MPa (s0 = 1)")
     ax.set_xlabel("Radial load Fr [N]")
     ax.set_ylabel("Maximum contact stress σ_max [MPa]")
     ax.set_ylim(bottom=0.0)
