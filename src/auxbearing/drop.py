@@ -373,13 +373,13 @@ def _summary(machine: Machine, run: _Integration, ds: xr.Dataset, duration: floa
             "line_stiffness_N_per_m10_9": plane.line_stiffness,
             "defaults_used": list(plane.defaults),
         })
-    energy_in, accounted = cm.energy_balance(run.y, model.machine, model.energy0)
+    energy_in, accounted, scale = cm.energy_balance(run.y, model.machine, model.energy0)
     out = {
         "machine": machine.name, "verdict": verdict, "reason": reason, "simulated_s": t_end,
         "duration_s": duration, "wall_time_s": run.wall, "compile_or_cache_load_s": run.compile_s,
         "steps": int(memory.steps[0]), "rejected_steps": int(memory.rejected[0]),
         "rhs_evaluations": int(memory.evaluations[0]),
-        "energy_balance_error": float((accounted - energy_in) / max(abs(energy_in), 1e-300)),
+        "energy_balance_error": float((accounted - energy_in) / max(scale, 1e-300)),
         "largest_energy_error": float(watch.energy_error[0]),
         "final_rotor_speed_rad_s": float(ds.rotor_speed.values[-1]), "planes": planes,
         "output_step_s": run.output_step, "output_decimated": run.decimated,

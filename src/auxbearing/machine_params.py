@@ -127,7 +127,7 @@ SIMULATION: tuple[Param, ...] = (
           "Largest Hertz half-width of the journal/race contact, as a fraction of the journal radius",
           "ours: the half-space assumption behind the line-contact law fails as the contact wraps"),
     Param("drop", "energy_tolerance", "dimensionless", 1e-3, "", "unit_interval",
-          "Energy gain, relative to the energy brought in, that stops a run as a numerical run-away", "ours"),
+          "Energy gain, relative to the energies in play, that stops a run as a numerical run-away", "ours"),
 )
 
 TABLES = {"rotor": by_key(ROTOR, "rotor"), "touchdown": by_key(TOUCHDOWN, "touchdown"),

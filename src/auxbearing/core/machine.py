@@ -506,9 +506,17 @@ def energy(y, m):
 
 @njit(cache=True, inline="always")
 def energy_balance(y, m, e0):
-    """(energy in, energy accounted for) [J]: e0 + work in  vs  mechanical + ball sets + heat + drag loss."""
+    """Energy in, energy accounted for and their scale [J].
+
+    In: e0 (mechanical energy at the start) + work of the process forces. Accounted: mechanical energy
+    now + energy stored in the ball sets + heat + drag loss. Scale: the sum of the magnitudes of every
+    term, so the relative error means something when the start energy is near zero (a rotor at rest).
+    """
     kinetic, potential = energy(y, m)
     heat = 0.0
     for i in range(HEAT_AT, N_STATE):
         heat += y[i]
-    return e0 + y[W_IN], kinetic + potential + y[BALLSET_WORK] + y[DRAG_LOSS] + heat
+    energy_in = e0 + y[W_IN]
+    accounted = kinetic + potential + y[BALLSET_WORK] + y[DRAG_LOSS] + heat
+    scale = abs(e0) + abs(y[W_IN]) + kinetic + abs(potential) + abs(y[BALLSET_WORK]) + abs(y[DRAG_LOSS]) + abs(heat)
+    return energy_in, accounted, scale

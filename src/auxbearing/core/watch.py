@@ -73,7 +73,7 @@ class Watch(NamedTuple):
     first_contact: np.ndarray  #: (2,) [s], -1 before
     stop: np.ndarray  #: (4,) code, plane, time [s], value
     energy_in0: np.ndarray  #: (1,) mechanical energy at the start [J]
-    energy_error: np.ndarray  #: (2,) largest |accounted - in| / in seen, and the last one
+    energy_error: np.ndarray  #: (2,) largest |accounted - in| / scale seen, and the last one (see energy_balance)
     window: np.ndarray  #: (1,) length of a whirl window [s]
     window_count: np.ndarray  #: (1,) int64, closed windows
     window_end: np.ndarray  #: (1,) end time of the open window [s]
@@ -205,8 +205,8 @@ def observe(t, h, y0, y1, coeff, m, w):
             elif abs(y1[N_ROTOR + k * N_PLANE + RZ]) > lim.race_axial_travel[k]:
                 code = _stop(w, AXIAL_RUNAWAY, k, t + h, y1[N_ROTOR + k * N_PLANE + RZ])
     _whirl_step(w, y0, y1, m, t, h, diags)
-    energy_in, accounted = energy_balance(y1, m, w.energy_in0[0])
-    error = (accounted - energy_in) / max(abs(energy_in), 1e-300)
+    energy_in, accounted, scale = energy_balance(y1, m, w.energy_in0[0])
+    error = (accounted - energy_in) / max(scale, 1e-300)
     w.energy_error[1] = error
     w.energy_error[0] = max(w.energy_error[0], abs(error))
     if code == 0 and error > lim.energy_tolerance:

@@ -1,0 +1,341 @@
+"""A campaign file: a machine plus a ``[campaign]`` table of uncertain inputs, checked before any work.
+
+The file holds the tables of a machine TOML file (``[machine]``, ``[rotor]``, ``[[touchdown]]``,
+``[drop]``), or ``machine = "<catalogue name or file>"`` in ``[campaign]`` with any of those tables
+laid over it (``[drop] duration = "20 ms"`` shortens every run), and::
+
+    [campaign]
+    sampler = "sobol"        # sobol, lhs, random (scipy.stats.qmc) or saltelli (SALib, for Sobol indices)
+    samples = 256            # rows of the design; for saltelli the base count N (N (D + 2) runs)
+    seed = 1
+    analysis = "drop"        # or "coastdown"
+    [[campaign.input]]
+    key = "rotor.unbalance_phase"           # rotor.<key>, drop.<key>, touchdown.<plane>.<key>, touchdown.*.<key>
+    distribution = "uniform"                # uniform, normal, lognormal, truncated_normal or list
+    low = "0 deg"
+    high = "360 deg"
+
+Every mistake is one :class:`~auxbearing.errors.InputError` line naming the key: an unknown table or
+key, a dotted key that names nothing, a distribution with impossible parameters, a distribution whose
+bounded support breaks the input's rule, or a central sample that is no valid machine.
+"""
+
+from __future__ import annotations
+
+import copy
+import hashlib
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from auxbearing.campaign.distributions import Distribution, distribution_from_table, share_outside_rule
+from auxbearing.errors import InputError
+from auxbearing.machine_params import TABLES, TOUCHDOWN_TEXT
+from auxbearing.params import Param, si_unit
+
+SAMPLERS = ("sobol", "lhs", "random", "saltelli")
+ANALYSES = ("drop", "coastdown")
+MACHINE_TABLES = ("machine", "rotor", "touchdown", "drop")
+CAMPAIGN_KEYS = ("machine", "sampler", "samples", "seed", "analysis", "input", "batch_size", "required_s0",
+                 "second_order", "whirl_map")
+#: Required static safety factor when the file gives none: s0 = 1 is where the peak ball stress reaches
+#: ISO 76's 4200 MPa reference, i.e. a permanent set of 1e-4 of the ball diameter (ISO 76:2006, Sec. 6.1).
+DEFAULT_REQUIRED_S0 = 1.0
+#: Most runs one campaign may hold (a guard against a typo such as samples = 1e9).
+MAX_RUNS = 10_000_000
+#: A batch is sized so that a campaign has about this many tasks (load balance and progress) ...
+TARGET_BATCHES = 64
+#: ... and holds at most this many samples (a lost worker loses little).
+MAX_BATCH = 32
+#: An unbounded distribution that puts more than this share of its samples outside the input's rule
+#: is reported in the campaign's notes (those samples become ``invalid_input`` records).
+OUTSIDE_NOTE = 1e-6
+
+
+@dataclass(frozen=True)
+class CampaignInput:
+    """One uncertain input: the dotted key, where it lives in the machine tables, its row and distribution."""
+
+    key: str
+    section: str  #: "rotor", "drop" or "touchdown"
+    name: str  #: key in the table
+    planes: tuple[int, ...]  #: planes it sets (touchdown only; ``touchdown.*`` sets them all)
+    param: Param
+    distribution: Distribution
+
+    @property
+    def unit(self) -> str:
+        """SI unit of the values."""
+        return si_unit(self.param.dimension)
+
+
+@dataclass(frozen=True)
+class Campaign:
+    """A checked campaign: machine tables, design settings and inputs (SI)."""
+
+    name: str
+    tables: dict  #: the machine's TOML tables (values with units), overlays applied
+    base: str | None  #: folder for relative bearing files of the machine tables
+    sampler: str
+    samples: int
+    seed: int
+    analysis: str
+    inputs: tuple[CampaignInput, ...]
+    batch_size: int
+    plane_names: tuple[str, ...]
+    second_order: bool = False
+    required_s0: float = DEFAULT_REQUIRED_S0
+    whirl_map: tuple[str, str] | None = None
+    notes: tuple[str, ...] = field(default=(), compare=False)
+
+    @property
+    def runs(self) -> int:
+        """Rows of the design: ``samples``, or N (D + 2) (N (2D + 2) with second order) for saltelli."""
+        if self.sampler != "saltelli":
+            return self.samples
+        d = len(self.inputs)
+        return self.samples * ((2 * d + 2) if self.second_order else (d + 2))
+
+    @property
+    def keys(self) -> tuple[str, ...]:
+        """Dotted keys of the inputs."""
+        return tuple(i.key for i in self.inputs)
+
+    def describe(self) -> dict:
+        """Everything that fixes the samples and their results (JSON-able, SI)."""
+        return {"name": self.name, "tables": self.tables, "base": self.base, "sampler": self.sampler,
+                "samples": self.samples, "runs": self.runs, "seed": self.seed, "analysis": self.analysis,
+                "second_order": self.second_order, "batch_size": self.batch_size,
+                "inputs": [{"key": i.key, "unit": i.unit, **i.distribution.describe()} for i in self.inputs]}
+
+    def fingerprint(self) -> str:
+        """A hash of :meth:`describe`: a store holds results of exactly one fingerprint."""
+        text = json.dumps(self.describe(), sort_keys=True, default=str)
+        return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def read_campaign(path: str | Path) -> Campaign:
+    """A campaign from a TOML file (module docstring)."""
+    from auxbearing.bearing import read_toml
+
+    path = Path(path)
+    return campaign_from_mapping(read_toml(path), path.stem, path.parent)
+
+
+def _integer(table: dict, key: str, default: int | None, low: int, high: int) -> int:
+    value = table.get(key, default)
+    if value is None:
+        raise InputError(f"campaign.{key}: missing; give a whole number")
+    if isinstance(value, float) and value.is_integer():
+        value = int(value)
+    if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+        raise InputError.for_field(f"campaign.{key}", value, f"must be a whole number from {low} to {high}")
+    return value
+
+
+def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Path | None]:
+    """The machine's raw tables: ``campaign.machine`` (catalogue or file) with the file's tables laid over."""
+    import tomllib
+    from importlib import resources
+
+    from auxbearing.bearing import read_toml
+    from auxbearing.machine import machine_names
+
+    tables: dict = {}
+    spec = head.get("machine")
+    if spec is not None:
+        if not isinstance(spec, str) or not spec.strip():
+            raise InputError.for_field("campaign.machine", spec, "must be a catalogue name or a machine file")
+        spec = spec.strip()
+        if spec in machine_names():
+            text = resources.files("auxbearing.catalog").joinpath("machines", f"{spec}.toml").read_text()
+            tables = tomllib.loads(text)
+        else:
+            path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
+            if not path.is_file():
+                raise InputError.for_field("campaign.machine", spec, "neither a file nor a catalogue machine ("
+                                           + ", ".join(machine_names()) + ")")
+            tables = read_toml(path)
+            base = path.parent
+        tables.setdefault("machine", {}).setdefault("name", spec)
+    for key in MACHINE_TABLES:
+        if key not in data:
+            continue
+        over = data[key]
+        if key == "touchdown":
+            if not isinstance(over, list):
+                raise InputError.for_field("touchdown", over, "give [[touchdown]] tables")
+            planes = list(tables.get("touchdown", []))
+            for k, table in enumerate(over):
+                planes[k:k + 1] = [{**(planes[k] if k < len(planes) else {}), **table}]
+            tables["touchdown"] = planes
+        elif isinstance(over, dict):
+            tables[key] = {**tables.get(key, {}), **over}
+        else:
+            raise InputError.for_field(key, over, "must be a table")
+    if not tables:
+        raise InputError("campaign.machine: missing; give machine = NAME (or a file) or the machine tables "
+                         "[rotor], [[touchdown]] in the campaign file")
+    return tables, base
+
+
+def resolve_key(key: object, n_planes: int, where: str) -> tuple[str, str, tuple[int, ...], Param]:
+    """Section, name, planes and parameter row of a dotted key; a one-line error when it names nothing.
+
+    >>> resolve_key("touchdown.0.sliding_friction", 1, "campaign.input.0")[:3]
+    ('touchdown', 'sliding_friction', (0,))
+    >>> resolve_key("touchdown.1.sliding_friction", 1, "campaign.input.0")
+    Traceback (most recent call last):
+    ...
+    auxbearing.errors.InputError: campaign.input.0.key = 'touchdown.1.sliding_friction': names nothing: \
+the machine has 1 touchdown plane (touchdown.0)
+    """
+    if not isinstance(key, str) or not key.strip():
+        raise InputError.for_field(where + ".key", key, "give a dotted key such as 'rotor.unbalance_phase'")
+    parts = key.strip().split(".")
+    field_ = where + ".key"
+    section = parts[0]
+    shape = {"rotor": "rotor.<key>", "drop": "drop.<key>", "touchdown": "touchdown.<plane>.<key>"}
+    if section not in TABLES:
+        raise InputError.for_field(field_, key, "names nothing a campaign can vary; keys start with rotor., "
+                                   "drop. or touchdown.<plane>.")
+    depth = 3 if section == "touchdown" else 2
+    if len(parts) != depth or not all(parts):
+        raise InputError.for_field(field_, key, f"names nothing: write {shape[section]}")
+    name = parts[-1]
+    if section == "touchdown" and name in TOUCHDOWN_TEXT:
+        raise InputError.for_field(field_, key, "names a text, not a quantity; a campaign varies numbers")
+    if name not in TABLES[section]:
+        raise InputError.for_field(field_, key, f"unknown key; allowed keys of [{section}]: "
+                                   + ", ".join(TABLES[section]))
+    planes: tuple[int, ...] = ()
+    if section == "touchdown":
+        index = parts[1]
+        listed = ", ".join(f"touchdown.{k}" for k in range(n_planes))
+        count = f"{n_planes} touchdown plane{'s' if n_planes != 1 else ''}"
+        if index == "*":
+            planes = tuple(range(n_planes))
+        elif index.isdigit() and int(index) < n_planes:
+            planes = (int(index),)
+        else:
+            raise InputError.for_field(field_, key, f"names nothing: the machine has {count} ({listed})")
+    return section, name, planes, TABLES[section][name]
+
+
+def _inputs(head: dict, n_planes: int) -> tuple[tuple[CampaignInput, ...], list[str]]:
+    tables = head.get("input")
+    if not isinstance(tables, list) or not tables or not all(isinstance(t, dict) for t in tables):
+        raise InputError.for_field("campaign.input", tables, "give one [[campaign.input]] table per uncertain input")
+    inputs, notes, seen = [], [], {}
+    for i, table in enumerate(tables):
+        where = f"campaign.input.{i}"
+        section, name, planes, param = resolve_key(table.get("key"), n_planes, where)
+        dist = distribution_from_table(table, param, where)
+        key = table["key"].strip()
+        for k in planes or (None,):
+            slot = (section, k, name)
+            if slot in seen:
+                raise InputError.for_field(where + ".key", key, f"sets the same value as {seen[slot]}")
+            seen[slot] = key
+        share = share_outside_rule(dist, param)
+        if share > OUTSIDE_NOTE:
+            notes.append(f"{key}: {share:.2g} of the samples fall outside its rule ({param.rule}); they are "
+                         "recorded as invalid_input (a truncated_normal keeps them inside)")
+        inputs.append(CampaignInput(key, section, name, planes, param, dist))
+    return tuple(inputs), notes
+
+
+def apply_sample(tables: dict, inputs: tuple[CampaignInput, ...], values, as_quantity: bool = False) -> dict:
+    """The machine tables with each input set to its sampled SI value (as ``"<value> <SI unit>"`` text).
+
+    With ``as_quantity`` the values go in as unit-library quantities (the same conversion and checks,
+    without parsing text: what the workers use).
+
+    >>> from auxbearing.machine_params import TABLES
+    >>> from auxbearing.campaign.distributions import Distribution
+    >>> phase = CampaignInput("rotor.unbalance_phase", "rotor", "unbalance_phase", (),
+    ...                       TABLES["rotor"]["unbalance_phase"], Distribution("uniform", (0.0, 6.0)))
+    >>> apply_sample({"rotor": {"mass": "1 kg"}}, (phase,), [1.5])["rotor"]
+    {'mass': '1 kg', 'unbalance_phase': '1.5 rad'}
+    """
+    # copies of the tables the inputs write into; the caller's tables stay as they were
+    out = {key: dict(value) if isinstance(value, dict) else value for key, value in tables.items()}
+    for key in ("rotor", "drop"):
+        out.setdefault(key, {})
+    out["touchdown"] = [dict(t) for t in tables.get("touchdown", [])]
+    if as_quantity:
+        from auxbearing.units import Quantity
+    for inp, value in zip(inputs, values, strict=True):
+        value = float(value)
+        unit = inp.unit
+        if not unit or inp.param.dimension == "dimensionless":
+            text = value
+        else:
+            text = Quantity(value, unit) if as_quantity else f"{value!r} {unit}"
+        for target in ([out["touchdown"][k] for k in inp.planes] if inp.section == "touchdown"
+                       else [out[inp.section]]):
+            target[inp.name] = text
+    return out
+
+
+def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None = None) -> Campaign:
+    """A checked :class:`Campaign` from the tables of a campaign file (module docstring)."""
+    from auxbearing.machine import machine_from_mapping
+
+    for key in data:
+        if key not in ("campaign", *MACHINE_TABLES):
+            raise InputError.for_field(f"[{key}]", "table", "unknown table; allowed tables: campaign, "
+                                       + ", ".join(MACHINE_TABLES))
+    head = data.get("campaign")
+    if not isinstance(head, dict):
+        raise InputError("campaign: missing; a campaign file needs a [campaign] table")
+    for key in head:
+        if key not in CAMPAIGN_KEYS:
+            raise InputError.for_field(f"campaign.{key}", head[key], "unknown key; allowed keys: "
+                                       + ", ".join(CAMPAIGN_KEYS))
+    sampler = str(head.get("sampler", "sobol")).strip().lower()
+    if sampler not in SAMPLERS:
+        raise InputError.for_field("campaign.sampler", head.get("sampler"), "use one of " + ", ".join(SAMPLERS))
+    samples = _integer(head, "samples", None, 1, MAX_RUNS)
+    seed = _integer(head, "seed", 0, 0, 2**63 - 1)
+    analysis = str(head.get("analysis", "drop")).strip().lower()
+    if analysis not in ANALYSES:
+        raise InputError.for_field("campaign.analysis", head.get("analysis"), "use one of " + ", ".join(ANALYSES))
+    if analysis == "coastdown":
+        from importlib.util import find_spec
+
+        if find_spec("auxbearing.coastdown") is None:
+            raise InputError.for_field("campaign.analysis", "coastdown", "the coast-down model (auxbearing.coastdown) "
+                                       "is not in this version yet; use analysis = 'drop'")
+    second_order = head.get("second_order", False)
+    if not isinstance(second_order, bool):
+        raise InputError.for_field("campaign.second_order", second_order, "must be true or false")
+    required = head.get("required_s0", DEFAULT_REQUIRED_S0)
+    if isinstance(required, bool) or not isinstance(required, (int, float)) or not 0.0 < required < math.inf:
+        raise InputError.for_field("campaign.required_s0", required, "must be a number > 0")
+    tables, base = _machine_tables(data, head, base)
+    machine = machine_from_mapping(tables, name, base)
+    inputs, notes = _inputs(head, len(machine.planes))
+    whirl_map = head.get("whirl_map")
+    if whirl_map is not None:
+        keys = [i.key for i in inputs]
+        if not (isinstance(whirl_map, list) and len(whirl_map) == 2 and all(k in keys for k in whirl_map)):
+            raise InputError.for_field("campaign.whirl_map", whirl_map, "give two input keys: " + ", ".join(keys))
+        whirl_map = (whirl_map[0], whirl_map[1])
+    central = apply_sample(tables, inputs, [i.distribution.median() for i in inputs])
+    try:
+        machine_from_mapping(copy.deepcopy(central), name, base)
+    except InputError as err:
+        raise InputError(f"campaign: the central sample (every input at its median) is no valid machine: {err}") \
+            from None
+    runs = samples * ((2 * len(inputs) + 2) if second_order else (len(inputs) + 2)) if sampler == "saltelli" \
+        else samples
+    if runs > MAX_RUNS:
+        raise InputError.for_field("campaign.samples", samples, f"gives {runs} runs, more than {MAX_RUNS}")
+    batch = _integer(head, "batch_size", min(MAX_BATCH, max(1, math.ceil(runs / TARGET_BATCHES))), 1, MAX_RUNS)
+    return Campaign(name=machine.name if name == "campaign" else name, tables=tables,
+                    base=None if base is None else str(Path(base).resolve()), sampler=sampler, samples=samples,
+                    seed=seed, analysis=analysis, inputs=inputs, batch_size=batch,
+                    plane_names=tuple(p.name for p in machine.planes), second_order=second_order,
+                    required_s0=float(required), whirl_map=whirl_map, notes=tuple(notes))
