@@ -1,0 +1,153 @@
+"""Running a campaign on Dask: batches of samples as tasks, results streamed into the store as they finish.
+
+By default a local cluster of one single-threaded worker process per core is started and stopped
+here; ``scheduler`` uses a running cluster instead (its workers must import the same auxbearing and
+see the same files). Each worker loads the compiled kernels once (:func:`warm_up`) before the first
+batch. Only this process writes the store, one batch at a time, so a batch is on disk whole or not
+flagged complete; running the same campaign again skips every complete batch.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import NamedTuple
+
+from auxbearing.campaign.config import Campaign
+from auxbearing.campaign.evaluate import evaluate_batch, warm_up
+from auxbearing.campaign.sampling import design
+from auxbearing.campaign.store import pending_batches, prepare_store, write_batch
+from auxbearing.errors import InputError
+
+
+class CampaignInterrupted(KeyboardInterrupt):
+    """Ctrl-C (or SIGTERM) during a campaign: what was stored stays; ``done`` samples are in the store."""
+
+    def __init__(self, done: int, runs: int) -> None:
+        super().__init__(f"{done} of {runs} samples stored")
+        self.done = done
+        self.runs = runs
+
+
+class Progress(NamedTuple):
+    """What a progress callback receives after each batch."""
+
+    done: int  #: samples in the store
+    runs: int  #: samples of the design
+    new: int  #: samples run by this call
+    rate: float  #: samples per second in this call
+    remaining_s: float | None  #: estimate of the time left
+
+
+def cores() -> int:
+    """Cores this process may use."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def _client(scheduler: str | None, workers: int | None):
+    """A Dask client and the local cluster it owns (None with a scheduler address)."""
+    from distributed import Client, LocalCluster
+
+    if scheduler is not None:
+        try:
+            return Client(scheduler, timeout="10s"), None
+        except (OSError, TimeoutError, ValueError) as err:
+            raise InputError.for_field("--scheduler", scheduler, f"no Dask scheduler answers there ({err})") from None
+    n = workers or cores()
+    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                           silence_logs=logging.ERROR)
+    return Client(cluster), cluster
+
+
+def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = None, workers: int | None = None,
+                 progress: Callable[[Progress], None] | None = None) -> dict:
+    """Run every sample of ``campaign`` not yet in ``store``; returns counts and timing.
+
+    Parameters
+    ----------
+    campaign : Campaign
+    store : path
+        Zarr store; made when absent, resumed when it holds this campaign, refused otherwise.
+    scheduler : str, optional
+        Address of a running Dask scheduler (``tcp://host:8786``); default a local cluster.
+    workers : int, optional
+        Worker processes of the local cluster; default one per core.
+    progress : callable, optional
+        Called with a :class:`Progress` after every stored batch.
+
+    Returns
+    -------
+    dict
+        ``runs``, ``completed``, ``new`` (this call), ``lost`` (samples of batches whose worker died;
+        run again to retry), ``workers``, ``warm_up_s`` (largest per worker), ``startup_s``,
+        ``run_s`` (first task to last record), ``wall_time_s`` and ``drops_per_second`` (new / run_s).
+    """
+    from distributed import as_completed
+
+    start = time.perf_counter()
+    points = design(campaign)
+    prepare_store(store, campaign, points)
+    todo = pending_batches(store, campaign.runs, campaign.batch_size)
+    runs = campaign.runs
+    done = runs - sum(b - a for a, b in todo) if todo else runs
+    out = {"runs": runs, "completed": done, "new": 0, "lost": 0, "workers": 0, "warm_up_s": 0.0, "startup_s": 0.0,
+           "run_s": 0.0, "wall_time_s": 0.0, "drops_per_second": None}
+    if not todo:
+        out["wall_time_s"] = time.perf_counter() - start
+        return out
+    client, cluster = _client(scheduler, workers)
+    try:
+        out["workers"] = len(client.scheduler_info(n_workers=-1)["workers"])
+        try:
+            warm = client.run(warm_up, campaign)
+        except InputError:
+            raise
+        except Exception as err:
+            raise InputError(f"scheduler: its workers cannot run auxbearing ({type(err).__name__}: {err})") from None
+        out["warm_up_s"] = max(warm.values(), default=0.0)
+        out["startup_s"] = time.perf_counter() - start
+        shared = client.scatter(campaign, broadcast=True)
+        first = time.perf_counter()
+        tag = campaign.fingerprint()
+        pending = {}
+        for a, b in todo:
+            future = client.submit(evaluate_batch, shared, points.values[a:b], key=f"campaign-{tag}-{a}", pure=False)
+            pending[future.key] = (future, a, b)
+        new = lost = 0
+        try:
+            for future in as_completed([f for f, _, _ in pending.values()]):
+                _, a, b = pending.pop(future.key)
+                try:
+                    arrays = future.result()
+                except Exception:  # a worker died on this batch: its samples stay pending for the next call
+                    lost += b - a
+                    continue
+                finally:
+                    future.release()
+                write_batch(store, a, arrays)
+                new += b - a
+                done += b - a
+                if progress is not None:
+                    elapsed = time.perf_counter() - first
+                    rate = new / elapsed if elapsed > 0 else 0.0
+                    left = (runs - done - lost) / rate if rate > 0 else None
+                    progress(Progress(done, runs, new, rate, left))
+        except KeyboardInterrupt:
+            for future, _, _ in pending.values():
+                future.cancel()
+            raise CampaignInterrupted(done, runs) from None
+        out["run_s"] = time.perf_counter() - first
+        out.update(completed=done, new=new, lost=lost,
+                   drops_per_second=new / out["run_s"] if out["run_s"] > 0 else None)
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    out["wall_time_s"] = time.perf_counter() - start
+    return out
