@@ -36,7 +36,7 @@ from auxbearing.statics import ISO76_BALL_STRESS, safety_factor
 from auxbearing.whirl import natural_frequency, timeline
 
 __all__ = ["PARAMETERS", "DropCase", "MachineRun", "Param", "Rotor", "convert", "from_mapping", "journal_orbit",
-           "read_config", "run_drop", "run_machine", "static_safety_factor", "whirl_window"]
+           "planar_view", "read_config", "run_drop", "run_machine", "static_safety_factor", "whirl_window"]
 
 #: Verdicts besides the limits of :data:`auxbearing.core.watch.STOP_NAMES`.
 OK, STEP_BUDGET, WALL_BUDGET, INTEGRATION_FAILED = "ok", "step_budget", "wall_time_budget", "integration_failed"
@@ -413,7 +413,8 @@ def run_drop(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = Non
              progress: Callable[[float], None] | None = None) -> tuple[xr.Dataset, dict]:
     """The source paper's rotor drop (Sec. II.D, corrected per NOTES.md) as a one-plane machine.
 
-    Returns the machine run's Dataset and a flat summary with the paper-drop keys:
+    Returns the machine run's Dataset in its planar view (:func:`planar_view`) and a flat summary with the
+    paper-drop keys:
     ``peak_contact_force_N``, ``peak_ball_stress_MPa`` (exact maxima: golden-section search on the
     dense output), ``s0``, ``first_impact_ms``, ``impacts``, ``largest_bounce_um``, ``whirl``,
     ``final_rotor_speed_rad_s``, ``final_race_speed_rad_s``, ``race_spin_up_ms``,
@@ -444,8 +445,23 @@ def run_drop(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = Non
                "ball_constant_N_per_m1_5": _nominal_ball_constant(bearing, case),
                "ball_constant_source": "override" if case.ball_constant is not None else "Hertz (Eq. 15)",
                "sliding_friction": case.sliding_friction, "rtol": case.rtol}
-    run.dataset.attrs["summary"] = json.dumps(to_jsonable(summary))
-    return run.dataset, summary
+    ds = planar_view(run.dataset)
+    ds.attrs["summary"] = json.dumps(to_jsonable(summary))
+    return ds, summary
+
+
+def planar_view(ds: xr.Dataset) -> xr.Dataset:
+    """A one-plane run's Dataset without the plane dimension.
+
+    Per-plane variables are over time only; the ball arrays become ``ball_load``, ``stress_inner`` and
+    ``stress_outer`` over (time, ball, pair).
+    """
+    out = ds.isel(plane=0, drop=True)
+    out.attrs["plane_name"] = str(ds.plane.values[0])
+    names = {f"{base}_0": base for base in ("ball_load", "stress_inner", "stress_outer") if f"{base}_0" in out}
+    if names:
+        out = out.rename(names).rename_dims({"ball_0": "ball", "pair_0": "pair"})
+    return out
 
 
 def _nominal_ball_constant(bearing: BearingGeometry, case: DropCase) -> float:

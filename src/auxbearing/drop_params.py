@@ -103,8 +103,8 @@ class Rotor:
 
     Examples
     --------
-    >>> Rotor(eccentricity="10 um").eccentricity
-    1e-05
+    >>> round(Rotor(eccentricity="10 um").eccentricity * 1e6, 9)
+    10.0
     >>> Rotor(mass=-1.0)
     Traceback (most recent call last):
     ...

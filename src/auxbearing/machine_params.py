@@ -153,7 +153,7 @@ def hollow_cylinder(density: float, inner: float, outer: float, width: float) ->
 
     >>> m, j = hollow_cylinder(7810.0, 0.0075, 0.00975, 0.011)
     >>> round(m * 1e3, 2), f"{j:.3e}"
-    (10.47, 7.925e-07)
+    (10.48, '7.925e-07')
     """
     mass = density * math.pi * (outer**2 - inner**2) * width
     return mass, 0.5 * mass * (inner**2 + outer**2)

@@ -86,7 +86,7 @@ def natural_frequency(force: float, line_stiffness: float, support_stiffness: fl
     (Eq. 19); it acts in series with ``support_stiffness`` (ball set and mount) [N/m].
 
     >>> round(natural_frequency(100.0, 1.463e9, 2e7, 1.5), 1)
-    3395.6
+    3539.9
     """
     if force <= 0.0 or mass <= 0.0:
         return 0.0

@@ -4,10 +4,8 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from auxbearing import get_bearing
 from auxbearing import ballset as bs
-from auxbearing.core import ballset as cb
-from auxbearing.core import statics as cs
+from auxbearing import get_bearing
 from auxbearing.statics import solve_cases
 
 QJ202 = get_bearing("QJ202")

@@ -8,9 +8,9 @@ import pytest
 import xarray as xr
 from click.testing import CliRunner
 
+from auxbearing.cli.main import cli
 from auxbearing.drop import DropCase
 from auxbearing.experiment.synth import SensorModel, synthesize, write_csv
-from auxbearing.cli.main import cli
 
 
 def run(*args):

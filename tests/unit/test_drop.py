@@ -81,9 +81,9 @@ def test_journal_orbit_raises_instead_of_padding_a_failed_run():
 def test_dataset_units_and_netcdf_round_trip(tmp_path):
     ds, s = ad.run_drop("7202", None, ad.DropCase(duration=0.01, output_step=1e-4))
     for name in ("rotor_x", "race_y", "normal_force", "friction_force", "penetration", "max_ball_stress",
-                 "ball_load_0", "rotor_speed", "race_speed", "journal_x", "axial_force"):
+                 "ball_load", "rotor_speed", "race_speed", "journal_x", "axial_force"):
         assert "units" in ds[name].attrs, name
-    assert ds.ball_load_0.dims == ("time", "ball_0", "pair_0") and ds.sizes["pair_0"] == 1
+    assert ds.ball_load.dims == ("time", "ball", "pair") and ds.sizes["pair"] == 1
     path = save_dataset(ds, tmp_path / "d.nc", {"x": 1})
     back = xr.load_dataset(path)
     np.testing.assert_allclose(back.normal_force.values, ds.normal_force.values)
@@ -96,7 +96,7 @@ def test_dataset_units_and_netcdf_round_trip(tmp_path):
 
 def test_four_point_has_two_pairs_and_same_geometry_otherwise():
     ds, _ = ad.run_drop("QJ202", None, ad.DropCase(duration=0.009, output_step=1e-4))
-    assert ds.sizes["pair_0"] == 2 and ds.sizes["ball_0"] == 11
+    assert ds.sizes["pair"] == 2 and ds.sizes["ball"] == 11
 
 
 def test_static_safety_factor_iso76():

@@ -1,6 +1,7 @@
 """Experiment pipeline: readers and their checks, preprocessing, orbit -> force -> stress, impacts, whirl."""
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -9,7 +10,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from auxbearing import get_bearing
-from auxbearing.drop import DropCase, Rotor, build_model, run_drop
+from auxbearing.ballset import ballset_params, ballset_state
+from auxbearing.drop import DropCase, Rotor, run_drop
+from auxbearing.errors import InputError
+from auxbearing.experiment.io import read_csv, read_measured, read_netcdf
 from auxbearing.experiment.orbit import (
     Preprocessing,
     contact_from_orbit,
@@ -19,10 +23,8 @@ from auxbearing.experiment.orbit import (
     orbit_features,
     preprocess,
 )
-from auxbearing.experiment.io import read_csv, read_measured, read_netcdf
 from auxbearing.experiment.run import peak_table
-from auxbearing.core.ballset import ballset_state
-from auxbearing.errors import InputError
+from auxbearing.machine import planar_machine
 
 HEADER = "time [s], x [um], y [um], speed [rpm]\n"
 
@@ -156,7 +158,7 @@ def short_drop():
 def test_force_and_stress_from_an_exact_orbit_match_the_simulation(short_drop):
     """The quasi-static split recovers the simulated force and stress from the orbit alone."""
     bearing, case, ds, summary = short_drop
-    model = build_model(bearing, Rotor(), case)
+    model = _model(bearing, Rotor(), case)
     c = contact_from_orbit(ds.rotor_x.values, ds.rotor_y.values, case.clearance, model.line_stiffness,
                            model.ballset, case.line_damping, case.output_step)
     # grid peak vs the exact (dense-output) peak: the 10 us grid loses < 0.5 %
@@ -175,7 +177,7 @@ def test_orbit_features_of_a_backward_whirl():
     r = s + 2e-6
     w = -2 * math.pi * 80
     orbit = xr.Dataset({"x": ("time", r * np.cos(w * t)), "y": ("time", r * np.sin(w * t))}, coords={"time": t})
-    model = build_model(get_bearing("QJ202"), Rotor(), DropCase())
+    model = _model(get_bearing("QJ202"), Rotor(), DropCase())
     ds, summary = orbit_features(orbit, s, model.line_stiffness, model.ballset, 0.0, 1e-8, 628.0)
     assert summary["whirl"] == "backward"
     assert summary["whirl_frequency_Hz"] == pytest.approx(80, abs=1.0)
@@ -204,11 +206,17 @@ def test_peak_table_differences():
     assert table["rows"][0][1:] == ["100", "110", "+10.0 %"]
 
 
+def _model(bearing, rotor, case):
+    """Line stiffness and ball-set parameters of the paper's planar drop."""
+    plane = planar_machine(bearing, rotor, case).planes[0]
+    return SimpleNamespace(line_stiffness=plane.line_stiffness, ballset=ballset_params(bearing, case.ball_constant))
+
+
 @settings(max_examples=25, deadline=None)
 @given(excursion=st.floats(0.05e-6, 30e-6), angle=st.floats(-math.pi, math.pi))
 def test_series_split_balances_and_grows(excursion, angle):
     """Line contact and ball set carry the same force, and more excursion means more force."""
-    model = build_model(get_bearing("QJ202"), Rotor(), DropCase())
+    model = _model(get_bearing("QJ202"), Rotor(), DropCase())
     s = 200e-6
     r = np.array([s + excursion, s + 1.1 * excursion])
     c = contact_from_orbit(r * math.cos(angle), r * math.sin(angle), s, model.line_stiffness, model.ballset)

@@ -67,7 +67,8 @@ def run(rhs_id, observe_id, model, obs, y, t_end, settings, memory, grid):
     return ig.dopri5(prothero_robinson, nothing, model, obs, y, t_end, settings, memory, grid)
 
 
-def _solve(rhs_id, y0, t_end, rtol, model=np.zeros(1), observe_id=0, n_out=0, output_step=1.0, max_step=1e9):
+def _solve(rhs_id, y0, t_end, rtol, model=None, observe_id=0, n_out=0, output_step=1.0, max_step=1e9):
+    model = np.zeros(1) if model is None else model
     y = np.array(y0, float)
     settings = ig.Settings(rtol, np.full(y.size, rtol), max_step, 1e-14, 10**7, output_step)
     memory = ig.new_memory(0.0, 1e-3, y.size)
@@ -85,7 +86,7 @@ def test_harmonic_oscillator_converges_at_fifth_order():
     error falls about in proportion to rtol (Hairer et al., Solving ODEs I, Sec. II.4)."""
     errors = []
     for rtol in (1e-5, 1e-7, 1e-9):
-        y, status, memory, _, _ = _solve(0, [1.0, 0.0], 2.0 * math.pi, rtol)
+        y, status, _memory, _, _ = _solve(0, [1.0, 0.0], 2.0 * math.pi, rtol)
         assert status == ig.FINISHED
         errors.append(math.hypot(y[0] - 1.0, y[1]))
     slope = np.polyfit(np.log10([1e-5, 1e-7, 1e-9]), np.log10(errors), 1)[0]
@@ -107,7 +108,7 @@ def test_kepler_orbit_closes_and_keeps_its_invariants():
     """Eccentricity 0.6, period 2 pi (mu = 1, a = 1): after one period the body is back at perihelion."""
     e = 0.6
     y0 = [1.0 - e, 0.0, 0.0, math.sqrt((1.0 + e) / (1.0 - e))]
-    y, status, memory, _, grid = _solve(1, y0, 2.0 * math.pi, 1e-11, n_out=101, output_step=2.0 * math.pi / 100)
+    y, status, _memory, _, grid = _solve(1, y0, 2.0 * math.pi, 1e-11, n_out=101, output_step=2.0 * math.pi / 100)
     assert status == ig.FINISHED
     np.testing.assert_allclose(y, y0, atol=1e-8)
     energy = 0.5 * (grid[:, 2] ** 2 + grid[:, 3] ** 2) - 1.0 / np.hypot(grid[:, 0], grid[:, 1])
@@ -118,14 +119,14 @@ def test_kepler_orbit_closes_and_keeps_its_invariants():
 
 def test_prothero_robinson_follows_the_exact_solution():
     """y' = lambda (y - sin t) + cos t, y(0) = 0 has y = sin t for any lambda; lambda = -50 is mildly stiff."""
-    y, status, memory, _, grid = _solve(2, [0.0], 3.0, 1e-8, model=np.array([-50.0]), n_out=31, output_step=0.1)
+    _y, status, _memory, _, grid = _solve(2, [0.0], 3.0, 1e-8, model=np.array([-50.0]), n_out=31, output_step=0.1)
     assert status == ig.FINISHED
     np.testing.assert_allclose(grid[:, 0], np.sin(np.arange(31) * 0.1), atol=1e-7)
 
 
 def test_event_time_is_located_on_the_dense_output():
     """x(t) = cos t crosses zero at pi/2: the observer stops the run there (bisection on the dense output)."""
-    y, status, memory, obs, _ = _solve(0, [1.0, 0.0], 10.0, 1e-9, observe_id=1)
+    _y, status, _memory, obs, _ = _solve(0, [1.0, 0.0], 10.0, 1e-9, observe_id=1)
     assert status == ig.STOPPED
     assert obs[0] == pytest.approx(math.pi / 2, abs=1e-8)
 
@@ -144,5 +145,5 @@ def test_step_budget_pauses_and_the_memory_resumes_exactly():
 
 
 def test_a_non_finite_right_hand_side_ends_with_step_underflow():
-    y, status, *_ = _solve(2, [0.0], 1.0, 1e-8, model=np.array([float("nan")]))
+    _y, status, *_ = _solve(2, [0.0], 1.0, 1e-8, model=np.array([float("nan")]))
     assert status == ig.STEP_UNDERFLOW

@@ -6,9 +6,8 @@ import numpy as np
 import pytest
 
 from auxbearing import ConvergenceError, InputError, get_bearing
-from auxbearing import statics as an
 from auxbearing import ballset as bs
-from auxbearing.core import ballset as cb
+from auxbearing import statics as an
 from auxbearing.core import statics as cs
 
 QJ202 = get_bearing("QJ202")

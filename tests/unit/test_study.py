@@ -6,11 +6,11 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from auxbearing.paper.claims import VERDICTS
-from auxbearing.paper.study_config import load_study_config
 from auxbearing.cli.main import cli
 from auxbearing.errors import InputError
 from auxbearing.io import atomic_output_dir
+from auxbearing.paper.claims import VERDICTS
+from auxbearing.paper.study_config import load_study_config
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "my_study.toml"
 

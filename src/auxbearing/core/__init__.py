@@ -46,7 +46,7 @@ _previous = numba.config.CACHE_DIR
 numba.config.CACHE_DIR = cache_folder()
 try:
     # numba picks the cache folder when a function is decorated, so every core module is imported now
-    from auxbearing.core import (  # noqa: F401, E402
+    from auxbearing.core import (  # noqa: F401
         ballset,
         bearing_friction,
         drive,

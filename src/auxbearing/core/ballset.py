@@ -135,7 +135,7 @@ def pair(sign, axial, radial, bs, pd, need_angle):
     >>> bs = ballset_params(get_bearing("QJ202"))
     >>> q, alpha, *_ = pair(1.0, 0.0, 5e-6, bs, 0.0, False)
     >>> round(q, 3), round(math.degrees(alpha), 3)
-    (66.212, 34.431)
+    (67.147, 34.327)
     """
     big_a = bs.curvature_distance
     cos0 = bs.cos_free_angle

@@ -266,7 +266,7 @@ def simulate_like_measurement(bearing, rotor, case, orbit: xr.Dataset, cutoff: f
     dt = float(np.median(np.diff(tau)))
     duration = float(tau[-1])
     sim_case = replace(case, duration=duration, output_step=0.5 * dt)
-    ds, summary = run_drop(bearing, rotor, sim_case, progress=progress, chunks=10)
+    ds, summary = run_drop(bearing, rotor, sim_case, progress=progress)
     states = np.stack([ds.rotor_x.values, ds.rotor_y.values], axis=1)
     xy = sample_like(states, 0.5 * dt, tau, (case.start_x, case.start_y))
     seen = xr.Dataset({"x": ("time", lowpass(xy[:, 0], 1.0 / dt, cutoff), {"units": "m"}),

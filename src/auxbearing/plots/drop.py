@@ -41,6 +41,19 @@ def _summary(ds: xr.Dataset) -> dict:
     return json.loads(text) if isinstance(text, str) else dict(text)
 
 
+def _plane(ds: xr.Dataset, k: int) -> xr.Dataset:
+    """Plane k of a machine run, or the planar view of a one-plane run (:func:`auxbearing.drop.planar_view`)."""
+    return ds.isel(plane=k) if "plane" in ds.dims else ds
+
+
+def _n_planes(ds: xr.Dataset) -> int:
+    return ds.sizes.get("plane", 1)
+
+
+def _plane_name(ds: xr.Dataset, k: int) -> str:
+    return str(ds.plane.values[k]) if "plane" in ds.dims else str(ds.attrs.get("plane_name", "plane"))
+
+
 def _clearance(ds: xr.Dataset, plane: int) -> float:
     planes = _machine(ds).get("planes", [])
     return planes[plane]["radial_clearance_mm"] * 1e-3 if planes else 2e-4
@@ -50,7 +63,7 @@ def plot_orbit(ds: xr.Dataset, plane: int = 0, ax=None) -> Figure:
     """Journal centre at a plane and its race centre inside the clearance circle (paper Fig. 10-11 (a))."""
     fig, ax = _axes(ax, (5, 5))
     s = _clearance(ds, plane)
-    sel = ds.isel(plane=plane)
+    sel = _plane(ds, plane)
     centre = (sel.ring_x.values, sel.ring_y.values)
     phi = np.linspace(0.0, 2.0 * np.pi, 361)
     ax.plot(s * 1e3 * np.cos(phi), s * 1e3 * np.sin(phi), color="0.5", lw=1, ls="--",
@@ -65,7 +78,7 @@ def plot_orbit(ds: xr.Dataset, plane: int = 0, ax=None) -> Figure:
     ax.set_ylim(-lim * 1e3, lim * 1e3)
     ax.set_xlabel("x [mm] (from the bearing centre)")
     ax.set_ylabel("y [mm]")
-    ax.set_title(f"orbit, {ds.plane.values[plane]}", loc="left")
+    ax.set_title(f"orbit, {_plane_name(ds, plane)}", loc="left")
     ax.legend(loc="upper right", fontsize=8)
     return fig
 
@@ -75,10 +88,10 @@ def plot_contact_force(ds: xr.Dataset, plane: int | None = None, ax=None, paper_
     fig, ax = _axes(ax, (7, 4))
     t_ms = ds.time.values * 1e3
     summary = _summary(ds)
-    planes = range(ds.sizes["plane"]) if plane is None else [plane]
+    planes = range(_n_planes(ds)) if plane is None else [plane]
     for k in planes:
-        name = str(ds.plane.values[k])
-        ax.plot(t_ms, ds.normal_force.isel(plane=k).values, lw=0.7, label=f"collision force, {name}")
+        name = _plane_name(ds, k)
+        ax.plot(t_ms, _plane(ds, k).normal_force.values, lw=0.7, label=f"collision force, {name}")
         peak = _plane_summary(summary, k).get("peak_contact_force_N")
         if peak is not None:
             ax.plot(_plane_summary(summary, k)["peak_force_time_ms"], peak, "kv", label=f"peak {peak:.0f} N")
@@ -114,8 +127,8 @@ def plot_speeds(ds: xr.Dataset, ax=None) -> Figure:
     fig, ax = _axes(ax, (7, 4))
     t_ms = ds.time.values * 1e3
     ax.plot(t_ms, ds.rotor_speed.values, color="tab:red", label="rotor")
-    for k in range(ds.sizes["plane"]):
-        ax.plot(t_ms, ds.race_speed.isel(plane=k).values, label=f"inner race, {ds.plane.values[k]}")
+    for k in range(_n_planes(ds)):
+        ax.plot(t_ms, _plane(ds, k).race_speed.values, label=f"inner race, {_plane_name(ds, k)}")
     ax.set_xlabel("Time [ms]")
     ax.set_ylabel("Spin speed [rad/s]")
     ax.legend(fontsize=8)
@@ -127,8 +140,8 @@ def plot_ball_stress(ds: xr.Dataset, ax=None) -> Figure:
     """Hertz max stress of the most loaded ball contact of each plane [MPa]."""
     fig, ax = _axes(ax, (7, 4))
     t_ms = ds.time.values * 1e3
-    for k in range(ds.sizes["plane"]):
-        ax.plot(t_ms, ds.max_ball_stress.isel(plane=k).values / 1e6, lw=0.7, label=str(ds.plane.values[k]))
+    for k in range(_n_planes(ds)):
+        ax.plot(t_ms, _plane(ds, k).max_ball_stress.values / 1e6, lw=0.7, label=_plane_name(ds, k))
     ax.set_xlabel("Time [ms]")
     ax.set_ylabel("Max ball contact stress [MPa]")
     ax.legend(fontsize=8)
@@ -182,7 +195,7 @@ def plot_whirl_timeline(summary: dict, ax=None) -> Figure:
 
 def machine_figures(ds: xr.Dataset, summary: dict) -> dict[str, Figure]:
     """The figures of a machine run: orbit of each plane, contact forces, tilt, whirl timeline, spin speeds."""
-    figures = {f"orbit_{k}": plot_orbit(ds, k) for k in range(ds.sizes["plane"])}
+    figures = {f"orbit_{k}": plot_orbit(ds, k) for k in range(_n_planes(ds))}
     figures["contact_force"] = plot_contact_force(ds)
     figures["ball_stress"] = plot_ball_stress(ds)
     figures["tilt"] = plot_tilt(ds)
