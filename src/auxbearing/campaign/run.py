@@ -92,16 +92,26 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
 
     start = time.perf_counter()
     points = design(campaign)
-    prepare_store(store, campaign, points)
-    todo = pending_batches(store, campaign.runs, campaign.batch_size)
+    # a scheduler address is tried before the store is touched, so a wrong address writes nothing
+    client, cluster = _client(scheduler, None) if scheduler is not None else (None, None)
+    try:
+        prepare_store(store, campaign, points)
+        todo = pending_batches(store, campaign.runs, campaign.batch_size)
+    except BaseException:
+        if client is not None:
+            client.close()
+        raise
     runs = campaign.runs
-    done = runs - sum(b - a for a, b in todo) if todo else runs
+    done = runs - sum(b - a for a, b in todo)
     out = {"runs": runs, "completed": done, "new": 0, "lost": 0, "workers": 0, "warm_up_s": 0.0, "startup_s": 0.0,
            "run_s": 0.0, "wall_time_s": 0.0, "drops_per_second": None}
     if not todo:
+        if client is not None:
+            client.close()
         out["wall_time_s"] = time.perf_counter() - start
         return out
-    client, cluster = _client(scheduler, workers)
+    if client is None:
+        client, cluster = _client(None, workers)
     try:
         out["workers"] = len(client.scheduler_info(n_workers=-1)["workers"])
         try:

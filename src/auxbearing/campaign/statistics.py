@@ -21,6 +21,8 @@ CONFIDENCE = 0.95
 #: Bootstrap resamples of a quantile interval (Efron & Tibshirani 1993, Sec. 13.3, suggest >= 1000
 #: for percentile intervals).
 RESAMPLES = 1000
+#: Bootstrap resamples of the Sobol' index bounds (SALib's default).
+SOBOL_RESAMPLES = 100
 QUANTILES = (0.5, 0.95, 0.99)
 
 
@@ -71,8 +73,13 @@ def bootstrap_quantiles(values, probabilities=QUANTILES, confidence: float = CON
     """Sample quantiles with percentile-bootstrap intervals.
 
     The interval is Efron & Tibshirani's percentile interval (An Introduction to the Bootstrap, 1993,
-    Sec. 13.3); quantiles are numpy's default (linear interpolation between order statistics, Hyndman
-    & Fan 1996 definition 7). Resamples are drawn in slices so memory stays bounded for large campaigns.
+    Sec. 13.3); quantiles are numpy's default (linear interpolation between the order statistics of
+    ranks r and r + 1, Hyndman & Fan 1996 definition 7). A resample is drawn from the empirical
+    distribution, so its order statistics are the empirical quantile function at the order statistics
+    of n uniforms: U_(r) ~ Beta(r, n - r + 1) and, given U_(r) = u, U_(r+1) = u + (1 - u) V with
+    V ~ Beta(1, n - r) (David & Nagaraja, Order Statistics, 3rd ed., 2003, Sec. 2.2 and 2.5). Drawing
+    those two per resample gives the same bootstrap distribution as resampling all n values, at a cost
+    independent of n.
 
     Returns
     -------
@@ -86,22 +93,28 @@ def bootstrap_quantiles(values, probabilities=QUANTILES, confidence: float = CON
     (500.0, True)
     """
     x = np.asarray(values, dtype=float)
-    x = x[np.isfinite(x)]
-    probs = np.asarray(probabilities, dtype=float)
-    if x.size == 0:
-        return {float(p): (math.nan, math.nan, math.nan) for p in probs}
-    estimate = np.quantile(x, probs)
+    x = np.sort(x[np.isfinite(x)])
+    n = x.size
+    if n == 0:
+        return {float(p): (math.nan, math.nan, math.nan) for p in probabilities}
     rng = np.random.default_rng(seed)
-    slice_rows = max(1, 2_000_000 // x.size)
-    draws = []
-    for first in range(0, resamples, slice_rows):
-        rows = min(slice_rows, resamples - first)
-        draws.append(np.quantile(x[rng.integers(0, x.size, (rows, x.size))], probs, axis=1).T)
-    boot = np.concatenate(draws)
     alpha = 0.5 * (1.0 - confidence)
-    low, high = np.quantile(boot, [alpha, 1.0 - alpha], axis=0)
-    return {float(p): (float(e), float(lo), float(hi)) for p, e, lo, hi in zip(probs, estimate, low, high,
-                                                                             strict=True)}
+    out = {}
+    for p in probabilities:
+        h = (n - 1) * float(p)
+        r = math.floor(h) + 1  # 1-based rank of the lower order statistic
+        frac = h - (r - 1)
+        u = rng.beta(r, n - r + 1, resamples)
+        lower = x[np.minimum(np.ceil(n * u).astype(int), n) - 1]
+        if r < n:
+            v = u + (1.0 - u) * rng.beta(1, n - r, resamples)
+            upper = x[np.minimum(np.ceil(n * v).astype(int), n) - 1]
+        else:
+            upper = lower
+        boot = lower + frac * (upper - lower)
+        low, high = np.quantile(boot, [alpha, 1.0 - alpha])
+        out[float(p)] = (float(np.quantile(x, p)), float(low), float(high))
+    return out
 
 
 def sobol_indices(y, names, second_order: bool = False, confidence: float = CONFIDENCE,
@@ -122,7 +135,7 @@ def sobol_indices(y, names, second_order: bool = False, confidence: float = CONF
 
     problem = {"num_vars": len(names), "names": list(names), "bounds": [[0.0, 1.0]] * len(names)}
     result = sobol.analyze(problem, np.asarray(y, dtype=float), calc_second_order=second_order,
-                           conf_level=confidence, num_resamples=RESAMPLES, seed=seed)
+                           conf_level=confidence, num_resamples=SOBOL_RESAMPLES, seed=seed)
     return {name: {key: float(result[key][j]) for key in ("S1", "S1_conf", "ST", "ST_conf")}
             for j, name in enumerate(names)}
 

@@ -40,7 +40,7 @@ def _status(p) -> tuple[float, str]:
 @click.command("campaign")
 @click.option("--config", "config", type=click.Path(dir_okay=False, path_type=Path), required=True,
               help="Campaign file: a machine (tables, or machine = NAME in [campaign]) and a [campaign] table.")
-@click.option("--out", "store", type=click.Path(file_okay=False, path_type=Path), required=True,
+@click.option("--out", "store", type=click.Path(path_type=Path), required=True,
               callback=checked_out_dir, help="Zarr store of the results; the same command again resumes it.")
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Address of a running Dask scheduler (tcp://host:8786); default a local cluster.")
@@ -123,7 +123,7 @@ def _print(out: dict, stats: dict) -> None:
 
 @click.command("campaign-report")
 @click.argument("store", type=click.Path(path_type=Path))
-@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), required=True,
+@click.option("--out", "out_dir", type=click.Path(path_type=Path), required=True,
               callback=checked_out_dir, help="Folder for statistics (JSON, CSV) and figures.")
 @click.option("--whirl-map", "whirl_map", nargs=2, default=None, metavar="KEY1 KEY2",
               help="The two inputs of the whirl map [default: the campaign's whirl_map, else its first two].")

@@ -1,0 +1,119 @@
+"""The campaign store: layout, batch writes, completed flags, resume checks; records and verdict codes."""
+
+import json
+
+import numpy as np
+import pytest
+
+from auxbearing.campaign import evaluate as ev
+from auxbearing.campaign.config import campaign_from_mapping
+from auxbearing.campaign.sampling import design
+from auxbearing.campaign.store import (
+    MARK,
+    completed,
+    load_results,
+    pending_batches,
+    prepare_store,
+    read_attrs,
+    write_batch,
+)
+from auxbearing.errors import InputError
+
+
+def small(seed=1, samples=6, batch=2, duration="2 ms"):
+    return campaign_from_mapping({
+        "campaign": {"machine": "paper_rig", "samples": samples, "seed": seed, "batch_size": batch, "input": [
+            {"key": "rotor.unbalance_phase", "distribution": "uniform", "low": "0 deg", "high": "360 deg"},
+            {"key": "touchdown.0.sliding_friction", "distribution": "normal", "mean": 0.2, "std": 0.03}]},
+        "drop": {"duration": duration}})
+
+
+def test_verdict_codes_cover_the_drop_verdicts():
+    from auxbearing import drop
+    from auxbearing.core.watch import STOP_NAMES
+    from auxbearing.whirl import BACKWARD, CLASSES
+
+    assert set(ev.OUT_OF_RANGE) == set(STOP_NAMES.values())
+    for verdict in (drop.OK, drop.STEP_BUDGET, drop.WALL_BUDGET, drop.INTEGRATION_FAILED):
+        assert verdict in ev.VERDICTS
+    assert ev.WHIRL_CODES[1:] == CLASSES and set(ev.BACKWARD_CLASSES) == set(BACKWARD)
+
+
+def test_store_layout(tmp_path):
+    c = small()
+    points = design(c)
+    path = tmp_path / "s.zarr"
+    assert prepare_store(path, c, points) is True
+    assert read_attrs(path)[MARK] == c.fingerprint()
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]  # the scratch folder is gone
+    ds = load_results(path)
+    assert dict(ds.sizes) == {"sample": 6, "input": 2, "plane": 1}
+    assert np.array_equal(ds["unit"].values, points.unit) and np.array_equal(ds["value"].values, points.values)
+    assert list(ds["input"].values) == list(c.keys) and list(ds["input_display_unit"].values) == ["deg", ""]
+    assert ds["input_display_scale"].values[0] == pytest.approx(180 / np.pi)
+    assert not completed(path).any() and (ds["verdict"].values == 0).all()
+    assert np.isnan(ds["peak_ball_stress"].values).all() and ds["peak_ball_stress"].attrs["units"] == "Pa"
+    sample_vars, plane_vars = ev.output_variables("drop")
+    for name in [*sample_vars, *plane_vars]:
+        assert name in ds
+    raw = json.loads((path / "verdict" / ".zarray").read_text())
+    assert raw["chunks"] == [2]  # one chunk per batch: a batch write touches its own files only
+    assert json.loads(ds.attrs["campaign"])["seed"] == 1
+
+
+def test_batches_are_written_into_their_region_and_flagged(tmp_path):
+    c = small()
+    points = design(c)
+    path = tmp_path / "s.zarr"
+    prepare_store(path, c, points)
+    assert pending_batches(path, c.runs, c.batch_size) == [(0, 2), (2, 4), (4, 6)]
+    arrays = ev.evaluate_batch(c, points.values[2:4])
+    write_batch(path, 2, arrays)
+    assert completed(path).tolist() == [False, False, True, True, False, False]
+    assert pending_batches(path, c.runs, c.batch_size) == [(0, 2), (4, 6)]
+    ds = load_results(path)
+    assert ds["verdict"].values.tolist()[2:4] == [ev.VERDICTS.index("ok")] * 2
+    assert np.isfinite(ds["peak_contact_force"].values[2:4]).all()
+    assert np.isnan(ds["peak_contact_force"].values[[0, 1, 4, 5]]).all()
+    # the same campaign finds its store; another one is refused with one line
+    assert prepare_store(path, c, points) is False
+    with pytest.raises(InputError, match="holds another campaign"):
+        prepare_store(path, small(seed=2), design(small(seed=2)))
+
+
+def test_a_folder_that_is_not_a_store_is_refused(tmp_path):
+    (tmp_path / "x").mkdir()
+    (tmp_path / "x" / "file.txt").write_text("hello")
+    c = small()
+    with pytest.raises(InputError, match="not a campaign store"):
+        prepare_store(tmp_path / "x", c, design(c))
+    with pytest.raises(InputError, match="not a campaign store"):
+        load_results(tmp_path / "nothing")
+
+
+def test_records_of_refused_and_failing_samples(monkeypatch):
+    c = small()
+    bad = ev.evaluate_sample(c, [0.0, -0.5])  # a friction below 0: the machine refuses it
+    assert ev.VERDICTS[bad["verdict"]] == "invalid_input"
+    assert bad["reason"].startswith("touchdown.0.sliding_friction") and np.isnan(bad["peak_ball_stress"]).all()
+
+    import auxbearing.drop
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("boom\nsecond line")
+
+    monkeypatch.setattr(auxbearing.drop, "run_machine", broken)
+    record = ev.evaluate_sample(c, [0.0, 0.2])
+    assert ev.VERDICTS[record["verdict"]] == "error" and record["reason"] == "RuntimeError: boom second line"
+    assert record["sample_time"] >= 0.0
+
+
+def test_out_of_range_run_is_a_record_with_its_verdict():
+    c = campaign_from_mapping({
+        "campaign": {"machine": "paper_rig", "samples": 2, "input": [
+            {"key": "rotor.unbalance_phase", "distribution": "uniform", "low": "0 deg", "high": "360 deg"}]},
+        "drop": {"duration": "20 ms", "ball_stress_limit": "1000 MPa"}})
+    record = ev.evaluate_sample(c, [0.0])
+    assert ev.VERDICTS[record["verdict"]] == "ball_stress_beyond_elastic"
+    assert np.isnan(record["peak_ball_stress"]).all() and np.isnan(record["s0"]).all()
+    assert "1000 MPa" in record["reason"]
