@@ -217,7 +217,7 @@ def _friction(mu_fn, vx, vy, vz, v_eps):
 
 
 # ----------------------------------------------------------------------------- one plane
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def plane_forces(k, y, m, kin, q, out, diag):
     """Forces of touchdown plane k (module docstring).
 
@@ -234,7 +234,6 @@ def plane_forces(k, y, m, kin, q, out, diag):
     # journal axis point and its velocity (the axis point itself: rho = 0)
     jx = y[X] + a * y[TY]
     jy = y[Y] - a * y[TX]
-    jz = y[Z] + a
     rx, ry, rz = y[b + RX], y[b + RY], y[b + RZ]
     rvx, rvy, rvz, rw = y[b + RVX], y[b + RVY], y[b + RVZ], y[b + ROMEGA]
     fx_r = 0.0  # forces and torque ON the race
@@ -278,7 +277,9 @@ def plane_forces(k, y, m, kin, q, out, diag):
         diag[D_FT] = -ny * ffx + nx * ffy
         diag[D_SLIP] = -ny * sx + nx * sy
     # --- axial face contact of a rotor collar on the race face
-    zeta = jz - rz  # rotor at the plane relative to the race, axially
+    # the rotor's axial displacement against the race's (both from their positions at the drop); the
+    # plane's axial station a does not enter: the tilts move the journal axis point laterally only
+    zeta = y[Z] - rz
     gap_plus = zeta - p.axial_clearance[k]
     gap_minus = -zeta - p.axial_clearance[k]
     side = 0.0
@@ -486,7 +487,7 @@ def energy(y, m):
         delta = dist - p.clearance[k]
         if delta > 0.0:
             potential += p.line_stiffness[k] * 9.0 / 19.0 * delta ** (19.0 / 9.0)
-        zeta = y[Z] + a - y[b + RZ]
+        zeta = y[Z] - y[b + RZ]
         plus = zeta - p.axial_clearance[k]
         minus = -zeta - p.axial_clearance[k]
         if p.face_plus[k] > 0.0 and plus > 0.0:

@@ -33,7 +33,7 @@ from auxbearing.core.machine import (
 )
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def plane_diagnostics(y, m, k):
     """:data:`~auxbearing.core.machine.DIAG_FIELDS` of plane k at state ``y``."""
     out = np.zeros(y.size)
