@@ -1,6 +1,6 @@
 """Ball-raceway Hertz contact of a bearing, its sweeps and the four-point/angular comparison.
 
-Source paper Sec. II.B read as ../shared/paper/NOTES.md explains: the 1000 N "radial external
+Source paper Sec. II.B read as docs/paper_notes.md explains: the 1000 N "radial external
 load" is the radial load on one ball; a four-point ball touches each race at +alpha and -alpha
 so each contact carries Q / (2 cos alpha), an angular-contact ball carries Q / cos alpha on
 its single contact.
@@ -47,7 +47,7 @@ def compliance(bearing: BearingGeometry) -> float:
 def contact_load(bearing: BearingGeometry, ball_load: float, contact_angle: float | None = None) -> float:
     """Load on each contact of a ball under radial ball load Q [N]: Q / (pairs cos alpha).
 
-    Statics of one ball pressed radially with all its pairs loaded equally (NOTES.md on Sec. II.B).
+    Statics of one ball pressed radially with all its pairs loaded equally (docs/paper_notes.md on Sec. II.B).
     """
     alpha = bearing.contact_angle if contact_angle is None else contact_angle
     return ball_load / (bearing.pairs_per_ball * math.cos(alpha))

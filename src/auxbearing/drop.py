@@ -4,7 +4,7 @@ One code path: :func:`run_machine` integrates any :class:`~auxbearing.machine.Ma
 generic compiled integrator (:func:`auxbearing.core.integrate.dopri5`) on the machine right-hand
 side (:mod:`auxbearing.core.machine`) and its observer (:mod:`auxbearing.core.watch`).
 :func:`run_drop` is the source paper's planar drop (Sec. II.D, Eq. 17-26, Table II, read as
-../shared/paper/NOTES.md items 1-9), built as a one-plane machine with tilt and axial motion locked.
+docs/paper_notes.md items 1-9), built as a one-plane machine with tilt and axial motion locked.
 
 A run ends with a verdict: ``ok``, or the limit it crossed (the model's range, a budget, a failed
 integration). Peaks from outside the model's range are not reported as results.
@@ -275,7 +275,7 @@ def _dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: b
     ds = xr.Dataset(data, coords=coords)
     ds.attrs.update(title=f"Touchdown of {machine.name}", auxbearing_version=__version__,
                     model="rigid rotor on touchdown planes (auxbearing.core.machine); source paper Sec. II.D "
-                          "corrected per NOTES.md as its planar case",
+                          "corrected per docs/paper_notes.md as its planar case",
                     machine=json.dumps(to_jsonable(machine.describe())))
     return ds
 
@@ -411,7 +411,7 @@ def _stop_sentence(verdict: str, where: str, t: float, value: float, machine: Ma
 # ----------------------------------------------------------------------------- the paper's planar drop
 def run_drop(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = None, case: DropCase | None = None,
              progress: Callable[[float], None] | None = None) -> tuple[xr.Dataset, dict]:
-    """The source paper's rotor drop (Sec. II.D, corrected per NOTES.md) as a one-plane machine.
+    """The source paper's rotor drop (Sec. II.D, corrected per docs/paper_notes.md) as a one-plane machine.
 
     Returns the machine run's Dataset in its planar view (:func:`planar_view`) and a flat summary with the
     paper-drop keys:

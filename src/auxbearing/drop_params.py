@@ -1,6 +1,6 @@
 """Inputs of the paper's planar drop: rotor and drop-case parameters in one table (SI inside).
 
-Source paper Sec. II.D and Table II, read as ../shared/paper/NOTES.md says. Each parameter is a
+Source paper Sec. II.D and Table II, read as docs/paper_notes.md says. Each parameter is a
 :class:`~auxbearing.params.Param` row of :data:`PARAMETERS`; the dataclasses, their validation,
 the TOML ``[rotor]`` / ``[drop]`` sections and the command-line options of ``auxbearing drop`` are
 built from that table. The drop itself runs through the machine model
@@ -31,10 +31,10 @@ PARAMETERS: tuple[Param, ...] = (
     Param("rotor", "eccentricity", "length", 1e-5, "um", "nonnegative",
           "Unbalance eccentricity e of the mass centre", "Table II"),
     Param("rotor", "radius", "length", None, "mm", "optional_positive",
-          "Journal radius r; default bore/2 - clearance", "not in the paper (NOTES item 6)"),
+          "Journal radius r; default bore/2 - clearance", "not in the paper (paper_notes item 6)"),
     Param("drop", "clearance", "length", 2e-4, "mm", "positive",
           "Single-side radial clearance s between journal and inner race",
-          "not in the paper; 0.2 mm plausible for a 15 mm journal (NOTES item 6)"),
+          "not in the paper; 0.2 mm plausible for a 15 mm journal (paper_notes item 6)"),
     Param("drop", "speed", "angular_speed", 6000.0 * math.pi / 30.0, "rpm", "finite",
           "Rotor spin speed at the drop (counter-clockwise positive)", "Sec. II.D (6000 rpm)"),
     Param("drop", "unbalance_phase", "angle", 0.0, "deg", "finite",
@@ -43,7 +43,7 @@ PARAMETERS: tuple[Param, ...] = (
     Param("drop", "output_step", "time", 1e-5, "us", "positive", "Uniform output interval", "issue 4"),
     Param("drop", "race_mass", "mass", 0.0125, "kg", "positive", "Inner race mass m_b", "Table II"),
     Param("drop", "race_inertia", "inertia", 7.03e-7, "kg*m**2", "positive",
-          "Inner race polar moment of inertia J_b", "Table II (printed as 'of rotor', NOTES item 5)"),
+          "Inner race polar moment of inertia J_b", "Table II (printed as 'of rotor', paper_notes item 5)"),
     Param("drop", "line_stiffness", "line_stiffness", None, "N/m**(10/9)", "optional_positive",
           "Rotor/race line-contact constant K_l; default Palmgren with the bearing width",
           "Table II 1.468e9; Palmgren l = 11 mm gives 1.463e9"),
@@ -53,7 +53,7 @@ PARAMETERS: tuple[Param, ...] = (
           "Ball-set damping C_b on the race velocity", "Table II"),
     Param("drop", "ball_constant", "ball_constant", None, "N/m**1.5", "optional_positive",
           "Override of the ball contact constant K_b; default Hertz (Eq. 15)",
-          "Table II's 5.42e5 is plausible only in N/mm^1.5 (NOTES item 5)"),
+          "Table II's 5.42e5 is plausible only in N/mm^1.5 (paper_notes item 5)"),
     Param("drop", "sliding_friction", "dimensionless", 0.2, "", "unit_interval",
           "Rotor/race sliding friction coefficient mu_1", "Table II"),
     Param("drop", "rolling_friction", "dimensionless", 0.01, "", "unit_interval",
@@ -130,7 +130,7 @@ def _default(key: str) -> float | None:
 
 @dataclass(frozen=True)
 class DropCase:
-    """How the rotor drops and how the contact behaves. Defaults: Table II and NOTES.md.
+    """How the rotor drops and how the contact behaves. Defaults: Table II and docs/paper_notes.md.
 
     Every field takes a string with a unit ("0.2 mm", "6000 rpm") or a number in SI units
     (``speed=628.3`` is rad/s). See :data:`PARAMETERS` for the unit, rule and source of each field.

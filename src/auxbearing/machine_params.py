@@ -45,7 +45,7 @@ TOUCHDOWN: tuple[Param, ...] = (
           "Clearance between the rotor collar and the race face; absent: the plane does not catch axially",
           "ours: no axial touchdown unless given"),
     Param("touchdown", "journal_radius", "length", None, "mm", "optional_positive",
-          "Journal radius r; default bore/2 - radial_clearance", "NOTES item 6"),
+          "Journal radius r; default bore/2 - radial_clearance", "paper_notes item 6"),
     Param("touchdown", "race_mass", "mass", None, "kg", "optional_positive",
           "Inner race mass; default from bore, inner raceway diameter, width and ring density",
           "ours: the ring as a hollow cylinder from the bore to the groove bottom"),

@@ -6,7 +6,7 @@ The public layer over :mod:`auxbearing.core.ballset` (the one ball-set model) an
 (Fa, Fr, M) is Fx = Fr, My = -M, so M > 0 tilts the ring the way Eq. 10 adds r_ic theta cos(phi)
 to pair 1. Moment arm r_ic = inner groove curvature-centre radius (Harris).
 
-Axial boundary condition (NOTES.md, "How to read the static model"): ``axial_condition``
+Axial boundary condition (docs/paper_notes.md, "How to read the static model"): ``axial_condition``
 ``"free"`` solves Eq. 14/16 with the axial load given; ``"located"`` holds the ring at zero
 axial displacement and reports the axial reaction of its locating shoulder. A single
 angular-contact bearing with a free ring cannot carry a radial load or a moment without an

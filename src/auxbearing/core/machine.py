@@ -1,6 +1,6 @@
 """Right-hand side of a machine touchdown: rigid rotor, one or two touchdown planes, races, mounts.
 
-The source paper's drop (Sec. II.D, Eq. 17-26, read as ../shared/paper/NOTES.md items 1-9) is the
+The source paper's drop (Sec. II.D, Eq. 17-26, read as docs/paper_notes.md items 1-9) is the
 planar special case: one plane at the mass centre with tilt and axial motion locked. Everything is
 SI; the packing of user inputs into the NamedTuples below happens in :mod:`auxbearing.machine`.
 
@@ -21,12 +21,12 @@ touches the bearings:
   generalised forces (:func:`_apply_rotor`), so the power of every contact force equals its work
   on the coordinates and the energy audit closes to the integration error.
 
-Touchdown plane k: the journal/race line contact (Eq. 17, 19-21 with NOTES items 2-3: normal from
+Touchdown plane k: the journal/race line contact (Eq. 17, 19-21 with paper_notes items 2-3: normal from
 the centre offset, friction against the slip, regularised as tanh(|v| / v_eps) along the slip, which
 here also has an axial part), the inner race (x, y, axial z when the plane catches axially, spin) on
-THE ball-set model (:func:`auxbearing.core.ballset.accumulate`, Eq. 22 read as NOTES item 4, with the
+THE ball-set model (:func:`auxbearing.core.ballset.accumulate`, Eq. 22 read as paper_notes item 4, with the
 race tilt neglected: its tilt stiffness through the balls dwarfs the moment a line contact passes),
-isotropic ball-set damping (Eq. 23), rolling resistance (Eq. 24 as NOTES item 1 corrects it: a
+isotropic ball-set damping (Eq. 23), rolling resistance (Eq. 24 as paper_notes item 1 corrects it: a
 tangential force mu_2 |F_e| at the inner raceway of the loaded zone), an outer ring that is either
 fixed at the bearing centre or carried by a mount (stiffness with an optional dead band, damping, a
 hard stop), and an optional axial face contact of a rotor collar on the race face (linear stiffness
@@ -208,7 +208,7 @@ def _apply_rotor(q, kin, a, rho_x, rho_y, fx, fy, fz):
 
 @njit(cache=True, inline="always")
 def _friction(mu_fn, vx, vy, vz, v_eps):
-    """Regularised Coulomb friction against a slip vector: -mu F_n tanh(|v|/v_eps) v/|v| (NOTES item 3)."""
+    """Regularised Coulomb friction against a slip vector: -mu F_n tanh(|v|/v_eps) v/|v| (paper_notes item 3)."""
     speed = math.sqrt(vx * vx + vy * vy + vz * vz)
     if speed == 0.0 or mu_fn == 0.0:
         return 0.0, 0.0, 0.0

@@ -38,7 +38,7 @@ MIN_SAMPLES = 64
 #: Largest relative spread of the sampling interval accepted as uniform sampling.
 UNIFORM_TOLERANCE = 0.01
 #: Slowest sampling that can still see an impact: the rotor/race contact lasts about 0.2 ms
-#: (half the ~0.4 ms contact period, NOTES item 7), so below 5 kHz an impact is one sample or none.
+#: (half the ~0.4 ms contact period, paper_notes item 7), so below 5 kHz an impact is one sample or none.
 MIN_SAMPLING_RATE = 5e3
 
 

@@ -16,7 +16,7 @@ module is our reading, built on the same models as the drop simulation (Sec. II.
    contact normal with K_l (e - u)^(10/9) = F_ball(u), solved per sample by bisection. The
    race (12.5 g on a ball set of ~1e8 N/m) rings at ~10 kHz, above the ~2.5 kHz of an impact,
    so its inertia is a small correction; the line-contact damping C_l d(delta)/dt of Eq. 19 is
-   added to the force from the filtered rate. Ball loads and the max ball stress (NOTES item 9)
+   added to the force from the filtered rate. Ball loads and the max ball stress (paper_notes item 9)
    follow from u through the same ball-set model;
 3. whirl from the complex spectrum of x + i y
    (:func:`auxbearing.whirl.spectral_whirl`), impacts by counting
@@ -447,7 +447,7 @@ def orbit_features(orbit: xr.Dataset, clearance: float, line_stiffness: float, b
              "race_displacement": ("m", "Inner race displacement in the ball set (quasi-static split)"),
              "contact_force": ("N", "Rotor/race contact force estimated from the orbit (Eq. 19)"),
              "max_ball_load": ("N", "Largest ball contact-pair load (shared ball-set model)"),
-             "max_ball_stress": ("Pa", "Hertz max stress of the most loaded ball contact (NOTES item 9)")}
+             "max_ball_stress": ("Pa", "Hertz max stress of the most loaded ball contact (paper_notes item 9)")}
     for name, (unit, long_name) in units.items():
         ds[name] = ("time", c[name], {"units": unit, "long_name": long_name})
     ds["ball_load"] = (("time", "ball", "pair"), c["ball_load"],

@@ -142,7 +142,7 @@ def write_csv(path: str | Path, channels: dict, truth: dict) -> Path:
     path = Path(path)
     lines = [
         "# SYNTHETIC DATA - not a measurement. Made by auxbearing.experiment.synth:",
-        "# the auxbearing drop simulation (source paper Sec. II.D, Table II, corrected per NOTES.md)",
+        "# the auxbearing drop simulation (source paper Sec. II.D, Table II, corrected per docs/paper_notes.md)",
         "# with a levitated stretch before the drop, a sensor offset, white noise, a causal 4th-order",
         "# Butterworth anti-alias low-pass, sampling and rounding on top. True values below (SI).",
         "# synthetic = true",

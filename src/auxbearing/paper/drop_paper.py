@@ -26,12 +26,12 @@ PAPER_DROP = {
     "QJ202": {"peak_contact_force_N": 618.0, "peak_ball_stress_MPa": 1483.0},
     "7202": {"peak_contact_force_N": 391.0, "peak_ball_stress_MPa": 1634.0},
 }
-#: Table II's K_b = 5.42e5 read as N/mm^1.5 (NOTES item 5), in N/m^1.5.
+#: Table II's K_b = 5.42e5 read as N/mm^1.5 (paper_notes item 5), in N/m^1.5.
 PAPER_BALL_CONSTANT = 5.42e5 * 1e3**1.5
 
 #: Inputs the paper leaves out and what we use (reported with every comparison).
 UNSTATED = (
-    ("clearance s", "0.2 mm", "not given; plausible for a 15 mm journal (NOTES item 6), swept 0.1-0.3 mm"),
+    ("clearance s", "0.2 mm", "not given; plausible for a 15 mm journal (paper_notes item 6), swept 0.1-0.3 mm"),
     ("rotor radius r", "bore/2 - s = 7.3 mm", "not given; r + s must equal the 7.5 mm race bore radius"),
     ("K_b", "Hertz Eq. 15 at each loaded contact angle (8.05e9 N/m^1.5 at 35 deg)",
      "Table II's 5.42e5 'N/m^1.5' is implausible; as N/mm^1.5 (1.71e10 N/m^1.5) run as a variant"),
@@ -47,7 +47,7 @@ UNSTATED = (
     ("ball-set damping direction", "isotropic on the race velocity", "Eq. 23 damps the radial rate only"),
     ("gravity", "9.80665 m/s^2 along -y", "not stated"),
     ("integration", "DOPRI5, rtol = atol = 1e-6 (scaled), max step 50 us", "paper: fixed-step RK4 at 100 us "
-     "(too coarse for the ~0.4 ms contact, NOTES item 7)"),
+     "(too coarse for the ~0.4 ms contact, paper_notes item 7)"),
 )
 
 _KEYS = ("peak_contact_force_N", "peak_ball_stress_MPa")

@@ -109,8 +109,8 @@ def run_contact_stage(bearing: BearingGeometry, ball_load: float, angles_deg, ra
     ]
     assumptions = [
         Assumption("Load of the contact study", f"{ball_load:g} N radial load on one ball, split Q/(2 cos α) "
-                   "per contact (four-point), Q/cos α (angular)", "NOTES.md reading of Sec. II.B; reproduces "
-                   "2616 MPa within 0.3 %."),
+                   "per contact (four-point), Q/cos α (angular)",
+                   "docs/paper_notes.md reading of Sec. II.B; reproduces 2616 MPa within 0.3 %."),
         Assumption("Ellipticity", "exact elliptic integrals (AGM), solved to machine precision",
                    "The paper's a*, b* come from charts; Hamrock-Brewe fits err by up to 3.8 % in κ."),
         Assumption("Materials", "GCr15 balls, 42CrMo rings, both E = 207 GPa, ν = 0.3", "Paper Sec. II.B."),
