@@ -189,3 +189,11 @@ def test_large_ball_form_is_continuous_at_one_inch():
     below = cf.dynamic_load_rating(25.4e-3 * (1 - 1e-12), 150e-3, 12, 0.0)
     above = cf.dynamic_load_rating(25.4e-3 * (1 + 1e-12), 150e-3, 12, 0.0)
     assert above == pytest.approx(below, rel=1e-3)
+
+
+def test_four_point_bearing_is_rated_as_two_rows_of_its_contact_angle():
+    """ISO 281: C of i rows is i^0.7 times one row; the four-point QJ202 counts as two 35 deg rows."""
+    qj = get_bearing("QJ202")
+    single_row = cf.dynamic_load_rating(qj.ball_diameter, qj.pitch_diameter, qj.ball_count, qj.contact_angle, rows=1)
+    assert dynamic_load_rating(qj) / single_row == pytest.approx(2.0**0.7, rel=1e-12)
+    assert qj.contact_angle == pytest.approx(math.radians(35.0))
