@@ -140,16 +140,6 @@ def test_summary_keys_match_the_issue():
     json.dumps(s)
 
 
-def test_regression_qj202_combined_load():
-    """Regression (not validation): values this code gave at the commit that added it."""
-    s = an.summary(an.load_distribution(QJ202, axial=500, radial=1000))
-    assert s["axial_displacement_um"] == pytest.approx(10.2421, rel=1e-4)
-    assert s["radial_displacement_um"] == pytest.approx(12.4991, rel=1e-4)
-    assert s["tilt_mrad"] == pytest.approx(-0.82285, rel=1e-4)
-    assert s["max_contact_load_N"] == pytest.approx(274.816, rel=1e-4)
-    assert s["max_stress_MPa"] == pytest.approx(2004.67, rel=1e-4)
-
-
 def test_stribeck_discrete_constant():
     assert an.stribeck_discrete_constant(11) == pytest.approx(11 / (1 + 2 * (np.cos(2 * np.pi / 11) ** 2.5
                                                                               + np.cos(4 * np.pi / 11) ** 2.5)))
