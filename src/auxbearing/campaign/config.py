@@ -11,6 +11,7 @@ laid over it (``[drop] duration = "20 ms"`` shortens every run), and::
     analysis = "drop"        # or "coastdown"
     [[campaign.input]]
     key = "rotor.unbalance_phase"           # rotor.<key>, drop.<key>, touchdown.<plane>.<key>, touchdown.*.<key>
+                                            # (and the keys of any other parameter table, e.g. coastdown.<key>)
     distribution = "uniform"                # uniform, normal, lognormal, truncated_normal or list
     low = "0 deg"
     high = "360 deg"
@@ -36,11 +37,12 @@ from auxbearing.params import Param, si_unit
 
 SAMPLERS = ("sobol", "lhs", "random", "saltelli")
 ANALYSES = ("drop", "coastdown")
-MACHINE_TABLES = ("machine", "rotor", "touchdown", "drop")
+#: Tables of a machine file: [machine] and one per parameter table (rotor, touchdown, drop, ...).
+MACHINE_TABLES = ("machine", *TABLES)
 CAMPAIGN_KEYS = ("machine", "sampler", "samples", "seed", "analysis", "input", "batch_size", "required_s0",
                  "second_order", "whirl_map")
 #: Required static safety factor when the file gives none: s0 = 1 is where the peak ball stress reaches
-#: ISO 76's 4200 MPa reference, i.e. a permanent set of 1e-4 of the ball diameter (ISO 76:2006, Sec. 6.1).
+#: ISO 76's 4200 MPa reference for ball bearings, where the permanent set is 1e-4 of the ball diameter (ISO 76:2006).
 DEFAULT_REQUIRED_S0 = 1.0
 #: Most runs one campaign may hold (a guard against a typo such as samples = 1e9).
 MAX_RUNS = 10_000_000
@@ -196,13 +198,13 @@ the machine has 1 touchdown plane (touchdown.0)
     parts = key.strip().split(".")
     field_ = where + ".key"
     section = parts[0]
-    shape = {"rotor": "rotor.<key>", "drop": "drop.<key>", "touchdown": "touchdown.<plane>.<key>"}
     if section not in TABLES:
-        raise InputError.for_field(field_, key, "names nothing a campaign can vary; keys start with rotor., "
-                                   "drop. or touchdown.<plane>.")
+        raise InputError.for_field(field_, key, "names nothing a campaign can vary; keys start with "
+                                   + ", ".join(f"{s}.<plane>." if s == "touchdown" else f"{s}." for s in TABLES))
     depth = 3 if section == "touchdown" else 2
     if len(parts) != depth or not all(parts):
-        raise InputError.for_field(field_, key, f"names nothing: write {shape[section]}")
+        shape = "touchdown.<plane>.<key>" if section == "touchdown" else f"{section}.<key>"
+        raise InputError.for_field(field_, key, f"names nothing: write {shape}")
     name = parts[-1]
     if section == "touchdown" and name in TOUCHDOWN_TEXT:
         raise InputError.for_field(field_, key, "names a text, not a quantity; a campaign varies numbers")
@@ -261,8 +263,9 @@ def apply_sample(tables: dict, inputs: tuple[CampaignInput, ...], values, as_qua
     """
     # copies of the tables the inputs write into; the caller's tables stay as they were
     out = {key: dict(value) if isinstance(value, dict) else value for key, value in tables.items()}
-    for key in ("rotor", "drop"):
-        out.setdefault(key, {})
+    for inp in inputs:
+        if inp.section != "touchdown":
+            out.setdefault(inp.section, {})
     out["touchdown"] = [dict(t) for t in tables.get("touchdown", [])]
     if as_quantity:
         from auxbearing.units import Quantity
@@ -303,11 +306,11 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     if analysis not in ANALYSES:
         raise InputError.for_field("campaign.analysis", head.get("analysis"), "use one of " + ", ".join(ANALYSES))
     if analysis == "coastdown":
-        from importlib.util import find_spec
-
-        if find_spec("auxbearing.coastdown") is None:
+        try:
+            from auxbearing.coastdown import run_coastdown  # noqa: F401
+        except ImportError:
             raise InputError.for_field("campaign.analysis", "coastdown", "the coast-down model (auxbearing.coastdown) "
-                                       "is not in this version yet; use analysis = 'drop'")
+                                       "is not in this version yet; use analysis = 'drop'") from None
     second_order = head.get("second_order", False)
     if not isinstance(second_order, bool):
         raise InputError.for_field("campaign.second_order", second_order, "must be true or false")

@@ -102,8 +102,8 @@ def _prepared(campaign: Campaign) -> dict:
             return out
 
         tables = dict(campaign.tables)
-        for section in ("rotor", "drop"):
-            if isinstance(tables.get(section), dict):
+        for section in TABLES:
+            if section != "touchdown" and isinstance(tables.get(section), dict):
                 tables[section] = convert_table(section, tables[section])
         tables["touchdown"] = [convert_table("touchdown", t) for t in tables.get("touchdown", [])]
         _PREPARED.clear()

@@ -61,7 +61,7 @@ def _client(scheduler: str | None, workers: int | None):
             raise InputError.for_field("--scheduler", scheduler, f"no Dask scheduler answers there ({err})") from None
     n = workers or cores()
     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
-                           silence_logs=logging.ERROR)
+                           silence_logs=logging.CRITICAL)
     return Client(cluster), cluster
 
 
@@ -118,8 +118,9 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
             warm = client.run(warm_up, campaign)
         except InputError:
             raise
-        except Exception as err:
-            raise InputError(f"scheduler: its workers cannot run auxbearing ({type(err).__name__}: {err})") from None
+        except Exception as err:  # nothing can run there: say so in one line instead of failing every sample
+            where = f"the workers of {scheduler}" if scheduler else "the local workers"
+            raise InputError(f"{where} cannot run a drop of this campaign ({type(err).__name__}: {err})") from None
         out["warm_up_s"] = max(warm.values(), default=0.0)
         out["startup_s"] = time.perf_counter() - start
         shared = client.scatter(campaign, broadcast=True)
