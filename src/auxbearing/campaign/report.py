@@ -16,7 +16,8 @@ import numpy as np
 from auxbearing.campaign.statistics import QUANTILES, campaign_statistics, sample_outputs, verdict_masks
 from auxbearing.errors import InputError
 
-PROBABILITIES = ("p_backward_whirl", "p_out_of_range", "p_s0_below_required", "p_s0_below_required_or_out_of_range")
+PROBABILITIES = ("p_backward_whirl", "p_backward_whirl_at_end", "p_out_of_range", "p_s0_below_required",
+                 "p_s0_below_required_or_out_of_range")
 
 
 def _write_csv(path: Path, header: list[str], rows: list[list]) -> None:

@@ -3,6 +3,9 @@
 Probabilities carry Wilson score intervals, quantiles percentile-bootstrap intervals; sensitivity is
 given as Sobol' indices through SALib on a Saltelli design, Spearman rank correlations otherwise.
 
+Backward whirl counts when a plane whirls backward at the end or had sustained backward whirl at some
+time (:mod:`auxbearing.whirl`); ``p_backward_whirl_at_end`` counts the first kind only.
+
 Which runs count: a probability of a drop outcome (backward whirl, s0 below the required value) is
 taken over the runs that ended ``ok``, since a run stopped outside the model's range has no valid
 peaks; how often runs leave the range is its own probability over every completed sample; a
@@ -224,6 +227,14 @@ def _sensitivity(ds, masks: dict, outputs: dict) -> dict:
     return result
 
 
+def _backward_at_end(ds) -> np.ndarray:
+    """Per sample: some plane's whirl class at the end is a backward one."""
+    from auxbearing.campaign.evaluate import BACKWARD_CLASSES
+
+    names = np.array(ds.attrs["whirl_classes"], dtype=object)[ds["whirl"].values.astype(int)]
+    return np.isin(names, BACKWARD_CLASSES).any(axis=1)
+
+
 def _required_source(required: float, given: bool) -> str:
     from auxbearing.campaign.config import DEFAULT_REQUIRED_S0
 
@@ -249,6 +260,8 @@ def campaign_statistics(ds, required_s0: float | None = None, seed: int = 0) -> 
         "failed": int(masks["failed"].sum()), "out_of_range": int(oor.sum()),
         "verdicts": {k: v for k, v in counts.items() if v},
         "p_backward_whirl": _probability(int((whirl[ok] > 0.5).sum()), int(ok.sum()), "runs that ended ok"),
+        "p_backward_whirl_at_end": _probability(int(_backward_at_end(ds)[ok].sum()), int(ok.sum()),
+                                                "runs that ended ok"),
         "p_out_of_range": _probability(int(oor.sum()), int(done.sum()), "completed samples"),
         "p_s0_below_required": _probability(int((s0[ok] < required).sum()), int(ok.sum()), "runs that ended ok"),
         "p_s0_below_required_or_out_of_range": _probability(int((s0[ok] < required).sum() + oor.sum()),
@@ -289,6 +302,7 @@ def headline(stats: dict) -> dict:
     return {"samples": stats["samples"], "completed": stats["completed"], "ok": stats["ok"],
             "failed": stats["failed"], "out_of_range": stats["out_of_range"],
             "p_backward_whirl": {k: whirl[k] for k in ("value", "low", "high", "trials")},
+            "p_backward_whirl_at_end": {k: stats["p_backward_whirl_at_end"][k] for k in ("value", "low", "high")},
             "peak_ball_stress_MPa": {k: stress[k] for k in ("p50", "p95", "p99", "interval")},
             "p_s0_below_required": {k: stats["p_s0_below_required"][k] for k in ("value", "low", "high")},
             "required_s0": stats["required_s0"]}

@@ -24,6 +24,8 @@ SEVERITY = ("none", "forward", "backward_rolling", "backward", "dry_whip")
 ISO76_BALL_STRESS_MPA = 4200.0
 #: The ISO 76 line is drawn when the largest stress reaches this fraction of it.
 NEAR_REFERENCE = 0.6
+#: Runs per cell the whirl map aims at when it chooses its bins.
+RUNS_PER_BIN = 10
 #: Most inputs a scatter matrix shows (beyond this the panels become unreadable).
 MAX_MATRIX_INPUTS = 6
 
@@ -104,10 +106,27 @@ def _scatter_classes(ax, x, y, classes, size=8) -> None:
                    label="not ok (out of range or failed)")
 
 
+def _strongest_inputs(ds) -> list[str]:
+    from auxbearing.campaign.statistics import rank_correlations, verdict_masks
+
+    names = [str(k) for k in ds["input"].values]
+    ok = verdict_masks(ds)["ok"]
+    if len(names) <= MAX_MATRIX_INPUTS or ok.sum() < 3:
+        return names
+    rho = rank_correlations(ds["value"].values[ok], ds["backward_whirl"].max("plane").values[ok], names)
+    strength = {k: abs(v["rho"]) if np.isfinite(v["rho"]) else -1.0 for k, v in rho.items()}
+    chosen = sorted(names, key=lambda k: -strength[k])[:MAX_MATRIX_INPUTS]
+    return [k for k in names if k in chosen]
+
+
 def plot_scatter_matrix(ds, keys=None, fig=None) -> Figure:
-    """Pairs of inputs, each sample coloured by its whirl class; histograms of the inputs on the diagonal."""
+    """Pairs of inputs, each sample coloured by its whirl class; histograms of the inputs on the diagonal.
+
+    Without ``keys``, a campaign of more than :data:`MAX_MATRIX_INPUTS` inputs shows those whose rank
+    correlation with backward whirl is strongest.
+    """
     done = ds["completed"].values.astype(bool)
-    keys = list(keys or [str(k) for k in ds["input"].values])[:MAX_MATRIX_INPUTS]
+    keys = list(keys or _strongest_inputs(ds))[:MAX_MATRIX_INPUTS]
     classes = sample_classes(ds)[done]
     columns = [_input(ds, k) for k in keys]
     n = len(keys)
@@ -139,8 +158,12 @@ def plot_scatter_matrix(ds, keys=None, fig=None) -> Figure:
     return fig
 
 
-def plot_whirl_map(ds, x_key: str, y_key: str, ax=None, bins: int = 12) -> Figure:
-    """Probability of backward whirl over two inputs (binned, ok runs) with every sample's whirl class."""
+def plot_whirl_map(ds, x_key: str, y_key: str, ax=None, bins: int | None = None) -> Figure:
+    """Probability of backward whirl over two inputs (binned, ok runs) with every sample's whirl class.
+
+    ``bins`` per axis default to about :data:`RUNS_PER_BIN` runs per cell. Samples that had sustained
+    backward whirl at some time are ringed in black, whatever their class at the end.
+    """
     fig, ax = _axes(ax, (6.5, 5))
     from auxbearing.campaign.statistics import verdict_masks
 
@@ -155,6 +178,7 @@ def plot_whirl_map(ds, x_key: str, y_key: str, ax=None, bins: int = 12) -> Figur
     masks = verdict_masks(ds)
     ok, done = masks["ok"], masks["completed"]
     flag = ds["backward_whirl"].max("plane").values
+    bins = bins or int(np.clip(round(math.sqrt(ok.sum() / RUNS_PER_BIN)), 2, 12))
     if ok.sum() >= 1 and np.ptp(x[ok]) > 0 and np.ptp(y[ok]) > 0:
         edges = (np.linspace(x[ok].min(), x[ok].max(), bins + 1), np.linspace(y[ok].min(), y[ok].max(), bins + 1))
         hits, *_ = np.histogram2d(x[ok], y[ok], bins=edges, weights=(flag[ok] > 0.5).astype(float))
@@ -163,10 +187,15 @@ def plot_whirl_map(ds, x_key: str, y_key: str, ax=None, bins: int = 12) -> Figur
             share = np.where(total > 0, hits / total, np.nan)
         mesh = ax.pcolormesh(edges[0], edges[1], share.T, cmap="Purples", vmin=0.0, vmax=1.0, alpha=0.6)
         fig.colorbar(mesh, ax=ax, label="share of runs with backward whirl")
+    ringed = ok & (flag > 0.5)
+    if ringed.any():
+        ax.scatter(x[ringed], y[ringed], s=40, facecolors="none", edgecolors="black", linewidths=0.7,
+                   label="sustained backward whirl at some time")
     _scatter_classes(ax, x[done], y[done], sample_classes(ds)[done], size=10)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
-    ax.legend(fontsize=7, loc="best", title="whirl at the end", title_fontsize=7)
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, title="whirl at the end",
+              title_fontsize=7)
     ax.set_title("Backward whirl over two inputs")
     return fig
 
