@@ -7,21 +7,33 @@ g; Hairer & Wanner, Solving ODEs II, Sec. IV.15) and an event located on the den
 """
 
 import math
+import sys
 
+import numba
 import numpy as np
 import pytest
 from numba import njit
 
+from auxbearing.core import cache_folder
 from auxbearing.core import integrate as ig
 
+# The test problems inline the core's integrator, so they are cached where the core's kernels are: in the
+# folder named by the fingerprint of every core source (auxbearing.core). A change in the core gives a new
+# folder and a recompilation; numba's own cache index watches this file. Compiling them afresh takes ~15 s.
+# Functions passed as arguments are named as attributes of this module (``here.oscillator``): numba caches
+# the caller then, not when they are plain global names (auxbearing.core.drive does the same).
+_numba_cache_dir = numba.config.CACHE_DIR
+numba.config.CACHE_DIR = cache_folder()
+here = sys.modules[__name__]
 
-@njit
+
+@njit(cache=True)
 def oscillator(t, y, model, out):
     out[0] = y[1]
     out[1] = -y[0]
 
 
-@njit
+@njit(cache=True)
 def kepler(t, y, model, out):
     r3 = (y[0] ** 2 + y[1] ** 2) ** 1.5
     out[0] = y[2]
@@ -30,41 +42,44 @@ def kepler(t, y, model, out):
     out[3] = -y[1] / r3
 
 
-@njit
+@njit(cache=True)
 def prothero_robinson(t, y, model, out):
     lam = model[0]
     out[0] = lam * (y[0] - math.sin(t)) + math.cos(t)
 
 
-@njit
+@njit(cache=True)
 def nothing(t, h, y0, y1, coeff, model, obs):
     return 0
 
 
-@njit
+@njit(cache=True)
 def height(y, model, arg):
     return -y[0]  # positive once the ball is below the floor
 
 
-@njit
+@njit(cache=True)
 def stop_at_floor(t, h, y0, y1, coeff, model, obs):
     if y1[0] < 0.0 <= y0[0]:
         tmp = np.empty(y1.size)
-        obs[0] = t + ig.dense_root(height, coeff, model, tmp, 0) * h
+        obs[0] = t + ig.dense_root(here.height, coeff, model, tmp, 0) * h
         return 1
     return 0
 
 
-@njit
+@njit(cache=True)
 def run(rhs_id, observe_id, model, obs, y, t_end, settings, memory, grid):
     """The loop specialised for each test problem (named here: numba needs the functions at compile time)."""
     if observe_id == 1:
-        return ig.dopri5(oscillator, stop_at_floor, model, obs, y, t_end, settings, memory, grid)
+        return ig.dopri5(here.oscillator, here.stop_at_floor, model, obs, y, t_end, settings, memory, grid)
     if rhs_id == 0:
-        return ig.dopri5(oscillator, nothing, model, obs, y, t_end, settings, memory, grid)
+        return ig.dopri5(here.oscillator, here.nothing, model, obs, y, t_end, settings, memory, grid)
     if rhs_id == 1:
-        return ig.dopri5(kepler, nothing, model, obs, y, t_end, settings, memory, grid)
-    return ig.dopri5(prothero_robinson, nothing, model, obs, y, t_end, settings, memory, grid)
+        return ig.dopri5(here.kepler, here.nothing, model, obs, y, t_end, settings, memory, grid)
+    return ig.dopri5(here.prothero_robinson, here.nothing, model, obs, y, t_end, settings, memory, grid)
+
+
+numba.config.CACHE_DIR = _numba_cache_dir  # numba picks the folder when a function is decorated
 
 
 def _solve(rhs_id, y0, t_end, rtol, model=None, observe_id=0, n_out=0, output_step=1.0, max_step=1e9):
