@@ -48,7 +48,11 @@ DEFAULT_REQUIRED_S0 = 1.0
 MAX_RUNS = 10_000_000
 #: A batch is sized so that a campaign has about this many tasks (load balance and progress) ...
 TARGET_BATCHES = 64
-#: ... and holds at most this many samples (a lost worker loses little).
+#: ... holds at least this many samples once the campaign has 16 batches of them (a store write costs
+#: ~50-80 ms of the client's time, which should stay small against a batch's drops) ...
+MIN_BATCH = 8
+#: ... and at most this many (a lost worker loses little). The size depends on the campaign only, not on
+#: the cluster, so a store can be resumed anywhere.
 MAX_BATCH = 32
 #: An unbounded distribution that puts more than this share of its samples outside the input's rule
 #: is reported in the campaign's notes (those samples become ``invalid_input`` records).
@@ -336,7 +340,8 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
         else samples
     if runs > MAX_RUNS:
         raise InputError.for_field("campaign.samples", samples, f"gives {runs} runs, more than {MAX_RUNS}")
-    batch = _integer(head, "batch_size", min(MAX_BATCH, max(1, math.ceil(runs / TARGET_BATCHES))), 1, MAX_RUNS)
+    default_batch = min(MAX_BATCH, max(math.ceil(runs / TARGET_BATCHES), min(MIN_BATCH, math.ceil(runs / 16))))
+    batch = _integer(head, "batch_size", default_batch, 1, MAX_RUNS)
     return Campaign(name=machine.name if name == "campaign" else name, tables=tables,
                     base=None if base is None else str(Path(base).resolve()), sampler=sampler, samples=samples,
                     seed=seed, analysis=analysis, inputs=inputs, batch_size=batch,
