@@ -48,6 +48,7 @@ def test_files_are_small_and_say_synthetic():
         assert "SYNTHETIC" in head
 
 
+@pytest.mark.slow
 def test_recovers_friction_clearance_and_phase(example):
     bearing, (_, summary, _) = example
     assert summary["synthetic"] is True
@@ -61,6 +62,7 @@ def test_recovers_friction_clearance_and_phase(example):
     assert rows["sliding_friction"]["start"] == pytest.approx(0.2)
 
 
+@pytest.mark.slow
 def test_peak_stress_from_the_orbit(example):
     _, (datasets, summary, figures) = example
     true_stress = summary["truth"]["simulated_peak_ball_stress_MPa"]

@@ -49,6 +49,7 @@ def expected_damage(b, revs, radial, rows=None):
     return revs / (cf.rating_life(rating, radial) * cf.RATING_REVOLUTIONS)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["209", "QJ202", "218"])
 def test_constant_rated_load_gives_n_over_l10(name):
     b, t, speed, s, radial = stribeck_drop(name)
@@ -58,6 +59,7 @@ def test_constant_rated_load_gives_n_over_l10(name):
     assert r["race_revolutions"] == pytest.approx(20.0)
 
 
+@pytest.mark.slow
 def test_finer_points_converge_to_n_over_l10():
     b, t, speed, s, radial = stribeck_drop("209")
     r = drop_damage(t, speed, s["inner"], s["outer"], b, ball_angles="cage", elements=4000)

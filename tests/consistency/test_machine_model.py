@@ -41,6 +41,7 @@ def _integrate(km, y, t_end, n_out=0, out_step=1.0):
     return status, grid
 
 
+@pytest.mark.slow
 def test_symmetric_two_plane_rotor_is_the_planar_drop_at_each_plane():
     one = run_machine(read_machine("paper_rig")).summary["planes"][0]
     two = run_machine(read_machine("paper_rig_two_planes")).summary["planes"]
@@ -77,6 +78,7 @@ def test_free_rotor_nutates_at_jp_omega_over_jt_and_keeps_energy_and_momentum():
     np.testing.assert_allclose(energy, energy[0], rtol=1e-9)
 
 
+@pytest.mark.slow
 def test_rotor_at_rest_shares_its_weight_by_the_lever_rule_and_sags_as_statics_says():
     """Mass centre at a = 0.05 m from plane 0 and 0.15 m from plane 1 of a 4 kg rotor with no spin: the
     planes carry 3/4 and 1/4 of its weight; each race sits where the static solver puts it under that
@@ -97,6 +99,7 @@ def test_rotor_at_rest_shares_its_weight_by_the_lever_rule_and_sags_as_statics_s
         assert float(run.dataset.race_y.isel(plane=k).values[-1]) == pytest.approx(sol.displacement[0, 2], rel=2e-3)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("thrust", [500.0, -500.0])
 def test_four_point_plane_under_thrust_settles_with_the_static_axial_displacement(thrust):
     m = _machine({"mass": "2 kg", "polar_inertia": "1e-3 kg*m^2", "speed": "0 rpm", "axial_force": f"{thrust} N"},
@@ -159,6 +162,7 @@ def test_heavy_fast_rotor_stops_with_its_cause():
     assert summary["planes"][0]["peak_contact_force_N"] is None  # nothing from outside the range is reported
 
 
+@pytest.mark.slow
 def test_whirl_verdict_of_a_settled_run_does_not_change_when_extended():
     machine = read_machine("paper_rig")
     short = run_machine(machine, duration=0.15).summary["planes"][0]

@@ -30,6 +30,7 @@ def _peaks(summary):
     return np.array([summary["peak_contact_force_N"], summary["peak_ball_stress_MPa"]])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", BEARINGS)
 def test_peaks_converge_as_the_tolerance_tightens(name):
     """Full 0.15 s Table II drop: rtol 1e-5 -> 1e-6 (default) -> 1e-7 change the peaks by < 1 %.
@@ -83,6 +84,7 @@ def test_energy_is_conserved_without_friction_damping_and_unbalance(name):
     assert drift < 1e-5
 
 
+@pytest.mark.slow
 @settings(max_examples=4, deadline=None)
 @given(clearance=st.floats(0.05e-3, 0.4e-3), frac=st.floats(0.0, 0.9), phase=st.floats(0, 2 * math.pi),
        name=st.sampled_from(BEARINGS))

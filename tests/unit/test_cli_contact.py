@@ -64,6 +64,7 @@ def test_user_mistakes_print_one_line_and_exit_2(args, message):
     assert "Traceback" not in result.output
 
 
+@pytest.mark.slow
 def test_bad_toml_value_from_a_real_process(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text(EXAMPLE.read_text().replace("inner_groove_ratio = 0.52", "inner_groove_ratio = 0.49"))
@@ -75,6 +76,7 @@ def test_bad_toml_value_from_a_real_process(tmp_path):
     assert proc.stdout == ""
 
 
+@pytest.mark.slow
 def test_contact_sweep_writes_data_and_figures(tmp_path):
     out = tmp_path / "sweep"
     result = run("contact-sweep", "--out", str(out), "--angle-range", "10", "75", "5",

@@ -34,6 +34,7 @@ def test_plain_numbers_take_the_documented_units():
                                                              "compile_or_cache_load_s": a["compile_or_cache_load_s"]}
 
 
+@pytest.mark.slow
 def test_drop_out_writes_netcdf_figures_and_summary(tmp_path):
     out = tmp_path / "run"
     r = _run("drop", "--bearing", "7202", "--duration", "0.012", "--output-step", "50us", "--out", str(out),
@@ -73,6 +74,7 @@ def test_config_file_and_options_override_it(tmp_path):
     assert r.exit_code == 2 and "drop.sliding_friction = 2.0: must lie in [0, 1]" in r.output
 
 
+@pytest.mark.slow
 def test_drop_compare_writes_the_comparison(tmp_path):
     out = tmp_path / "cmp"
     r = _run("drop-compare", "--out", str(out), "--json", "--quiet", "--duration", "0.012",

@@ -37,6 +37,7 @@ def hand_written_csv(path):
     return path
 
 
+@pytest.mark.slow
 def test_hand_written_csv_without_fit(tmp_path):
     path = hand_written_csv(tmp_path / "hand.csv")
     out = tmp_path / "out"
@@ -60,6 +61,7 @@ def test_hand_written_csv_without_fit(tmp_path):
     ds.close()
 
 
+@pytest.mark.slow
 def test_short_synthetic_drop_with_fit_and_table(tmp_path):
     channels, truth = synthesize("QJ202", case=DropCase(sliding_friction=0.15, clearance=0.18e-3),
                                  sensor=SensorModel(pre_drop=2e-3), duration=0.02)
@@ -100,6 +102,7 @@ def test_bad_row_in_the_file_is_named(tmp_path):
     assert "column 'x [mm]', line 41: 'x' is not a number" in result.output
 
 
+@pytest.mark.slow
 def test_units_given_as_options(tmp_path):
     t = np.arange(800) * 2e-5
     y = np.where(t > 2e-3, -0.5 * 9.80665 * (t - 2e-3) ** 2, 0.0)

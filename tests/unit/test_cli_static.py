@@ -82,6 +82,7 @@ def test_help_names_units():
     assert "N*m" in text and "'1 kN'" in text and "located" in text
 
 
+@pytest.mark.slow
 def test_static_study_writes_data_and_figures(tmp_path):
     out = tmp_path / "static"
     result = run("static-study", "--out", str(out), "--json")

@@ -54,6 +54,7 @@ def test_cli_user_mistake_exits_2_and_leaves_no_folder(tmp_path):
     assert missing.exit_code == 2 and "not found" in missing.output
 
 
+@pytest.mark.slow
 def test_contact_stage_writes_report_and_results(tmp_path):
     out = tmp_path / "study"
     result = CliRunner().invoke(cli, ["study", "--stage", "contact", "--out", str(out), "--quiet", "--json"])
