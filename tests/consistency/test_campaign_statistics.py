@@ -137,7 +137,6 @@ def _ishigami_campaign(sampler, samples):
                    "high": f"{math.pi!r} m"}]}})
 
 
-@pytest.mark.slow
 def test_sobol_indices_of_ishigami_through_the_campaign_path(tmp_path):
     c = _ishigami_campaign("saltelli", 4096)
     points = design(c)

@@ -117,3 +117,36 @@ def test_out_of_range_run_is_a_record_with_its_verdict():
     assert ev.VERDICTS[record["verdict"]] == "ball_stress_beyond_elastic"
     assert np.isnan(record["peak_ball_stress"]).all() and np.isnan(record["s0"]).all()
     assert "1000 MPa" in record["reason"]
+
+
+@pytest.mark.slow
+def test_coastdown_campaign_records_heat_and_life(tmp_path):
+    pytest.importorskip("auxbearing.coastdown")
+    from auxbearing.campaign.statistics import campaign_statistics
+
+    c = campaign_from_mapping({
+        "campaign": {"machine": "paper_rig", "samples": 2, "analysis": "coastdown", "batch_size": 2, "input": [
+            {"key": "touchdown.0.sliding_friction", "distribution": "uniform", "low": 0.1, "high": 0.3},
+            {"key": "coastdown.ambient_temperature", "distribution": "normal", "mean": "20 degC", "std": "3 K"}]},
+        "drop": {"duration": "20 ms"}, "coastdown": {"max_time": "0.3 s"}})
+    assert c.inputs[1].distribution.params == pytest.approx((293.15, 3.0))
+    points = design(c)
+    path = tmp_path / "s.zarr"
+    prepare_store(path, c, points)
+    write_batch(path, 0, ev.evaluate_batch(c, points.values))
+    ds = load_results(path)
+    assert (ds["verdict"].values == ev.VERDICTS.index("ok")).all()
+    ambient_c = points.values[:, 1] - 273.15  # each sample's own ambient: friction heat lifts the parts above it
+    assert (ds["max_temperature"].values[:, 0] > ambient_c).all() and (ds["damage_per_drop"].values > 0.0).all()
+    assert np.isnan(ds["coastdown_time"].values).all()  # 0.3 s is too short to stand still
+    assert np.isfinite(ds["peak_ball_stress"].values).all()
+    stats = campaign_statistics(ds)
+    assert {"max_temperature_C", "damage_per_drop", "allowed_drops_min"} <= set(stats["quantiles"])
+
+
+def test_temperature_spread_in_degrees_celsius_is_refused():
+    with pytest.raises(InputError, match="a spread of temperature is given in K"):
+        campaign_from_mapping({
+            "campaign": {"machine": "paper_rig", "samples": 2, "input": [
+                {"key": "coastdown.ambient_temperature", "distribution": "normal", "mean": "20 degC",
+                 "std": "3 degC"}]}})

@@ -168,6 +168,9 @@ def distribution_from_table(table: dict, param: Param, where: str) -> Distributi
         for i, v in enumerate(numbers):
             check(param, v, f"{where}.values.{i}")
         return Distribution(kind, numbers)
+    if param.dimension == "temperature" and isinstance(table.get("std"), str) and "deg" in table["std"]:
+        # "5 degC" would be read as a temperature (278 K), not as a spread of 5 K
+        raise InputError.for_field(where + ".std", table["std"], "a spread of temperature is given in K")
     numbers = {key: _number(f"{where}.{key}", table[key], param) for key in names}
     if "std" in numbers and not numbers["std"] > 0.0:
         raise InputError.for_field(where + ".std", table["std"], "must be > 0")

@@ -16,15 +16,16 @@ import numpy as np
 from auxbearing.campaign.config import Campaign, apply_sample
 from auxbearing.errors import InputError
 
-#: Verdict codes in the store: 0 is a sample not run yet; then the drop's verdicts (``ok``, the six
-#: model-range stops of :data:`auxbearing.core.watch.STOP_NAMES`, the two budgets, a failed
-#: integration), then the campaign's own two.
-VERDICTS = ("pending", "ok", "line_contact_overload", "ball_stress_beyond_elastic", "contact_ellipse_over_shoulder",
-            "mount_beyond_travel", "race_runs_off_axially", "energy_gain", "step_budget", "wall_time_budget",
-            "integration_failed", "invalid_input", "error")
-OUT_OF_RANGE = VERDICTS[2:8]
-#: Verdicts of runs that ended without a result: budgets, failed integrations, refused samples, errors.
-FAILED = VERDICTS[8:]
+#: The drop's stops at the edge of the model's range (:data:`auxbearing.core.watch.STOP_NAMES`).
+OUT_OF_RANGE = ("line_contact_overload", "ball_stress_beyond_elastic", "contact_ellipse_over_shoulder",
+                "mount_beyond_travel", "race_runs_off_axially", "energy_gain")
+#: Runs that ended without a result: the two budgets, a failed integration, and the campaign's own two
+#: (a sampled value the machine refuses, an exception in the model).
+FAILED = ("step_budget", "wall_time_budget", "integration_failed", "invalid_input", "error")
+#: A coast-down's own ends (:mod:`auxbearing.coastdown`): the design fails in them, a result.
+COASTDOWN_LIMITS = ("thermal_runaway", "radial_clearance_closed", "internal_clearance_preload")
+#: Verdict codes in the store: 0 is a sample not run yet; the store keeps this list in its attributes.
+VERDICTS = ("pending", "ok", *OUT_OF_RANGE, *FAILED, *COASTDOWN_LIMITS)
 #: Whirl codes: 0 when there is no run; then :data:`auxbearing.whirl.CLASSES` in order.
 WHIRL_CODES = ("unknown", "none", "forward", "backward_rolling", "dry_whip", "backward")
 BACKWARD_CLASSES = ("backward_rolling", "dry_whip", "backward")
@@ -59,12 +60,13 @@ WHIRL_OUTPUTS: dict[str, tuple[str, str, str]] = {
 }
 #: Per-plane outputs of a coast-down (auxbearing.coastdown): name -> (dtype, units, long name, summary key).
 COASTDOWN_PLANE_OUTPUTS: dict[str, tuple[str, str, str, str]] = {
-    "max_temperature": ("f8", "degC", "Highest temperature of any component of the plane", "max_temperature_C"),
-    "damage_per_drop": ("f8", "", "Fatigue damage of one drop (Miner sum)", "damage_per_drop"),
+    "max_temperature": ("f8", "degC", "Highest temperature of any part of the plane", "max_temperature_C"),
+    "damage_per_drop": ("f8", "", "Fatigue damage of one drop and its coast-down (Miner sum)", "damage_per_drop"),
     "drops_to_failure": ("f8", "", "Drops to fatigue failure", "drops_to_failure"),
-    "drops_to_dent_limit": ("f8", "", "Drops to the ISO 76 permanent-set limit", "drops_to_dent_limit"),
+    "drops_to_dent_limit": ("f8", "", "Drops to the permanent-set limit", "drops_to_dent_limit"),
+    "allowed_drops": ("f8", "", "Drops the governing limit allows", "allowed_drops"),
 }
-COASTDOWN_SAMPLE_OUTPUTS = {"coastdown_time": ("f8", "s", "Time from the drop to standstill")}
+COASTDOWN_SAMPLE_OUTPUTS = {"coastdown_time": ("f8", "s", "Time from the drop to standstill (NaN: not reached)")}
 #: Variables whose values depend on the machine that ran them, not on the inputs (left out of comparisons).
 TIMING = ("integration_time", "sample_time")
 
@@ -115,10 +117,17 @@ def _number(value) -> float:
     return np.nan if value is None else float(value)
 
 
+def _verdict(record: dict, verdict: str | None, reason: str | None) -> None:
+    if verdict in VERDICTS:
+        record["verdict"] = VERDICTS.index(verdict)
+        record["reason"] = (reason or "")[:REASON_LENGTH]
+    else:  # a verdict this version does not know is kept in the reason, never dropped
+        record["verdict"] = VERDICTS.index("error")
+        record["reason"] = f"unknown verdict {verdict!r}: {reason or ''}"[:REASON_LENGTH]
+
+
 def _record_from_summary(summary: dict, record: dict, n_planes: int) -> None:
-    verdict = summary.get("verdict", "error")
-    record["verdict"] = VERDICTS.index(verdict) if verdict in VERDICTS else VERDICTS.index("error")
-    record["reason"] = (summary.get("reason") or "")[:REASON_LENGTH]
+    _verdict(record, summary.get("verdict"), summary.get("reason"))
     record["simulated_time"] = _number(summary.get("simulated_s"))
     record["steps"] = _number(summary.get("steps"))
     record["energy_balance_error"] = _number(summary.get("energy_balance_error"))
@@ -135,14 +144,22 @@ def _record_from_summary(summary: dict, record: dict, n_planes: int) -> None:
 
 
 def _coastdown_record(result, record: dict, n_planes: int) -> None:
-    """Fill a record from a coast-down result (``auxbearing.coastdown``, issue 13)."""
+    """Fill a record from a coast-down (``auxbearing.coastdown.run_coastdown``).
+
+    The drop's outputs come from its drop window; the verdict, times and energy audit from the whole run;
+    per plane the hottest part, the damage per drop and the drops the limits allow.
+    """
+    _record_from_summary(result.drop.summary, record, n_planes)
     summary = result.summary
-    _record_from_summary(summary.get("drop", summary), record, n_planes)
+    _verdict(record, summary.get("verdict"), summary.get("reason"))
+    record["simulated_time"] = _number(summary.get("simulated_s"))
+    record["energy_balance_error"] = _number(summary.get("energy_balance_error"))
+    record["integration_time"] = _number(summary.get("wall_time_s"))
     record["coastdown_time"] = _number(summary.get("coastdown_time_s"))
     for k, plane in enumerate(summary.get("planes", [])[:n_planes]):
         for name, (*_, key) in COASTDOWN_PLANE_OUTPUTS.items():
             value = plane.get(key)
-            if isinstance(value, dict):  # temperatures by component: the hottest counts
+            if isinstance(value, dict):  # temperatures by part: the hottest counts
                 value = max((v for v in value.values() if v is not None), default=None)
             record[name][k] = _number(value)
 

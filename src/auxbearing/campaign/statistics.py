@@ -189,26 +189,28 @@ def sample_outputs(ds) -> dict[str, tuple[np.ndarray, str]]:
     if "max_temperature" in ds:
         planes["max_temperature_C"] = (ds["max_temperature"].max("plane", skipna=False).values, "degC")
         planes["damage_per_drop"] = (ds["damage_per_drop"].max("plane", skipna=False).values, "-")
-        planes["drops_to_failure_min"] = (ds["drops_to_failure"].min("plane", skipna=False).values, "-")
+        planes["allowed_drops_min"] = (ds["allowed_drops"].min("plane", skipna=False).values, "-")
+        planes["coastdown_time_s"] = (ds["coastdown_time"].values, "s")
     return planes
 
 
 def verdict_masks(ds) -> dict[str, np.ndarray]:
-    """Boolean per sample: completed, ok, out_of_range, failed."""
+    """Boolean per sample: completed, ok, out_of_range, coastdown_limit, failed (and the verdict names)."""
     verdicts = list(ds.attrs["verdicts"])
     names = np.array(verdicts, dtype=object)[ds["verdict"].values.astype(int)]
     done = ds["completed"].values.astype(bool)
     ok = done & (names == "ok")
     out_of_range = done & np.isin(names, ds.attrs["out_of_range_verdicts"])
-    return {"completed": done, "ok": ok, "out_of_range": out_of_range, "failed": done & ~ok & ~out_of_range,
-            "names": names}
+    limit = done & np.isin(names, ds.attrs.get("coastdown_limit_verdicts", []))
+    return {"completed": done, "ok": ok, "out_of_range": out_of_range, "coastdown_limit": limit,
+            "failed": done & ~ok & ~out_of_range & ~limit, "names": names}
 
 
 def _sensitivity(ds, masks: dict, outputs: dict) -> dict:
     names = [str(k) for k in ds["input"].values]
     saltelli = ds.attrs.get("sampler") == "saltelli"
     result: dict = {"method": "spearman", "outputs": {}, "note": None}
-    keys = [k for k in outputs if k != "drops_to_failure_min"]
+    keys = list(outputs)
     if saltelli and masks["ok"].all():
         result["method"] = "sobol"
         for key in keys:
@@ -263,6 +265,7 @@ def campaign_statistics(ds, required_s0: float | None = None, seed: int = 0) -> 
         "p_backward_whirl_at_end": _probability(int(_backward_at_end(ds)[ok].sum()), int(ok.sum()),
                                                 "runs that ended ok"),
         "p_out_of_range": _probability(int(oor.sum()), int(done.sum()), "completed samples"),
+        "coastdown_limit": int(masks["coastdown_limit"].sum()),
         "p_s0_below_required": _probability(int((s0[ok] < required).sum()), int(ok.sum()), "runs that ended ok"),
         "p_s0_below_required_or_out_of_range": _probability(int((s0[ok] < required).sum() + oor.sum()),
                                                             int(ok.sum() + oor.sum()),

@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from auxbearing.campaign.config import Campaign
-from auxbearing.campaign.evaluate import OUT_OF_RANGE, TIMING, VERDICTS, WHIRL_CODES, output_variables
+from auxbearing.campaign.evaluate import COASTDOWN_LIMITS, OUT_OF_RANGE, TIMING, VERDICTS, WHIRL_CODES, output_variables
 from auxbearing.campaign.sampling import Design
 from auxbearing.errors import InputError
 
@@ -78,7 +78,8 @@ def _template(campaign: Campaign, design: Design):
     ds.attrs.update({
         MARK: campaign.fingerprint(), "title": f"Drop campaign: {campaign.name}",
         "campaign": json.dumps(campaign.describe(), default=str), "verdicts": list(VERDICTS),
-        "out_of_range_verdicts": list(OUT_OF_RANGE), "whirl_classes": list(WHIRL_CODES), "timing": list(TIMING),
+        "out_of_range_verdicts": list(OUT_OF_RANGE), "coastdown_limit_verdicts": list(COASTDOWN_LIMITS),
+        "whirl_classes": list(WHIRL_CODES), "timing": list(TIMING),
         "analysis": campaign.analysis, "sampler": campaign.sampler, "seed": campaign.seed,
         "samples": campaign.samples, "runs": runs, "batch_size": batch, "second_order": int(campaign.second_order),
         "required_s0": campaign.required_s0, "whirl_map": list(campaign.whirl_map or []),
