@@ -22,6 +22,9 @@ from auxbearing.campaign.sampling import design
 from auxbearing.campaign.store import pending_batches, prepare_store, write_batch
 from auxbearing.errors import InputError
 
+#: How long a campaign waits for a scheduler to have its first worker [s].
+WORKER_WAIT = 60.0
+
 
 class CampaignInterrupted(KeyboardInterrupt):
     """Ctrl-C (or SIGTERM) during a campaign: what was stored stays; ``done`` samples are in the store."""
@@ -86,7 +89,8 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
     dict
         ``runs``, ``completed``, ``new`` (this call), ``lost`` (samples of batches whose worker died;
         run again to retry), ``workers``, ``warm_up_s`` (largest per worker), ``startup_s``,
-        ``run_s`` (first task to last record), ``wall_time_s`` and ``drops_per_second`` (new / run_s).
+        ``run_s`` (first task to last record), ``wall_time_s`` and ``drops_per_second`` (new / run_s);
+        ``lost_reason`` is the first error of a lost batch.
     """
     from distributed import as_completed
 
@@ -103,8 +107,8 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         raise
     runs = campaign.runs
     done = runs - sum(b - a for a, b in todo)
-    out = {"runs": runs, "completed": done, "new": 0, "lost": 0, "workers": 0, "warm_up_s": 0.0, "startup_s": 0.0,
-           "run_s": 0.0, "wall_time_s": 0.0, "drops_per_second": None}
+    out = {"runs": runs, "completed": done, "new": 0, "lost": 0, "lost_reason": None, "workers": 0, "warm_up_s": 0.0,
+           "startup_s": 0.0, "run_s": 0.0, "wall_time_s": 0.0, "drops_per_second": None}
     if not todo:
         if client is not None:
             client.close()
@@ -113,6 +117,11 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
     if client is None:
         client, cluster = _client(None, workers)
     try:
+        try:
+            client.wait_for_workers(1, timeout=WORKER_WAIT)
+        except TimeoutError:
+            raise InputError.for_field("--scheduler", scheduler, f"the scheduler has had no worker for {WORKER_WAIT:g} "
+                                       "s; start some (dask worker ADDRESS)") from None
         out["workers"] = len(client.scheduler_info(n_workers=-1)["workers"])
         try:
             warm = client.run(warm_up, campaign)
@@ -136,8 +145,9 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
                 _, a, b = pending.pop(future.key)
                 try:
                     arrays = future.result()
-                except Exception:  # a worker died on this batch: its samples stay pending for the next call
+                except Exception as err:  # a worker died or the batch broke: its samples stay pending
                     lost += b - a
+                    out["lost_reason"] = out["lost_reason"] or f"{type(err).__name__}: {err}"[:200]
                     continue
                 finally:
                     future.release()

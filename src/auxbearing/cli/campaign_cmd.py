@@ -84,7 +84,8 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
     finally:
         signal.signal(signal.SIGTERM, previous)
     if result["lost"]:
-        warn(f"{result['lost']} samples were lost with a worker; run the same command to retry them")
+        warn(f"{result['lost']} samples did not come back ({result['lost_reason']}); run the same command to "
+             "retry them")
     stats = campaign_statistics(load_results(store))
     out = {**headline(stats), "wall_time_s": result["wall_time_s"], "drops_per_second": result["drops_per_second"],
            "new": result["new"], "lost": result["lost"], "workers": result["workers"],
