@@ -63,7 +63,10 @@ def _client(scheduler: str | None, workers: int | None):
         except (OSError, TimeoutError, ValueError) as err:
             raise InputError.for_field("--scheduler", scheduler, f"no Dask scheduler answers there ({err})") from None
     n = workers or cores()
+    # no dashboard; the scheduler's small HTTP server on a free local port, so that two campaigns (or a
+    # running Dask) never fight over port 8787
     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                           scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
                            silence_logs=logging.CRITICAL)
     return Client(cluster), cluster
 
