@@ -1,6 +1,7 @@
 """Invariants of Hertz contact (hypothesis)."""
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -13,6 +14,7 @@ f_values = st.floats(0.0, 0.999)
 curvatures = st.floats(1.0, 1e4)
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None)
 @given(q=loads, c=factors, f=f_values, s=curvatures)
 def test_scaling_laws(q, c, f, s):
@@ -45,6 +47,7 @@ def test_swapping_bodies_changes_nothing(a, b, c, d, q):
         np.testing.assert_allclose(x, y, rtol=1e-12)
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None)
 @given(ratio=st.floats(1.0, 100.0), q=loads)
 def test_hamrock_brewe_within_its_error(ratio, q):

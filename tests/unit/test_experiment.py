@@ -171,6 +171,7 @@ def test_force_and_stress_from_an_exact_orbit_match_the_simulation(short_drop):
     assert np.all(c["contact_force"] >= 0.0)
 
 
+@pytest.mark.slow
 def test_orbit_features_of_a_backward_whirl():
     t = np.arange(-0.001, 0.1, 2e-5)
     s = 200e-6
