@@ -92,7 +92,9 @@ def _output_step(machine: Machine, duration: float) -> tuple[float, bool]:
     return duration / (sim.max_output_points - 1), True
 
 
-class _Integration(NamedTuple):
+class Integration(NamedTuple):
+    """What :func:`integrate_machine` leaves: the packed model, output grid, observer, integrator memory, state."""
+
     model: object
     grid: np.ndarray
     watch: cw.Watch
@@ -105,9 +107,9 @@ class _Integration(NamedTuple):
     decimated: bool
 
 
-def _integrate(machine: Machine, duration: float, output_step: float | None,
-               progress: Callable[[float, str], None] | None) -> _Integration:
-    """Run the compiled driver in slices of the step budget, checking the budgets between slices."""
+def integrate_machine(machine: Machine, duration: float, output_step: float | None,
+                      progress: Callable[[float, str], None] | None) -> Integration:
+    """Run the compiled driver from the drop in slices of the step budget, checking the budgets between slices."""
     sim = machine.simulation
     model = machine.kernel()
     compile_s = _warm_up(model)
@@ -151,7 +153,7 @@ def _integrate(machine: Machine, duration: float, output_step: float | None,
     if progress is not None:
         progress(1.0, "done")
     grid = grid[: int(memory.next_output[0])]
-    return _Integration(model, grid, watch, memory, y, verdict, wall, compile_s, out_step, decimated)
+    return Integration(model, grid, watch, memory, y, verdict, wall, compile_s, out_step, decimated)
 
 
 def run_machine(machine: Machine, duration: float | None = None,
@@ -173,9 +175,9 @@ def run_machine(machine: Machine, duration: float | None = None,
     MachineRun
     """
     duration = machine.simulation.duration if duration is None else float(duration)
-    run = _integrate(machine, duration, None, progress)
-    ds = _dataset(machine, run.model, run.grid, run.output_step, lean)
-    summary = _summary(machine, run, ds, duration)
+    run = integrate_machine(machine, duration, None, progress)
+    ds = machine_dataset(machine, run.model, run.grid, run.output_step, lean)
+    summary = machine_summary(machine, run, ds, duration)
     ds.attrs["summary"] = json.dumps(to_jsonable(summary))
     return MachineRun(ds, summary)
 
@@ -186,7 +188,7 @@ def journal_orbit(machine: Machine, duration: float, output_step: float) -> np.n
     For fits that run many short simulations; a run that does not end ``ok`` raises
     :class:`~auxbearing.errors.ConvergenceError` (a failed simulation is never padded and fitted).
     """
-    run = _integrate(machine, duration, output_step, None)
+    run = integrate_machine(machine, duration, output_step, None)
     if run.verdict != OK:
         raise ConvergenceError(f"simulation of {machine.name} ended with {run.verdict} at "
                                f"t = {run.memory.t[0] * 1e3:.4g} ms", float("nan"), int(run.memory.steps[0]))
@@ -232,7 +234,8 @@ _DIAG_SERIES = {
 }
 
 
-def _dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: bool = False) -> xr.Dataset:
+def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: bool = False) -> xr.Dataset:
+    """The time series of a run on its output grid (units in attrs)."""
     n = grid.shape[0]
     n_planes = len(machine.planes)
     t = np.arange(n) * out_step
@@ -310,7 +313,8 @@ def _plane_mass(machine: Machine, k: int) -> float:
     return m * share + planes[k].race_mass
 
 
-def _summary(machine: Machine, run: _Integration, ds: xr.Dataset, duration: float) -> dict:
+def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration: float) -> dict:
+    """Verdict, peaks, whirl, budgets and energy audit of a run (keys in :func:`run_machine`)."""
     model, watch, memory, verdict = run.model, run.watch, run.memory, run.verdict
     stop = watch.stop
     t_end = float(memory.t[0])

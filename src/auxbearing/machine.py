@@ -25,7 +25,9 @@ from auxbearing.core.hertz import line_contact_constant
 from auxbearing.errors import InputError
 from auxbearing.machine_params import (
     AXIAL_DIRECTIONS,
+    COASTDOWN,
     G0,
+    LIFE,
     SIMULATION,
     TABLES,
     TOUCHDOWN_TEXT,
@@ -42,6 +44,9 @@ STEEL_DENSITY = 7810.0
 #: Default shoulder height of the raceway grooves as a fraction of the ball diameter (an assumption).
 SHOULDER_FRACTION = 0.25
 ORIENTATIONS = ("horizontal", "vertical")
+#: Speed below which the constant drag torque T0 is regularised as T0 tanh(Omega / scale) [rad/s], like
+#: Coulomb friction near zero slip (a constant torque has no direction at standstill).
+DRAG_SPEED_SCALE = 0.1
 
 
 @dataclass(frozen=True)
@@ -85,6 +90,12 @@ class TouchdownPlane:
     mount: Mount | None = None
     misalignment: tuple[float, float] = (0.0, 0.0)
     shoulder_height: float = 0.0
+    lubricant_viscosity: float = 0.0
+    viscous_factor: float = 0.0
+    housing_mass: float | None = None
+    housing_to_ambient: float | None = None
+    journal_to_ambient: float | None = None
+    emissivity: float = 0.0
     defaults: tuple[str, ...] = ()  #: keys filled from geometry or defaults, for the report
 
     @property
@@ -138,6 +149,40 @@ class Simulation:
                                        f"must not exceed drop.duration = {self.duration:g} s")
 
 
+@dataclass(frozen=True)
+class Coastdown:
+    """The coast-down's drag, process torque, thermal surroundings, budgets and limits (SI)."""
+
+    drag_torque: float = default("coastdown", "drag_torque")
+    viscous_drag: float = default("coastdown", "viscous_drag")
+    windage_drag: float = default("coastdown", "windage_drag")
+    process_torque: float = default("coastdown", "process_torque")
+    ambient_temperature: float = default("coastdown", "ambient_temperature")
+    max_time: float = default("coastdown", "max_time")
+    stop_speed: float = default("coastdown", "stop_speed")
+    max_temperature: float = default("coastdown", "max_temperature")
+    speed_step: float = default("coastdown", "speed_step")
+    check_window: float = default("coastdown", "check_window")
+    vacuum: bool = False
+
+    def __post_init__(self) -> None:
+        for p in COASTDOWN:
+            object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
+        if not isinstance(self.vacuum, bool):
+            raise InputError.for_field("coastdown.vacuum", self.vacuum, "must be true or false")
+
+
+@dataclass(frozen=True)
+class Life:
+    """What the bearings must survive."""
+
+    required_drops: float = default("life", "required_drops")
+
+    def __post_init__(self) -> None:
+        for p in LIFE:
+            object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
+
+
 class KernelModel(NamedTuple):
     """A machine packed for the compiled kernels."""
 
@@ -157,6 +202,8 @@ class Machine:
     orientation: str = "horizontal"
     simulation: Simulation = field(default_factory=Simulation)
     source: str = "user input"
+    coastdown: Coastdown = field(default_factory=Coastdown)
+    life: Life = field(default_factory=Life)
 
     def __post_init__(self) -> None:
         if self.orientation not in ORIENTATIONS:
@@ -204,7 +251,10 @@ class Machine:
                          "couple_unbalance_phase_deg": math.degrees(r.couple_unbalance_phase),
                          "axial_force_N": r.axial_force, "side_force_N": [r.side_force_x, r.side_force_y]},
                "planes": [_describe_plane(p) for p in self.planes],
-               "drop": {p.key: getattr(self.simulation, p.key) for p in SIMULATION}}
+               "drop": {p.key: getattr(self.simulation, p.key) for p in SIMULATION},
+               "coastdown": {**{p.key: getattr(self.coastdown, p.key) for p in COASTDOWN},
+                             "vacuum": self.coastdown.vacuum},
+               "life": {p.key: getattr(self.life, p.key) for p in LIFE}}
         return out
 
 
@@ -325,6 +375,9 @@ def make_plane(bearing: BearingGeometry, values: dict, name: str, index: int) ->
         sliding_friction=value("sliding_friction"), rolling_friction=value("rolling_friction"),
         slip_velocity=value("slip_velocity"), mount=mount,
         misalignment=(value("misalignment_x"), value("misalignment_y")), shoulder_height=shoulder,
+        lubricant_viscosity=value("lubricant_viscosity"), viscous_factor=value("viscous_factor"),
+        housing_mass=given.get("housing_mass"), housing_to_ambient=given.get("housing_to_ambient"),
+        journal_to_ambient=given.get("journal_to_ambient"), emissivity=value("emissivity"),
         defaults=tuple(dict.fromkeys(filled)), **face)
 
 
@@ -360,6 +413,8 @@ def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
         face_minus=arr(lambda p: float(p.catches_axially and p.axial_direction in ("both", "-z"))),
         face_stiffness=arr(lambda p: p.face_stiffness), face_damping=arr(lambda p: p.face_damping),
         face_friction=arr(lambda p: p.face_friction), face_radius=arr(lambda p: p.face_radius, 1.0),
+        pitch_diameter=arr(lambda p: p.bearing.pitch_diameter, 1.0),
+        lubricant_viscosity=arr(lambda p: p.lubricant_viscosity), viscous_factor=arr(lambda p: p.viscous_factor),
     )
 
 
@@ -402,7 +457,9 @@ def _pack(machine: Machine) -> KernelModel:
         unbalance=r.unbalance, unbalance_phase=r.unbalance_phase, couple_unbalance=r.couple_unbalance,
         couple_phase=r.unbalance_phase + r.couple_unbalance_phase, gravity_x=gravity[0], gravity_y=gravity[1],
         gravity_z=gravity[2], force_x=r.side_force_x, force_y=r.side_force_y, force_z=r.axial_force,
-        process_torque=0.0, drag_constant=0.0, drag_viscous=0.0, drag_windage=0.0, drag_speed_scale=1.0,
+        process_torque=machine.coastdown.process_torque, drag_constant=machine.coastdown.drag_torque,
+        drag_viscous=machine.coastdown.viscous_drag, drag_windage=machine.coastdown.windage_drag,
+        drag_speed_scale=DRAG_SPEED_SCALE,
         tilt_free=machine.tilt_free, axial_free=machine.axial_free)
     ballsets = [ballset_params(p.bearing, p.ball_constant) for p in planes]
     while len(ballsets) < cm.MAX_PLANES:
@@ -454,7 +511,7 @@ def _text(table: dict, key: str, where: str, fallback: str) -> str:
 
 def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
     """A machine from the tables of a machine TOML file (values with units); every key checked first."""
-    allowed = ("machine", "rotor", "touchdown", "drop")
+    allowed = ("machine", "rotor", "touchdown", "drop", "coastdown", "life")
     for key in data:
         if key not in allowed:
             raise InputError.for_field(f"[{key}]", "table", "unknown table; allowed tables: " + ", ".join(allowed))
@@ -486,9 +543,16 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
         planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")
+    coast = dict(data.get("coastdown") or {})
+    vacuum = coast.pop("vacuum", False)
+    if not isinstance(vacuum, bool):
+        raise InputError.for_field("coastdown.vacuum", vacuum, "must be true or false")
+    coast_values = read_table(coast, TABLES["coastdown"], "coastdown.")
+    life_values = read_table(data.get("life"), TABLES["life"], "life.")
     return Machine(name=_text(head, "name", "machine.", name), rotor=rotor, planes=tuple(planes),
                    orientation=_text(head, "orientation", "machine.", "horizontal"),
-                   simulation=Simulation(**sim_values), source=str(head.get("source", "user input")))
+                   simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
+                   coastdown=Coastdown(**coast_values, vacuum=vacuum), life=Life(**life_values))
 
 
 def _bearing(spec: str, path: Path, where: str) -> BearingGeometry:
@@ -564,5 +628,5 @@ def paper_rig() -> Machine:
     return planar_machine(get_bearing("QJ202"), Rotor(), DropCase())
 
 
-__all__ = ["G0", "KernelModel", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
+__all__ = ["G0", "Coastdown", "KernelModel", "Life", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
            "machine_from_mapping", "machine_names", "make_plane", "paper_rig", "planar_machine", "read_machine"]

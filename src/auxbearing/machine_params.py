@@ -96,6 +96,23 @@ TOUCHDOWN: tuple[Param, ...] = (
     Param("touchdown", "shoulder_height", "length", None, "mm", "optional_positive",
           "Groove shoulder height above the groove bottom (both rings); default 0.25 x ball diameter",
           "ours: an assumption; give the maker's value"),
+    Param("touchdown", "lubricant_viscosity", "kinematic_viscosity", 0.0, "mm**2/s", "nonnegative",
+          "Kinematic viscosity of the bearing's oil (base oil of a grease) for Palmgren's load-free torque",
+          "Harris & Kotzalas 2007, Essential Concepts Ch. 10; 0: no load-free torque"),
+    Param("touchdown", "viscous_factor", "dimensionless", 0.0, "", "nonnegative",
+          "Palmgren's f_0 of the load-free torque M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3 (about 0.7-4 for ball bearings)",
+          "Harris & Kotzalas 2007, Essential Concepts Ch. 10; 0: no load-free torque"),
+    Param("touchdown", "housing_mass", "mass", None, "kg", "optional_positive",
+          "Mass of the housing lumped with the outer ring in the thermal network; default a steel ring around it",
+          "ours (auxbearing.thermal.build_network)"),
+    Param("touchdown", "housing_to_ambient", "thermal_conductance", None, "W/K", "optional_nonnegative",
+          "Conductance from the housing to ambient; default natural convection of its outside (none in vacuum)",
+          "Churchill & Chu correlation (auxbearing.thermal)"),
+    Param("touchdown", "journal_to_ambient", "thermal_conductance", None, "W/K", "optional_nonnegative",
+          "Conductance from the journal to the rest of the rotor and ambient; default conduction along the shaft "
+          "to the mass centre (the rotor body held at ambient)", "ours: Fourier conduction k A / L"),
+    Param("touchdown", "emissivity", "dimensionless", 0.0, "", "unit_interval",
+          "Emissivity of the housing for radiation to ambient", "ours: none unless given"),
 )
 #: Keys of ``[[touchdown]]`` that are text, not quantities.
 TOUCHDOWN_TEXT = ("name", "bearing", "axial_direction")
@@ -130,8 +147,40 @@ SIMULATION: tuple[Param, ...] = (
           "Energy gain, relative to the energies in play, that stops a run as a numerical run-away", "ours"),
 )
 
+COASTDOWN: tuple[Param, ...] = (
+    Param("coastdown", "drag_torque", "moment", 0.0, "N*m", "nonnegative",
+          "Constant drag torque T0 on the rotor (seals, motor cogging)", "ours: none unless given"),
+    Param("coastdown", "viscous_drag", "torque_per_speed", 0.0, "N*m*s", "nonnegative",
+          "Viscous drag c1 of T = T0 + c1 Omega + c2 Omega^2", "ours: none unless given"),
+    Param("coastdown", "windage_drag", "torque_per_speed2", 0.0, "N*m*s**2", "nonnegative",
+          "Windage drag c2 of T = T0 + c1 Omega + c2 Omega^2", "ours: none unless given"),
+    Param("coastdown", "process_torque", "moment", 0.0, "N*m", "finite",
+          "Constant torque the process puts on the rotor (positive drives it)", "ours: none unless given"),
+    Param("coastdown", "ambient_temperature", "temperature", 293.15, "degC", "positive",
+          "Ambient (and initial) temperature", "ISO 1 reference temperature, 20 degC"),
+    Param("coastdown", "max_time", "time", 3600.0, "s", "positive",
+          "Longest simulated coast-down (--until-stop stops at standstill or here)", "ours: one hour"),
+    Param("coastdown", "stop_speed", "angular_speed", math.pi / 30.0, "rpm", "positive",
+          "Rotor speed counted as standstill", "ours"),
+    Param("coastdown", "max_temperature", "temperature", 423.15, "degC", "positive",
+          "Temperature of any bearing part that ends the run (thermal run-away)",
+          "ours: 150 degC, the usual dimensional-stabilisation limit of through-hardened bearing steel"),
+    Param("coastdown", "speed_step", "dimensionless", 0.1, "", "unit_interval",
+          "Largest relative speed change of one reduced-model stretch before full dynamics checks again",
+          "ours: the reduced/full agreement test holds within 2 % with it"),
+    Param("coastdown", "check_window", "time", 0.01, "ms", "positive",
+          "Length of the full-dynamics windows that check the motion is settled and measure the losses", "ours"),
+)
+COASTDOWN_TEXT = ("vacuum",)
+LIFE: tuple[Param, ...] = (
+    Param("life", "required_drops", "dimensionless", 10.0, "", "count",
+          "Drops (each with its coast-down) the touchdown bearings must survive",
+          "an assumption of auxbearing, not a standard's clause: give the purchaser's figure"),
+)
+
 TABLES = {"rotor": by_key(ROTOR, "rotor"), "touchdown": by_key(TOUCHDOWN, "touchdown"),
-          "drop": by_key(SIMULATION, "drop")}
+          "drop": by_key(SIMULATION, "drop"), "coastdown": by_key(COASTDOWN, "coastdown"),
+          "life": by_key(LIFE, "life")}
 
 
 def default(section: str, key: str) -> float | None:

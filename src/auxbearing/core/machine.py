@@ -46,6 +46,7 @@ import numpy as np
 from numba import njit
 
 from auxbearing.core.ballset import accumulate
+from auxbearing.core.bearing_friction import palmgren_viscous_torque
 
 MAX_PLANES = 2
 ROTOR_STATES = ("x", "y", "z", "tilt_x", "tilt_y", "spin_angle",
@@ -137,6 +138,9 @@ class Planes(NamedTuple):
     face_damping: np.ndarray  #: [N s/m]
     face_friction: np.ndarray  #: [-]
     face_radius: np.ndarray  #: mean radius of the contact annulus on the race face [m]
+    pitch_diameter: np.ndarray  #: d_m of the bearing [m]
+    lubricant_viscosity: np.ndarray  #: kinematic viscosity of the bearing's oil [m^2/s]
+    viscous_factor: np.ndarray  #: Palmgren's f_0 of the bearing's load-free torque [-] (0: none)
 
 
 class Limits(NamedTuple):
@@ -217,7 +221,7 @@ def _friction(mu_fn, vx, vy, vz, v_eps):
 
 
 # ----------------------------------------------------------------------------- one plane
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def plane_forces(k, y, m, kin, q, out, diag):
     """Forces of touchdown plane k (module docstring).
 
@@ -341,16 +345,25 @@ def plane_forces(k, y, m, kin, q, out, diag):
     ring_fy = -fey - dampy
     fe = math.sqrt(fex * fex + fey * fey)
     mu2 = p.rolling_friction[k]
+    spin_sign = math.tanh(rw * p.raceway_radius[k] / veps)  # sign(omega_race), regularised like friction
     if fe > 0.0 and mu2 > 0.0:
         ux = -fex / fe  # the loaded zone: where the ball set pushes back from
         uy = -fey / fe
-        roll = -mu2 * fe * math.tanh(rw * p.raceway_radius[k] / veps)
+        roll = -mu2 * fe * spin_sign
         fx_r -= roll * uy
         fy_r += roll * ux
         t_r += p.raceway_radius[k] * roll
         ring_fx += roll * uy
         ring_fy -= roll * ux
         out[heat + 1] -= roll * (-uy * relx + ux * rely + p.raceway_radius[k] * rw)
+    # the bearing's torque that no radial force explains: rolling resistance of an axial load (same
+    # mu_2) and Palmgren's load-free viscous torque M_0 (Harris & Kotzalas 2007, Ch. 10)
+    torque = mu2 * abs(fez) * p.raceway_radius[k]
+    if p.viscous_factor[k] > 0.0:
+        torque += palmgren_viscous_torque(p.lubricant_viscosity[k], rw, p.pitch_diameter[k], p.viscous_factor[k])
+    if torque > 0.0:
+        t_r -= torque * spin_sign
+        out[heat + 1] += torque * spin_sign * rw
     # --- race equations
     g = m.rotor
     mr = p.race_mass[k]
@@ -386,6 +399,16 @@ def plane_forces(k, y, m, kin, q, out, diag):
         out[b + OY] = ovy
         out[b + OVX] = ring_fx / p.ring_mass[k] + g.gravity_x
         out[b + OVY] = ring_fy / p.ring_mass[k] + g.gravity_y
+
+
+@njit(cache=True)
+def plane_forces_once(k, y, m, kin, q, out, diag):
+    """:func:`plane_forces` compiled once as a function of its own, for the observer and the outputs.
+
+    The right-hand side inlines :func:`plane_forces` (it is called about ten times per step); everything
+    else calls this copy, which keeps the compile time down.
+    """
+    plane_forces(k, y, m, kin, q, out, diag)
 
 
 # ----------------------------------------------------------------------------- the machine

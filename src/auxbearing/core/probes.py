@@ -28,7 +28,7 @@ from auxbearing.core.machine import (
     TY,
     X,
     Y,
-    plane_forces,
+    plane_forces_once,
     rotor_kinematics,
 )
 
@@ -39,7 +39,7 @@ def plane_diagnostics(y, m, k):
     out = np.zeros(y.size)
     q = np.zeros(6)
     diag = np.empty(len(DIAG_FIELDS))
-    plane_forces(k, y, m, rotor_kinematics(y, m.rotor), q, out, diag)
+    plane_forces_once(k, y, m, rotor_kinematics(y, m.rotor), q, out, diag)
     return diag
 
 

@@ -1,0 +1,570 @@
+"""From the drop to standstill: spin-down, friction heat, thermal growth and the drops a bearing survives.
+
+:func:`run_coastdown` runs a machine's drop with full dynamics (:func:`auxbearing.drop.integrate_machine`)
+and goes on, alternating two paths, until the rotor stands still (``until_stop``) or a time is reached:
+
+* **full dynamics** in windows of ``coastdown.check_window``: the machine right-hand side as in a drop,
+  with the clearances of the moment. Each window measures what the motion dissipates, by where the
+  heat is made (journal/race and face contacts, inside each bearing, in each mount damper, drag), from
+  the energy ledger of the state;
+* **a reduced model** once a window shows the motion has settled (no contact onset, contact either
+  continuous or absent, no whirl, each race rolling with the journal within :data:`ROLL_SLIP`): only the
+  slow quantities move: the spin energy E = J_eff Omega^2 / 2 (J_eff = J_p + sum J_race (w_race / Omega)^2,
+  the races rolling at the ratio the last window measured) falls by the losses the window measured, as
+  torques that hold over the stretch, plus the drag law T0 + c1 Omega + c2 Omega^2 and the process torque;
+  the temperatures follow their networks. A stretch ends when the speed has fallen by
+  ``coastdown.speed_step`` or a clearance has moved by :data:`CLEARANCE_STEP`, and full dynamics checks
+  again (impacts, whirl onset and a closing clearance are seen there).
+
+Heat goes into one lumped network per plane (:mod:`auxbearing.thermal`; journal, inner race, balls,
+outer race, housing, ambient): contact heat split between journal and race by Charron's partition,
+bearing heat at the raceways, mount heat to the housing. Thermal growth changes the journal/race radial
+clearance and the bearing's diametral clearance (:meth:`auxbearing.thermal.ThermalNetwork.clearance_changes`),
+and both go back into the dynamics. A run stops with its verdict when a part passes
+``coastdown.max_temperature`` (a thermal run-away), when the internal clearance closes into a preload whose
+stress at rest passes ISO 76's 4200 MPa, or when the radial clearance closes (the journal seizes).
+
+Energy audit: energy in (mechanical energy at the drop, process work, the work thermal growth does on
+the contacts when it changes a clearance under load) = mechanical energy now + energy stored in the ball
+sets + heat + drag loss; ``energy_balance_error`` is their difference over the energies in play.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from typing import NamedTuple
+
+import numpy as np
+import xarray as xr
+
+from auxbearing import __version__
+from auxbearing.ballset import ballset_state
+from auxbearing.coastdown_life import plane_life
+from auxbearing.core import drive
+from auxbearing.core import integrate as ig
+from auxbearing.core import machine as cm
+from auxbearing.core import watch as cw
+from auxbearing.drop import MachineRun, integrate_machine, machine_dataset, machine_summary, whirl_window
+from auxbearing.machine import DRAG_SPEED_SCALE, Machine
+from auxbearing.statics import ISO76_BALL_STRESS
+from auxbearing.thermal import HOUSING, JOURNAL, NODE_NAMES, build_network
+
+#: A race rolls with the journal when its surface speed is within this fraction of the journal's.
+ROLL_SLIP = 0.02
+#: Two windows whose loss torques agree within this fraction show a stationary rattle.
+STATIONARY = 0.3
+#: A reduced stretch ends when a clearance has moved this much since full dynamics last looked [m].
+CLEARANCE_STEP = 1e-6
+#: Longest reduced stretch between two full-dynamics checks [s].
+MAX_STRETCH = 60.0
+#: Conductivity of a steel shaft [W/(m K)] for the default journal-to-rotor path (the catalogue 'steel').
+SHAFT_CONDUCTIVITY = 60.5
+#: Shortest shaft length from a plane to the rotor body held at ambient [m] (a plane at the mass centre).
+MIN_SHAFT_LENGTH = 0.05
+OK = "ok"
+
+
+class CoastdownRun(NamedTuple):
+    """The result of :func:`run_coastdown`."""
+
+    drop: MachineRun  #: the drop window (full dynamics, with the per-ball stress histories)
+    history: xr.Dataset  #: the coast-down at every window and stretch end (units in attrs)
+    summary: dict  #: verdict, times, energy audit, per plane temperatures, clearances and life
+    life: list  #: per plane: the fatigue and dent results (:mod:`auxbearing.life`)
+
+
+# ----------------------------------------------------------------------------- the thermal side
+def plane_network(machine: Machine, k: int, contact_load: float):
+    """The lumped thermal network of plane k (:func:`auxbearing.thermal.build_network`)."""
+    plane = machine.planes[k]
+    coast = machine.coastdown
+    journal_to_ambient = plane.journal_to_ambient
+    if journal_to_ambient is None:
+        # heat leaves the journal along the shaft to the rotor body, taken as a sink at ambient
+        length = max(abs(plane.position), MIN_SHAFT_LENGTH)
+        journal_to_ambient = SHAFT_CONDUCTIVITY * math.pi * plane.journal_radius**2 / length
+    return build_network(plane.bearing, plane.journal_radius, contact_load=max(contact_load, 1.0),
+                         housing_mass=plane.housing_mass, housing_to_ambient=plane.housing_to_ambient,
+                         journal_to_ambient=journal_to_ambient, vacuum=coast.vacuum, emissivity=plane.emissivity,
+                         ambient_temperature=coast.ambient_temperature)
+
+
+def _static_share(machine: Machine, k: int) -> float:
+    """The weight a plane carries at rest [N] (lever rule), for the contact sizes of its network."""
+    m = machine.rotor.mass * machine.simulation.gravity
+    planes = machine.planes
+    if machine.orientation == "vertical":
+        return m if planes[k].catches_axially else 0.0
+    if len(planes) == 1:
+        return m
+    return m * abs(planes[1 - k].position) / abs(planes[1].position - planes[0].position)
+
+
+def _heat_per_node(network, contact: float, bearing: float, mount: float) -> np.ndarray:
+    q = network.heat_inputs(sliding_power=contact, bearing_power=bearing)
+    q[HOUSING] += mount
+    return q
+
+
+# ----------------------------------------------------------------------------- the session
+class _Session:
+    """The full-dynamics state carried between windows and stretches."""
+
+    def __init__(self, machine: Machine, run) -> None:
+        self.machine = machine
+        self.model = run.model
+        self.core = run.model.machine
+        self.y = run.y.copy()
+        self.memory = run.memory
+        self.t = float(run.memory.t[0])
+        self.e0 = run.model.energy0
+        self.window = whirl_window(machine)
+        self.watch = run.watch
+        self.base_clearance = self.core.planes.clearance.copy()
+        self.base_radius = self.core.planes.journal_radius.copy()
+        self.base_internal = self.core.ballset_clearance.copy()
+
+    def energy_error(self) -> float:
+        energy_in, accounted, scale = cm.energy_balance(self.y, self.core, self.e0)
+        return (accounted - energy_in) / max(scale, 1e-300)
+
+    def set_clearances(self, radial_change: np.ndarray, internal_change: np.ndarray, journal_growth: np.ndarray):
+        """New clearances from thermal growth; the elastic energy this adds at the current state is work in."""
+        before = sum(cm.energy(self.y, self.core))
+        planes = self.core.planes._replace(clearance=self.base_clearance + radial_change,
+                                           journal_radius=self.base_radius + journal_growth)
+        self.core = self.core._replace(planes=planes, ballset_clearance=self.base_internal + internal_change)
+        self.y[cm.W_IN] += sum(cm.energy(self.y, self.core)) - before
+
+    def full(self, length: float):
+        """Full dynamics for ``length`` seconds; returns (status, watch, ledger before).
+
+        Each window has its own onsets and whirl records, but the running peaks carry over: a fresh peak of
+        zero would make every local maximum of a rattle a candidate for refinement.
+        """
+        ledger = self.y[cm.LEDGER_AT:].copy()
+        watch = cw.new_watch(self.y.size, self.window, math.ceil(length / self.window) + 1, self.e0)
+        for name in ("peak", "peak_time", "peak_load", "shoulder_use", "history"):
+            getattr(watch, name)[...] = getattr(self.watch, name)
+        self.watch = watch
+        for k in range(len(self.machine.planes)):
+            watch.in_contact[k] = 1.0 if _penetration(self.y, self.core, k) > 0.0 else 0.0
+        watch.window_end[0] = self.t + self.window
+        settings = self.model.settings._replace(step_budget=10**9)
+        status = drive.advance(self.core, watch, self.y, self.t + length, settings, self.memory,
+                               np.empty((0, self.y.size)))
+        self.t = float(self.memory.t[0])
+        return status, watch, ledger
+
+    def scale_spin(self, omega: float) -> None:
+        """Set the rotor's spin to ``omega``, the races in proportion (they roll with it)."""
+        ratio = omega / self.y[cm.OMEGA] if self.y[cm.OMEGA] != 0.0 else 0.0
+        self.y[cm.OMEGA] = omega
+        for k in range(len(self.machine.planes)):
+            self.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA] *= ratio
+        self.memory.evaluations[0] = 0  # the first-stage derivative must be recomputed
+
+
+def _penetration(y, core, k) -> float:
+    from auxbearing.core.probes import plane_diagnostics
+
+    return float(plane_diagnostics(y, core, k)[cm.D_PEN])
+
+
+def _window_powers(machine: Machine, y, ledger, length: float) -> dict:
+    """Mean heat powers of a window by plane and source [W], and drag power, from the ledger."""
+    now = y[cm.LEDGER_AT:]
+    diff = (now - ledger) / max(length, 1e-300)
+    out = {"drag": diff[cm.DRAG_LOSS - cm.LEDGER_AT], "process": diff[cm.W_IN - cm.LEDGER_AT]}
+    for k in range(len(machine.planes)):
+        base = cm.HEAT_AT - cm.LEDGER_AT + 3 * k
+        out[k] = (diff[base], diff[base + 1], diff[base + 2])
+    return out
+
+
+def _window_stats(machine: Machine, session: _Session, watch, powers: dict) -> list[dict]:
+    """Per plane: onsets, contact fraction, mean contact force, whirl classes, race slip, loss power of a window."""
+    from auxbearing.whirl import classify_window
+
+    n = int(watch.window_count[0])
+    y = session.y
+    stats = []
+    for k, plane in enumerate(machine.planes):
+        records = watch.whirl[:n, k]
+        journal = abs(y[cm.OMEGA]) * plane.journal_radius
+        race = abs(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) * (plane.journal_radius + plane.radial_clearance)
+        stats.append({
+            "onsets": int(watch.onsets[k]),
+            "contact": float(records[:, 2].mean()) if n else 0.0,
+            "force": float(records[:, 6].mean()) if n else 0.0,
+            "classes": {classify_window(r, plane.radial_clearance, plane.journal_radius, 0.0) for r in records},
+            "slip": (race - journal) / journal if journal > 0.0 else 0.0,
+            "torque": float(sum(powers[k])) / max(abs(y[cm.OMEGA]), 1e-300),
+        })
+    return stats
+
+
+def _settled(now: list[dict], before: list[dict] | None) -> str | None:
+    """How the motion has settled, or None (module docstring).
+
+    ``"steady"``: per plane no contact onset, contact continuous or absent, no whirl but a forward one, and
+    a race in continuous contact rolling with the journal within :data:`ROLL_SLIP`. ``"stationary"``: the
+    motion still has impacts but this window and the last one (before a stretch, if one came between)
+    agree (loss torque within :data:`STATIONARY`, no backward whirl in either; the contact fraction of a
+    rattle scatters from window to window and does not enter the reduced model): the
+    losses the reduced model carries are then those of a statistically steady rattle, re-measured at every
+    check.
+    """
+    if all(s["onsets"] == 0 and (s["contact"] >= 0.99 or s["contact"] <= 0.01) and s["classes"] <= {"none", "forward"}
+           and (s["contact"] <= 0.01 or abs(s["slip"]) <= ROLL_SLIP) for s in now):
+        return "steady"
+    if before is None:
+        return None
+    for s, b in zip(now, before, strict=True):
+        if not s["classes"] <= {"none", "forward"} or not b["classes"] <= {"none", "forward"}:
+            return None
+        if abs(s["torque"] - b["torque"]) > STATIONARY * max(abs(s["torque"]), abs(b["torque"]), 1e-12):
+            return None
+    return "stationary"
+
+
+# ----------------------------------------------------------------------------- the reduced model
+def _growth_coefficients(network) -> tuple[np.ndarray, np.ndarray]:
+    """d(radial clearance)/dT and d(diametral clearance)/dT per node [m/K] (the growth relations are linear)."""
+    ta = network.ambient_temperature
+    base = np.full(len(NODE_NAMES), ta)
+    radial, diametral = np.zeros(len(NODE_NAMES)), np.zeros(len(NODE_NAMES))
+    for i in range(len(NODE_NAMES)):
+        rise = base.copy()
+        rise[i] += 1.0
+        radial[i], diametral[i] = network.clearance_changes(rise)
+    return radial, diametral
+
+
+def _stretch(machine: Machine, session: _Session, networks, temps, torques, t_end: float):
+    """Advance the slow quantities while the losses hold as torques (module docstring).
+
+    ``torques`` per plane: (contact, bearing, mount) loss torques [N m] measured on the rotor speed. The
+    spin is integrated with the drag law (scipy's RK45 on the speed and the work integrals, events at the
+    speed step and at standstill); the temperatures take one exact step with the stretch's mean heat input
+    (the input changes by at most the speed step within a stretch), halved until no clearance moves more
+    than :data:`CLEARANCE_STEP`. Returns (duration, new speed, new temperatures, heat per plane and source
+    [J], drag loss [J], process work [J], race revolutions per plane).
+    """
+    from scipy.integrate import solve_ivp
+
+    coast = machine.coastdown
+    y = session.y
+    omega0 = float(y[cm.OMEGA])
+    n = len(machine.planes)
+    ratios = [abs(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA] / omega0) for k in range(n)]
+    j_eff = machine.rotor.polar_inertia + sum(p.race_inertia * r**2
+                                              for p, r in zip(machine.planes, ratios, strict=True))
+    loss = sum(sum(torques[k]) for k in range(n))
+
+    def drag(omega):
+        return (coast.drag_torque * math.tanh(omega / DRAG_SPEED_SCALE) + coast.viscous_drag * omega
+                + coast.windage_drag * omega * abs(omega))
+
+    def rates(_, s):
+        omega = s[0]
+        return [-(loss * math.tanh(omega / DRAG_SPEED_SCALE) + drag(omega) - coast.process_torque) / j_eff,
+                abs(omega), drag(omega) * omega, coast.process_torque * omega]
+
+    def slowed(_, s):
+        return abs(s[0]) - abs(omega0) * (1.0 - coast.speed_step)
+
+    def standstill(_, s):
+        return abs(s[0]) - coast.stop_speed
+
+    slowed.terminal = standstill.terminal = True
+    slowed.direction = standstill.direction = -1.0
+    span = min(t_end - session.t, MAX_STRETCH)
+    while True:
+        sol = solve_ivp(rates, (0.0, span), [omega0, 0.0, 0.0, 0.0], rtol=1e-10, atol=1e-12 * max(1.0, abs(omega0)),
+                        events=(slowed, standstill))
+        duration = float(sol.t[-1])
+        omega, turned, drag_loss, work = sol.y[:, -1]
+        heat = [np.array(torques[k]) * turned for k in range(n)]
+        new_temps = [net.step(temps[k], _heat_per_node(net, *(heat[k] / max(duration, 1e-300))), duration)
+                     for k, net in enumerate(networks)]
+        moved = max(max(abs(a - b) for a, b in zip(net.clearance_changes(nt), net.clearance_changes(t0), strict=True))
+                    for net, nt, t0 in zip(networks, new_temps, temps, strict=True))
+        if moved <= CLEARANCE_STEP or duration <= coast.check_window:
+            break
+        span = 0.5 * duration
+    revolutions = [r * turned / (2.0 * math.pi) for r in ratios]
+    return duration, float(omega), new_temps, heat, float(drag_loss), float(work), revolutions
+
+
+# ----------------------------------------------------------------------------- the run
+class _Limits:
+    """Thermal state, clearances and the limits checked after every window and stretch."""
+
+    def __init__(self, machine: Machine, session: _Session, networks) -> None:
+        self.machine = machine
+        self.session = session
+        self.networks = networks
+        ambient = machine.coastdown.ambient_temperature
+        self.temps = [np.full(len(NODE_NAMES), ambient) for _ in networks]
+        self.max_temps = [t.copy() for t in self.temps]
+        n = len(networks)
+        self.min_radial = [p.radial_clearance for p in machine.planes]
+        self.min_internal = [p.bearing.diametral_clearance for p in machine.planes]
+        self.radial = np.zeros(n)
+        self.internal = np.zeros(n)
+
+    def update(self, temps, t: float) -> tuple[str, str | None]:
+        """New temperatures: clearances into the dynamics, limits checked; returns (verdict, reason)."""
+        self.temps = [np.asarray(x, float) for x in temps]
+        n = len(self.networks)
+        radial, internal, growth = np.zeros(2), np.zeros(2), np.zeros(2)
+        for k, (net, tk) in enumerate(zip(self.networks, self.temps, strict=True)):
+            self.max_temps[k] = np.maximum(self.max_temps[k], tk)
+            radial[k], internal[k] = net.clearance_changes(tk)
+            growth[k] = net.expansion[JOURNAL] * net.journal_radius * (tk[JOURNAL] - net.ambient_temperature)
+        self.session.set_clearances(radial, internal, growth)
+        self.radial, self.internal = radial[:n], internal[:n]
+        for k, plane in enumerate(self.machine.planes):
+            s = plane.radial_clearance + radial[k]
+            pd = plane.bearing.diametral_clearance + internal[k]
+            self.min_radial[k] = min(self.min_radial[k], s)
+            self.min_internal[k] = min(self.min_internal[k], pd)
+            hottest = int(np.argmax(self.temps[k]))
+            if self.temps[k][hottest] > self.machine.coastdown.max_temperature:
+                return "thermal_runaway", (
+                    f"{plane.name}: the {NODE_NAMES[hottest].replace('_', ' ')} reached "
+                    f"{self.temps[k][hottest] - 273.15:.0f} degC at t = {t:.2f} s, above coastdown.max_temperature = "
+                    f"{self.machine.coastdown.max_temperature - 273.15:.0f} degC")
+            if s <= 0.0:
+                return "radial_clearance_closed", (
+                    f"{plane.name}: thermal growth closed the journal/race clearance at t = {t:.2f} s: the journal "
+                    "seizes in the race")
+            if pd < 0.0:
+                stress = _preload_stress(self.session.core.ballsets[k], pd)
+                if stress > ISO76_BALL_STRESS:
+                    return "internal_clearance_preload", (
+                        f"{plane.name}: the internal clearance closed to {pd * 1e6:.1f} um at t = {t:.2f} s, a preload "
+                        f"of {stress / 1e6:.0f} MPa at rest, above ISO 76's {ISO76_BALL_STRESS / 1e6:.0f} MPa")
+        return OK, None
+
+
+def _preload_stress(ballset, clearance: float) -> float:
+    st = ballset_state(np.zeros(5), ballset, clearance=clearance)
+    return float(max(st.stress_inner.max(), st.stress_outer.max()))
+
+
+def run_coastdown(machine: Machine, until_stop: bool = True, duration: float | None = None, mode: str = "auto",
+                  progress: Callable[[float, str], None] | None = None) -> CoastdownRun:
+    """Run a machine from its drop to standstill (or for ``duration`` seconds); see the module docstring.
+
+    Parameters
+    ----------
+    machine : Machine
+    until_stop : bool
+        Go on until the rotor turns slower than ``coastdown.stop_speed`` (at most ``coastdown.max_time``).
+    duration : float, optional
+        Simulated time [s] instead of running to standstill.
+    mode : {"auto", "full"}
+        "auto" hands settled stretches to the reduced model; "full" keeps full dynamics throughout
+        (for checking the reduced model; slow for long coast-downs).
+    progress : callable, optional
+        Called with (fraction, status line) after every window and stretch.
+    """
+    if mode not in ("auto", "full"):
+        raise ValueError(f"mode = {mode!r}: must be 'auto' or 'full'")
+    coast = machine.coastdown
+    t_end = coast.max_time if (until_stop and duration is None) else float(duration or coast.max_time)
+    wall_start = time.perf_counter()
+    drop_length = min(machine.simulation.duration, t_end)
+    run = integrate_machine(machine, drop_length, None, None)
+    drop_ds = machine_dataset(machine, run.model, run.grid, run.output_step)
+    drop = MachineRun(drop_ds, machine_summary(machine, run, drop_ds, drop_length))
+    networks = [plane_network(machine, k, _static_share(machine, k) / max(p.bearing.ball_count, 1))
+                for k, p in enumerate(machine.planes)]
+    session = _Session(machine, run)
+    limits = _Limits(machine, session, networks)
+    history: list[dict] = []
+    overrolling: list[list[tuple[float, float]]] = [[] for _ in machine.planes]
+    verdict, reason = drop.summary["verdict"], drop.summary["reason"]
+    full_time = session.t
+    reduced_time = 0.0
+    counts = {"windows": 0, "stretches": 0, "steady": 0, "stationary": 0}
+    previous = None
+    stopped_at = None
+
+    def record(mode_code: int) -> None:
+        y = session.y
+        history.append({"time": session.t, "mode": mode_code, "rotor_speed": float(y[cm.OMEGA]),
+                        "race_speed": [float(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) for k in range(len(networks))],
+                        "temperature": [t.copy() for t in limits.temps],
+                        "radial_clearance": [p.radial_clearance + limits.radial[k]
+                                             for k, p in enumerate(machine.planes)],
+                        "internal_clearance": [p.bearing.diametral_clearance + limits.internal[k]
+                                               for k, p in enumerate(machine.planes)],
+                        "energy_error": float(session.energy_error())})
+
+    if verdict == OK:
+        powers = _window_powers(machine, session.y, np.zeros(len(cm.LEDGER)), max(session.t, 1e-300))
+        temps = [net.step(limits.temps[k], _heat_per_node(net, *powers[k]), session.t)
+                 for k, net in enumerate(networks)]
+        verdict, reason = limits.update(temps, session.t)
+        record(2)
+    while verdict == OK and session.t < t_end - 1e-12:
+        if until_stop and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
+            stopped_at = session.t
+            break
+        if time.perf_counter() - wall_start > machine.simulation.max_wall_time:
+            verdict = "wall_time_budget"
+            reason = (f"the wall-time budget drop.max_wall_time = {machine.simulation.max_wall_time:g} s was used up "
+                      f"at t = {session.t:.2f} s of the coast-down; raise it to go on")
+            break
+        length = min(coast.check_window, t_end - session.t)
+        omega_start = float(session.y[cm.OMEGA])
+        status, watch, ledger = session.full(length)
+        counts["windows"] += 1
+        full_time += length
+        if status == ig.STOPPED:
+            verdict = cw.STOP_NAMES[int(watch.stop[0])]
+            k = int(watch.stop[1])
+            reason = (f"{machine.planes[k].name if k >= 0 else 'the machine'}: {verdict.replace('_', ' ')} at "
+                      f"t = {float(watch.stop[2]):.3f} s during the coast-down")
+            break
+        if status == ig.STEP_UNDERFLOW:
+            verdict, reason = "integration_failed", f"the integration could not go on at t = {session.t:.4g} s"
+            break
+        powers = _window_powers(machine, session.y, ledger, length)
+        temps = [net.step(limits.temps[k], _heat_per_node(net, *powers[k]), length) for k, net in enumerate(networks)]
+        omega_mean = 0.5 * (omega_start + float(session.y[cm.OMEGA]))
+        for k in range(len(networks)):
+            revs = abs(omega_mean) * abs(session.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) / max(
+                abs(session.y[cm.OMEGA]), 1e-300) * length / (2.0 * math.pi)
+            overrolling[k].append((revs, _window_load(machine, session, watch, k)))
+        verdict, reason = limits.update(temps, session.t)
+        record(0)
+        if progress is not None:
+            rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
+            progress(min(1.0, session.t / t_end), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
+        stats = _window_stats(machine, session, watch, powers)
+        settled = _settled(stats, previous)
+        previous = stats
+        if verdict != OK or mode == "full" or settled is None:
+            continue
+        counts[settled] += 1
+        if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
+            continue  # at standstill: the loop's top ends the run
+        torques = [tuple(p / abs(omega_mean) for p in powers[k]) for k in range(len(networks))]
+        loads = [_window_load(machine, session, watch, k) for k in range(len(networks))]
+        span, omega, temps, heat, drag_loss, work, revs = _stretch(machine, session, networks, limits.temps,
+                                                                    torques, t_end)
+        session.scale_spin(omega)
+        for k in range(len(networks)):
+            for j in range(3):
+                session.y[cm.HEAT_AT + 3 * k + j] += heat[k][j]
+            overrolling[k].append((revs[k], loads[k]))
+        session.y[cm.DRAG_LOSS] += drag_loss
+        session.y[cm.W_IN] += work
+        session.t += span
+        session.memory.t[0] = session.t
+        reduced_time += span
+        counts["stretches"] += 1
+        verdict, reason = limits.update(temps, session.t)
+        record(1)
+        if progress is not None:
+            progress(min(1.0, session.t / t_end), f"t = {session.t:.2f} s, {abs(omega) * 30 / math.pi:.0f} rpm")
+    if verdict == OK and until_stop and stopped_at is None and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
+        stopped_at = session.t
+    history_ds = _history(machine, history)
+    lives = [plane_life(machine, k, drop.dataset, drop.summary["planes"][k], overrolling[k])
+             for k in range(len(machine.planes))]
+    summary = _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at, full_time, reduced_time,
+                       counts, time.perf_counter() - wall_start, until_stop)
+    history_ds.attrs["summary"] = _json(summary)
+    return CoastdownRun(drop, history_ds, summary, lives)
+
+
+def _window_load(machine: Machine, session: _Session, watch, k: int) -> float:
+    """ISO 281 equivalent load on plane k's bearing over a window [N].
+
+    Radial: the window's mean contact force plus the race's weight; axial: the face force at its end.
+    """
+    from auxbearing.coastdown_life import equivalent_load
+    from auxbearing.core.probes import plane_diagnostics
+
+    n = int(watch.window_count[0])
+    radial = float(np.mean(watch.whirl[:n, k, 6])) if n else 0.0
+    radial += machine.planes[k].race_mass * machine.simulation.gravity
+    axial = float(plane_diagnostics(session.y, session.core, k)[cm.D_FA])
+    return equivalent_load(machine.planes[k].bearing, radial, axial)
+
+
+def _history(machine: Machine, rows: list[dict]) -> xr.Dataset:
+    names = [p.name for p in machine.planes]
+    t = np.array([r["time"] for r in rows])
+
+    def stack(key):
+        return np.array([r[key] for r in rows])
+
+    data = {
+        "mode": ("time", stack("mode").astype(np.int8), {"long_name": "0 full dynamics, 1 reduced model, 2 the drop",
+                                                          "units": "1"}),
+        "rotor_speed": ("time", stack("rotor_speed"), {"units": "rad/s", "long_name": "Rotor spin speed"}),
+        "race_speed": (("time", "plane"), stack("race_speed"), {"units": "rad/s", "long_name": "Inner race speed"}),
+        "temperature": (("time", "plane", "node"), stack("temperature") - 273.15,
+                        {"units": "degC", "long_name": "Node temperature of the plane's thermal network"}),
+        "radial_clearance": (("time", "plane"), stack("radial_clearance"),
+                             {"units": "m", "long_name": "Journal/race radial clearance with thermal growth"}),
+        "internal_clearance": (("time", "plane"), stack("internal_clearance"),
+                               {"units": "m", "long_name": "Bearing diametral clearance with thermal growth"}),
+        "energy_error": ("time", stack("energy_error"), {"units": "1", "long_name": "Energy audit, relative"}),
+    }
+    coords = {"time": ("time", t, {"units": "s", "long_name": "Time since the drop"}), "plane": ("plane", names),
+              "node": ("node", list(NODE_NAMES))}
+    ds = xr.Dataset(data, coords=coords)
+    ds.attrs.update(title=f"Coast-down of {machine.name}", auxbearing_version=__version__,
+                    model="full dynamics in windows and a reduced model on settled stretches (auxbearing.coastdown)")
+    return ds
+
+
+def _json(obj) -> str:
+    import json
+
+    from auxbearing.io import to_jsonable
+
+    return json.dumps(to_jsonable(obj))
+
+
+def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at, full_time, reduced_time, counts,
+             wall, until_stop) -> dict:
+    planes = []
+    for k, plane in enumerate(machine.planes):
+        life = lives[k]
+        planes.append({
+            "name": plane.name, "bearing": plane.bearing.name,
+            "max_temperature_C": {name: float(limits.max_temps[k][i] - 273.15) for i, name in enumerate(NODE_NAMES)},
+            "min_radial_clearance_um": limits.min_radial[k] * 1e6,
+            "min_internal_clearance_um": limits.min_internal[k] * 1e6,
+            "damage_per_drop": life["damage_per_drop"], "drop_damage": life["drop_damage"],
+            "coastdown_damage": life["coastdown_damage"], "drops_to_failure": life["drops_to_failure"],
+            "drops_to_dent_limit": life["drops_to_dent_limit"], "dent_depth_per_drop_um": life["dent_depth_um"],
+            "governing": life["governing"]["limit"], "allowed_drops": life["governing"]["allowed_drops"],
+            "required_drops": machine.life.required_drops, "drops_margin": life["governing"].get("margin"),
+            "dynamic_load_rating_N": life["dynamic_load_rating_N"],
+            "peak_contact_force_N": drop.summary["planes"][k]["peak_contact_force_N"],
+            "peak_ball_stress_MPa": drop.summary["planes"][k]["peak_ball_stress_MPa"],
+            "whirl_in_drop": drop.summary["planes"][k]["whirl"],
+        })
+    return {
+        "machine": machine.name, "verdict": verdict, "reason": reason,
+        "coastdown_time_s": stopped_at, "reached_standstill": stopped_at is not None, "until_stop": until_stop,
+        "simulated_s": session.t, "full_dynamics_s": full_time, "reduced_model_s": reduced_time,
+        "windows": counts["windows"], "reduced_stretches": counts["stretches"],
+        "stretches_from_steady_motion": counts["steady"], "stretches_from_stationary_rattle": counts["stationary"],
+        "final_rotor_speed_rpm": float(session.y[cm.OMEGA]) * 30.0 / math.pi,
+        "energy_balance_error": float(session.energy_error()), "wall_time_s": wall,
+        "required_drops": machine.life.required_drops,
+        "required_drops_source": "an assumption of auxbearing (life.required_drops), not a standard's clause",
+        "drop_verdict": drop.summary["verdict"], "planes": planes,
+    }

@@ -1,0 +1,100 @@
+"""The drops a touchdown bearing survives: fatigue damage of a drop and its coast-down, and the dent.
+
+Per plane and drop (:func:`plane_life`):
+
+* the drop itself: the Hertz stress history of every ball/raceway contact (inner and outer race, each pair)
+  from the drop's full dynamics, with the over-rolling while the race turns, rainflow-counted and summed
+  by Palmgren-Miner (:func:`auxbearing.life.drop_damage`: Lundberg-Palmgren / ISO 281 stress-life law);
+* the coast-down: its settled stretches over-roll the raceways under loads that barely change, so each
+  stretch adds revolutions / L10(P) with the ISO 281 basic rating life L10 = (C/P)^3 10^6 revolutions at
+  its equivalent load P (ISO 281:2007 Eq. 1; the constant-load case of the same law, which the helper's
+  consistency test checks against the stress-history path);
+* the permanent dent of the drop's largest ball load (Palmgren, ISO 76's 1e-4 D limit;
+  :func:`auxbearing.life.dent_per_drop`), the same spot dented every drop;
+* which of the two governs against ``life.required_drops`` (:func:`auxbearing.life.governing`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import xarray as xr
+
+from auxbearing.core import fatigue as cf
+from auxbearing.life import dent_per_drop, drop_damage, dynamic_load_rating, governing
+
+#: Equivalent-load factors by bearing type (ISO 281:2007 6.2; four-point and angular contact as the makers
+#: give them, :mod:`auxbearing.core.fatigue`); a deep-groove bearing is taken as radially loaded (X = 1, Y = 0).
+_RADIAL_ONLY = (math.inf, 1.0, 0.0, 1.0, 0.0)
+
+
+def _factors(bearing) -> tuple:
+    if bearing.type == "four_point":
+        return cf.FOUR_POINT_FACTORS
+    if bearing.type == "angular_contact":
+        angles = sorted(cf.ANGULAR_CONTACT_FACTORS)
+        nearest = min(angles, key=lambda a: abs(a - math.degrees(bearing.contact_angle)))
+        return cf.ANGULAR_CONTACT_FACTORS[nearest]
+    return _RADIAL_ONLY
+
+
+def equivalent_load(bearing, radial: float, axial: float) -> float:
+    """ISO 281 dynamic equivalent load P = X Fr + Y Fa [N] of a bearing type."""
+    return float(cf.equivalent_dynamic_load(abs(radial), abs(axial), _factors(bearing)))
+
+
+def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolling: list[tuple[float, float]]) -> dict:
+    """Damage per drop (drop + coast-down), drops to failure and to the dent limit, and which governs.
+
+    Parameters
+    ----------
+    machine : Machine
+    k : int
+        Plane index.
+    drop_ds : xarray.Dataset
+        The drop's time series (:func:`auxbearing.drop.run_machine`), with ``stress_inner_k``,
+        ``stress_outer_k`` over (time, ball, pair).
+    drop_plane : dict
+        The drop summary's entry of the plane (its ``peak_ball_load_N``).
+    overrolling : list of (revolutions, equivalent load [N])
+        The coast-down's stretches and windows after the drop.
+    """
+    plane = machine.planes[k]
+    bearing = plane.bearing
+    out: dict = {}
+    if f"stress_inner_{k}" in drop_ds:
+        fatigue = drop_damage(drop_ds.time.values, drop_ds.race_speed.isel(plane=k).values,
+                              drop_ds[f"stress_inner_{k}"].values, drop_ds[f"stress_outer_{k}"].values, bearing)
+        out["drop_damage"] = float(fatigue["damage"])
+        out["worst_contact"] = fatigue["worst_contact"]
+    else:  # a drop too long to keep its ball arrays: count it as the coast-down does
+        fatigue = None
+        out["drop_damage"] = 0.0
+    rating = dynamic_load_rating(bearing)
+    coast = 0.0
+    for revolutions, load in overrolling:
+        if load > 0.0 and revolutions > 0.0:
+            coast += revolutions / (float(cf.rating_life(rating, load)) * 1e6)
+    out["coastdown_damage"] = coast
+    damage = out["drop_damage"] + coast
+    out["damage_per_drop"] = damage
+    out["drops_to_failure"] = 1.0 / damage if damage > 0.0 else math.inf
+    peak = drop_plane.get("peak_ball_load_N") or 0.0
+    dent = dent_per_drop(peak, bearing)
+    out["drops_to_dent_limit"] = float(dent["drops_to_dent_limit"])
+    out["dent_depth_um"] = max(dent["inner"]["depth"], dent["outer"]["depth"]) * 1e6
+    out["dynamic_load_rating_N"] = rating
+    out["governing"] = governing(out["drops_to_failure"], out["drops_to_dent_limit"], machine.life.required_drops)
+    out["fatigue"] = fatigue
+    return out
+
+
+def cycles_of_worst_contact(life: dict) -> dict | None:
+    """The counted stress cycles of the most damaged contact of the drop (ranges, means, counts), for a figure."""
+    fatigue = life.get("fatigue")
+    if not fatigue:
+        return None
+    worst = fatigue["worst_contact"]
+    return {key: np.asarray(worst[key]) for key in ("ranges", "means", "counts") if key in worst} | {
+        "race": worst.get("race"), "ball": worst.get("ball"), "pair": worst.get("pair")}
