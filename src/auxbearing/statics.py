@@ -96,6 +96,8 @@ def solve_cases(
     loads = np.atleast_2d(np.asarray(loads, dtype=float))
     if loads.ndim != 2 or loads.shape[1] != 5:
         raise ValueError(f"loads shape {loads.shape}: must be (n, 5)")
+    # a subnormal load (below 2.2e-308 N) cannot be resolved by any displacement: it is no load at all
+    loads = np.where(np.abs(loads) < np.finfo(float).tiny, 0.0, loads)
     free_arr = np.asarray(free, dtype=np.bool_)
     use_guess = initial is not None
     guesses = np.atleast_2d(np.asarray(initial, float)) if use_guess else np.zeros((1, 5))
@@ -128,7 +130,7 @@ def safety_factor(max_stress: np.ndarray | float) -> np.ndarray:
     (1.0, 8.0)
     """
     sigma = np.asarray(max_stress, float)
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):  # a vanishing stress gives an infinite s0, not a warning
         return np.where(sigma > 0.0, (ISO76_BALL_STRESS / np.where(sigma > 0.0, sigma, 1.0)) ** 3, np.inf)
 
 
