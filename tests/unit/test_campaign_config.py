@@ -175,3 +175,16 @@ def test_fingerprint_follows_what_fixes_the_results():
     other["drop"]["duration"] = "30 ms"
     assert a.fingerprint() != campaign_from_mapping(other).fingerprint()
     assert a.fingerprint() == campaign_from_mapping(base(required_s0=2.0)).fingerprint()  # analysis only
+
+
+def test_a_renamed_or_moved_campaign_keeps_its_fingerprint(tmp_path):
+    from auxbearing.campaign.config import read_campaign
+
+    text = "\n".join(['[campaign]', 'machine = "paper_rig"', 'samples = 4',
+                      '[[campaign.input]]', 'key = "rotor.unbalance_phase"', 'distribution = "uniform"',
+                      'low = "0 deg"', 'high = "360 deg"'])
+    (tmp_path / "a").mkdir()
+    (tmp_path / "a" / "one.toml").write_text(text)
+    (tmp_path / "two.toml").write_text(text)
+    moved = read_campaign(tmp_path / "a" / "one.toml")
+    assert moved.fingerprint() == read_campaign(tmp_path / "two.toml").fingerprint()

@@ -116,8 +116,13 @@ class Campaign:
                 "inputs": [{"key": i.key, "unit": i.unit, **i.distribution.describe()} for i in self.inputs]}
 
     def fingerprint(self) -> str:
-        """A hash of :meth:`describe`: a store holds results of exactly one fingerprint."""
-        text = json.dumps(self.describe(), sort_keys=True, default=str)
+        """A hash of :meth:`describe` but the name and folder: a store holds results of one fingerprint.
+
+        The file's name and folder are left out, so a campaign file that is renamed or moved (with any
+        bearing files it names) still finds its store.
+        """
+        fixed = {k: v for k, v in self.describe().items() if k not in ("name", "base")}
+        text = json.dumps(fixed, sort_keys=True, default=str)
         return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
