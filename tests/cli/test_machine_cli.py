@@ -1,0 +1,77 @@
+"""The machine commands: drop --machine, machines, coastdown (issues 12 and 13)."""
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from auxbearing.cli.main import cli
+
+
+def _run(*args):
+    return CliRunner().invoke(cli, list(args))
+
+
+def test_machines_lists_the_examples_of_the_issue():
+    result = _run("machines", "--json")
+    assert result.exit_code == 0, result.output
+    names = {m["name"] for m in json.loads(result.output)["machines"]}
+    assert {"paper_rig", "paper_rig_two_planes", "blower", "vertical"} <= names
+    blower = next(m for m in json.loads(result.output)["machines"] if m["name"] == "blower")
+    assert any(p["axial"] for p in blower["planes"]) and blower["planes"][0]["bearing"] == "QJ208"
+
+
+@pytest.mark.slow
+def test_drop_machine_json_has_the_issue_keys(tmp_path):
+    out = tmp_path / "run"
+    result = _run("drop", "--machine", "paper_rig_two_planes", "--duration", "0.02", "--json", "--out", str(out))
+    assert result.exit_code == 0, result.output
+    summary = json.loads(result.output)
+    for key in ("verdict", "reason", "wall_time_s", "steps", "energy_balance_error", "planes"):
+        assert key in summary
+    for key in ("name", "peak_contact_force_N", "peak_ball_stress_MPa", "s0", "final_contact_force_N",
+                "peak_axial_force_N", "final_axial_force_N", "whirl", "backward_whirl_onset_ms"):
+        assert key in summary["planes"][0]
+    files = {p.name for p in out.iterdir()}
+    assert {"drop.nc", "drop_summary.json", "drop_orbit_0.png", "drop_orbit_1.png", "drop_contact_force.png",
+            "drop_tilt.png", "drop_whirl_timeline.png", "drop_speeds.png"} <= files
+
+
+def test_heavy_fast_rotor_prints_its_failure_not_a_result():
+    result = _run("drop", "--machine", "heavy_fast_rotor", "--json")
+    assert result.exit_code == 0
+    summary = json.loads(result.stdout)
+    assert summary["verdict"] == "line_contact_overload"
+    assert summary["planes"][0]["peak_contact_force_N"] is None
+    assert "warning: verdict line_contact_overload" in result.stderr
+
+
+def test_paper_options_with_a_machine_are_refused_in_one_line():
+    result = _run("drop", "--machine", "blower", "--friction", "0.3")
+    assert result.exit_code == 2
+    assert result.stderr.count("\n") == 1 and "--friction" in result.stderr
+
+
+def test_unknown_machine_names_the_examples():
+    result = _run("drop", "--machine", "blowr")
+    assert result.exit_code == 2 and "paper_rig" in result.stderr and "\n" == result.stderr[-1]
+
+
+@pytest.mark.slow
+def test_coastdown_json_and_files(tmp_path):
+    out = tmp_path / "cd"
+    result = _run("coastdown", "--machine", "paper_rig", "--duration", "0.3", "--json", "--out", str(out), "--quiet")
+    assert result.exit_code == 0, result.output
+    summary = json.loads(result.stdout)
+    for key in ("verdict", "reason", "coastdown_time_s", "energy_balance_error", "wall_time_s", "planes"):
+        assert key in summary
+    assert {"coastdown.nc", "drop.nc", "coastdown_summary.json", "coastdown_speeds.png",
+            "coastdown_clearances.png", "coastdown_temperatures_0.png", "stress_cycles_0.png"} <= {
+        p.name for p in out.iterdir()}
+
+
+def test_coastdown_bad_duration_is_one_line_and_writes_nothing(tmp_path):
+    out = tmp_path / "cd"
+    result = _run("coastdown", "--machine", "paper_rig", "--duration", "-3 s", "--out", str(out))
+    assert result.exit_code == 2 and result.stderr.startswith("error: --duration")
+    assert not out.exists()
