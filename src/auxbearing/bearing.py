@@ -16,6 +16,7 @@ from auxbearing.catalog import bearing_names as bearing_names  # re-exported: th
 from auxbearing.catalog import bearing_table
 from auxbearing.errors import InputError
 from auxbearing.materials import Material, check_positive, get_material, material_from_mapping
+from auxbearing.params import as_typed
 from auxbearing.units import to_si
 
 #: Bearing types and the contact pairs a ball makes with the raceways. ``axial_signs`` is the
@@ -208,6 +209,32 @@ class BearingGeometry:
         """A copy with some fields changed, validated again."""
         return replace(self, **changes)
 
+    def to_table(self) -> dict[str, object]:
+        """The bearing as a ``[bearing]`` TOML table with units (what :func:`bearing_from_mapping` reads back).
+
+        Examples
+        --------
+        >>> b = get_bearing("QJ202")
+        >>> bearing_from_mapping(b.to_table(), name=b.name) == b
+        True
+        """
+        def length(value: float) -> str:
+            return f"{float(value)!r} m"
+
+        table: dict[str, object] = {
+            "type": self.type, "ball_diameter": length(self.ball_diameter),
+            "pitch_diameter": length(self.pitch_diameter), "ball_count": self.ball_count,
+            "inner_groove_ratio": self.inner_groove_ratio, "outer_groove_ratio": self.outer_groove_ratio,
+            "contact_angle": f"{float(self.contact_angle)!r} rad",
+            "diametral_clearance": length(self.diametral_clearance),
+            "ball_material": _material_table(self.ball_material), "ring_material": _material_table(self.ring_material),
+            "source": self.source,
+        }
+        for key in ("bore", "outside_diameter", "width"):
+            if getattr(self, key) is not None:
+                table[key] = length(getattr(self, key))
+        return table
+
     def describe(self) -> dict[str, object]:
         """Inputs with units, for files and reports."""
         out: dict[str, object] = {
@@ -231,6 +258,21 @@ class BearingGeometry:
             if value is not None:
                 out[f"{key}_mm"] = value * 1e3
         return out
+
+
+def _material_table(material: Material) -> str | dict:
+    """A catalogue name when the material is the catalogue's, otherwise its table with units."""
+    from auxbearing.materials import material_names
+
+    if material.name in material_names() and get_material(material.name) == material:
+        return material.name
+    table = {"name": material.name, "elastic_modulus": f"{float(material.elastic_modulus)!r} Pa",
+             "poisson_ratio": material.poisson_ratio}
+    for key, unit in (("density", "kg/m**3"), ("specific_heat", "J/(kg*K)"), ("thermal_conductivity", "W/(m*K)"),
+                      ("thermal_expansion", "1/K")):
+        if getattr(material, key, None) is not None:
+            table[key] = f"{float(getattr(material, key))!r} {unit}"
+    return table
 
 
 def max_ball_count(ball_diameter: float, pitch_diameter: float) -> int:
@@ -301,7 +343,7 @@ def bearing_from_mapping(data: dict, name: str | None = None, prefix: str = "bea
     try:
         return BearingGeometry(**values)
     except InputError as err:
-        raise InputError(prefix + str(err)) from None
+        raise as_typed(err, data, prefix) from None
 
 
 def _material(value: object, prefix: str) -> Material:
@@ -319,8 +361,8 @@ def _catalogue() -> dict[str, dict]:
     return bearing_table()
 
 
-def get_bearing(name: str) -> BearingGeometry:
-    """A catalogue bearing by name (case-insensitive).
+def get_bearing(name: str, field: str = "bearing") -> BearingGeometry:
+    """A catalogue bearing by name (case-insensitive); ``field`` names the input in an error.
 
     Examples
     --------
@@ -330,29 +372,37 @@ def get_bearing(name: str) -> BearingGeometry:
     for key, entry in _catalogue().items():
         if key.lower() == name.strip().lower():
             return bearing_from_mapping(entry, name=key, prefix=f"catalogue {key}.")
-    raise InputError.for_field("bearing", name, "unknown; catalogue names are " + ", ".join(_catalogue()))
+    raise InputError.for_field(field, name, "unknown; catalogue names are " + ", ".join(_catalogue()))
 
 
-def read_toml(path: str | Path) -> dict:
-    """Read a TOML file, turning a missing file or a syntax error into a one-line error."""
-    path = Path(path)
-    if not path.is_file():
-        raise InputError.for_field("file", str(path), "not found")
+def read_toml(path: str | Path, field: str = "file") -> dict:
+    """Read a TOML file, turning a missing file, a folder or a syntax error into a one-line error.
+
+    A file that is not UTF-8 is read in the encoding :func:`auxbearing.io.read_text` can tell, with a warning.
+    """
+    from auxbearing.io import read_text
+
+    text = read_text(path, field)
     try:
-        return tomllib.loads(path.read_text())
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
-        raise InputError.for_field("file", str(path), f"is not valid TOML ({err})") from None
+        raise InputError.for_field(field, str(path), f"is not valid TOML ({err})") from None
 
 
-def load_bearing(spec: str | Path | BearingGeometry) -> BearingGeometry:
-    """A bearing from a catalogue name, a TOML path with a ``[bearing]`` table, or as given."""
+def load_bearing(spec: str | Path | BearingGeometry, field: str = "bearing") -> BearingGeometry:
+    """A bearing from a catalogue name, a TOML path with a ``[bearing]`` table, or as given.
+
+    ``field`` names the input in an error (``--bearing`` on the command line).
+    """
     if isinstance(spec, BearingGeometry):
         return spec
     text = str(spec)
-    if text.lower().endswith(".toml") or Path(text).is_file():
-        data = read_toml(text)
+    if not text.strip():
+        raise InputError.for_field(field, text, "is empty; give a catalogue name (" + ", ".join(_catalogue())
+                                   + ") or a TOML file")
+    if text.lower().endswith(".toml") or Path(text).exists():
+        data = read_toml(text, field)
         if "bearing" not in data:
-            raise InputError.for_field("file", text, "has no [bearing] table")
+            raise InputError.for_field(field, text, "has no [bearing] table")
         return bearing_from_mapping(data["bearing"], name=Path(text).stem)
-    return get_bearing(text)
-
+    return get_bearing(text, field)

@@ -44,6 +44,9 @@ STEEL_DENSITY = 7810.0
 #: Default shoulder height of the raceway grooves as a fraction of the ball diameter (an assumption).
 SHOULDER_FRACTION = 0.25
 ORIENTATIONS = ("horizontal", "vertical")
+#: Tables of a machine file that other commands read and check (verify's criteria and candidates, a
+#: campaign's definition); a drop or coast-down leaves them alone.
+OTHER_TABLES = ("criteria", "candidate", "verify", "campaign")
 #: Speed below which the constant drag torque T0 is regularised as T0 tanh(Omega / scale) [rad/s], like
 #: Coulomb friction near zero slip (a constant torque has no direction at standstill).
 DRAG_SPEED_SCALE = 0.1
@@ -511,7 +514,7 @@ def _text(table: dict, key: str, where: str, fallback: str) -> str:
 
 def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
     """A machine from the tables of a machine TOML file (values with units); every key checked first."""
-    allowed = ("machine", "rotor", "touchdown", "drop", "coastdown", "life")
+    allowed = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", *OTHER_TABLES)
     for key in data:
         if key not in allowed:
             raise InputError.for_field(f"[{key}]", "table", "unknown table; allowed tables: " + ", ".join(allowed))
@@ -537,9 +540,15 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         values = read_table(numbers, TABLES["touchdown"], where)
         if "radial_clearance" not in values:
             raise InputError(f"{where}radial_clearance: missing; every [[touchdown]] needs it")
-        spec = _text(table, "bearing", where, "")
-        path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
-        bearing = _bearing(spec, path, where)
+        if isinstance(table.get("bearing"), dict):  # an inline [touchdown.bearing] table
+            try:
+                bearing = bearing_from_mapping(table["bearing"], name=f"plane {k} bearing", prefix=where + "bearing.")
+            except InputError as err:
+                raise InputError(str(err)) from None
+        else:
+            spec = _text(table, "bearing", where, "")
+            path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
+            bearing = _bearing(spec, path, where)
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
         planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")
@@ -581,18 +590,24 @@ def machine_names() -> list[str]:
     return sorted(_catalogue_files())
 
 
-def read_machine(spec: str | Path) -> Machine:
-    """A machine from a TOML file or a catalogue name (:func:`machine_names`)."""
+def machine_table(spec: str | Path) -> tuple[dict, str, Path | None]:
+    """The tables of a machine file or catalogue machine as read (values with units), its name and folder."""
     import tomllib
 
     text = str(spec)
     if text in _catalogue_files():
-        return machine_from_mapping(tomllib.loads(_catalogue_files()[text]), text)
+        return tomllib.loads(_catalogue_files()[text]), text, None
     path = Path(text)
     if not path.is_file():
         raise InputError.for_field("machine", text, "neither a file nor a catalogue machine ("
                                    + ", ".join(machine_names()) + ")")
-    return machine_from_mapping(read_toml(path), path.stem, path.parent)
+    return read_toml(path), path.stem, path.parent
+
+
+def read_machine(spec: str | Path) -> Machine:
+    """A machine from a TOML file or a catalogue name (:func:`machine_names`)."""
+    data, name, base = machine_table(spec)
+    return machine_from_mapping(data, name, base)
 
 
 def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
@@ -629,4 +644,5 @@ def paper_rig() -> Machine:
 
 
 __all__ = ["G0", "Coastdown", "KernelModel", "Life", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
-           "machine_from_mapping", "machine_names", "make_plane", "paper_rig", "planar_machine", "read_machine"]
+           "machine_from_mapping", "machine_names", "machine_table", "make_plane", "paper_rig", "planar_machine",
+           "read_machine"]

@@ -1,0 +1,103 @@
+"""``auxbearing verify``: a machine file in, a report with criteria, margins, candidates and a recommendation out.
+
+Heavy libraries are imported inside the command, so ``--help`` answers at once.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option
+from auxbearing.errors import InputError
+
+
+@click.command("verify")
+@click.option("--machine", "machine_spec", required=True, metavar="FILE|NAME",
+              help="A machine TOML file or an example machine (`auxbearing machines`).")
+@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), required=True,
+              callback=checked_out_dir, help="Folder for report.html, verify.json and the data behind them.")
+@click.option("--candidates", default=None, metavar="LIST",
+              help="Comma-separated catalogue bearings or bearing TOML files to try in the same seats "
+                   "(default: the file's [[candidate]] tables).")
+@click.option("--quick", is_flag=True, help="A first look in well under a minute: short drops, the first seconds "
+                                            "of the coast-down, 8 campaign drops, a coarse recommendation.")
+@click.option("--campaign-samples", type=int, default=None, metavar="N",
+              help="Drops of the campaign over the drop conditions (0: none); default verify.campaign_samples.")
+@click.option("--workers", type=int, default=None, metavar="N", help="Campaign worker processes (default: cores).")
+@click.option("--scheduler", default=None, metavar="ADDRESS", help="Use a running Dask scheduler for the campaigns.")
+@click.option("--no-recommendation", is_flag=True, help="Skip the search for the best geometry.")
+@json_option()
+@click.option("--quiet", is_flag=True, help="No progress output.")
+def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, workers, scheduler,
+                   no_recommendation, as_json, quiet):
+    """Verify the touchdown bearings of a machine against explicit criteria.
+
+    Runs a drop at the maximum speed, one at low speed, the process thrust reversed (when there is one),
+    the coast-down with heat and a small campaign; judges them against the [criteria] table (every default's
+    origin is stated in the report); ranks candidate bearings in the same seats; recommends the contact
+    angle, groove ratios and clearance of the design's bearing family that maximise the worst margin.
+    Writes report.html (verdicts first) and verify.json.
+    """
+    from rich.console import Console
+    from rich.table import Table
+
+    from auxbearing.io import atomic_output_dir, save_dataset, write_json
+    from auxbearing.report.verify_figures import build_figures
+    from auxbearing.report.verify_html import render, verdict_rows
+    from auxbearing.verify.run import verify
+
+    if campaign_samples is not None and not 0 <= campaign_samples <= 100000:
+        raise InputError.for_field("--campaign-samples", campaign_samples, "must lie in [0, 100000]")
+    if workers is not None and not 1 <= workers <= 256:
+        raise InputError.for_field("--workers", workers, "must lie in [1, 256]")
+    specs = None
+    if candidates is not None:
+        specs = [c.strip() for c in candidates.split(",")]
+        if not all(specs):
+            raise InputError.for_field("--candidates", candidates, "a comma-separated list of bearings, no empty item")
+    with atomic_output_dir(out_dir) as tmp:
+        with ProgressReporter(f"verify {machine_spec}", quiet) as progress:
+            steps = {"n": 0}
+
+            def say(text: str) -> None:
+                steps["n"] += 1
+                progress(min(0.99, steps["n"] / 40.0), text)
+
+            result = verify(machine_spec, tmp, specs, quick=quick, samples=campaign_samples, workers=workers,
+                            scheduler=scheduler, with_recommendation=not no_recommendation, progress=say)
+        cases = result["design"]["cases"]
+        for i, run in enumerate(cases.drops.values()):
+            save_dataset(run.dataset, tmp / f"drop_{i}.nc", {"machine": cases.machine.describe()})
+        if cases.coastdown is not None:
+            save_dataset(cases.coastdown.history, tmp / "coastdown.nc", {"machine": cases.machine.describe()})
+        figures = build_figures(result)
+        (tmp / "report.html").write_text(render(result, figures), encoding="utf-8")
+        public = {k: v for k, v in result.items() if k not in ("design", "candidate_rows", "recommendation_rows")}
+        write_json(public, tmp / "verify.json", result["inputs"])
+    if as_json:
+        echo_json({k: v for k, v in result.items() if k in ("verdict", "machine", "criteria", "worst_margin",
+                                                            "candidates", "ranking", "recommendation",
+                                                            "wall_time_s")} | {"out": str(out_dir)})
+        return
+    rows, _ = verdict_rows(result["design"]["criteria"])
+    table = Table(title=f"Verification of {result['machine']}: {result['verdict'].upper()}")
+    for col in ("criterion", "required", "found", "margin", "pass/fail"):
+        table.add_column(col, justify="left" if col == "criterion" else "right")
+    for row in rows:
+        table.add_row(*[str(v) for v in row])
+    console = Console()
+    console.print(table)
+    if result["candidates"]:
+        console.print("Candidates ranked by worst margin: " + ", ".join(result["ranking"]), highlight=False)
+    if result["recommendation"]:
+        rec = result["recommendation"]
+        console.print(f"Recommended {rec['family'].replace('_', ' ')} geometry: contact angle "
+                      f"{rec['contact_angle_deg']:.1f} deg, groove ratios {rec['inner_groove_ratio']:.3f}/"
+                      f"{rec['outer_groove_ratio']:.3f}, clearance x{rec['clearance_factor']:.2f}; binds: "
+                      f"{rec['binding_criterion']}", highlight=False)
+    click.echo(f"Report: {out_dir / 'report.html'} ({result['wall_time_s']:.0f} s)")
+
+
+COMMANDS = [verify_command]

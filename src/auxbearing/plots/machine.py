@@ -1,0 +1,57 @@
+"""The machine at a glance: rotor, touchdown planes, clearances, bearings, mounts and collars (a sketch)."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Circle, Rectangle
+
+from auxbearing.plots._axes import axes_for
+
+
+def plot_machine(machine, ax=None) -> Figure:
+    """A side view along the rotor axis: journal, planes with their bearings, clearances (exaggerated), mass centre.
+
+    Lengths along the axis are to scale [mm]; radial clearances are drawn 20 times enlarged and labelled.
+    """
+    fig, ax = axes_for(ax, (9, 3.6))
+    planes = machine.planes
+    positions = [p.position * 1e3 for p in planes]
+    span = max(max(positions) - min(positions), 100.0)
+    left, right = min(positions) - 0.25 * span, max(positions) + 0.25 * span
+    radius = max(p.journal_radius for p in planes) * 1e3
+    ax.add_patch(Rectangle((left, -radius), right - left, 2 * radius, facecolor="0.85", edgecolor="0.3", lw=1))
+    ax.plot(0.0, 0.0, marker="o", ms=9, mfc="white", mec="black")
+    ax.plot(0.0, 0.0, marker="+", ms=9, color="black")
+    ax.annotate(f"mass centre\n{machine.rotor.mass:g} kg, {machine.rotor.speed * 30 / np.pi:.0f} rpm", (0.0, 0.0),
+                (0.0, -radius * 2.6), ha="center", fontsize=8, arrowprops={"arrowstyle": "-", "color": "0.4"})
+    for plane in planes:
+        z = plane.position * 1e3
+        width = (plane.bearing.width or plane.bearing.ball_diameter) * 1e3
+        bore = plane.journal_radius * 1e3 + 20.0 * plane.radial_clearance * 1e3  # clearance enlarged x20
+        outer = (plane.bearing.outside_diameter or plane.bearing.pitch_diameter * 1.4) * 0.5e3
+        ball = plane.bearing.ball_diameter * 0.5e3
+        pitch = plane.bearing.pitch_diameter * 0.5e3
+        for sign in (1.0, -1.0):
+            ax.add_patch(Rectangle((z - width / 2, sign * bore if sign > 0 else -outer), width, outer - bore,
+                                   facecolor="tab:blue", alpha=0.25, edgecolor="tab:blue"))
+            ax.add_patch(Circle((z, sign * pitch), ball, facecolor="tab:blue", edgecolor="navy", lw=0.8))
+            if plane.mount is not None:
+                ax.plot([z - width / 2, z + width / 2], [sign * (outer + 1.5)] * 2, color="tab:green", lw=3)
+        if plane.catches_axially:
+            ax.add_patch(Rectangle((z - width / 2 - 3.0, radius), 3.0, 0.6 * (bore - radius) + 2.0, color="tab:red"))
+        text = (f"{plane.name}\n{plane.bearing.name} ({plane.bearing.label})\ns = {plane.radial_clearance * 1e3:g} mm"
+                + (f", axial {plane.axial_clearance * 1e3:g} mm" if plane.catches_axially else "")
+                + ("\nmount " + f"{plane.mount.stiffness:.2g} N/m" if plane.mount is not None else "\nrigid housing"))
+        ax.text(z, outer + 6.0, text, ha="center", va="bottom", fontsize=8)
+    ax.set_xlim(left - 0.05 * span, right + 0.05 * span)
+    top = max((p.bearing.outside_diameter or p.bearing.pitch_diameter * 1.4) * 0.5e3 for p in planes)
+    ax.set_ylim(-top * 2.9, top * 2.6)
+    ax.set_aspect("equal")
+    ax.set_xlabel("axial position from the mass centre [mm] (radial clearances drawn 20x; blue: bearings, "
+                  "green: mounts, red: axial collars)")
+    ax.set_yticks([])
+    ax.set_title(f"{machine.name} ({machine.orientation})", loc="left")
+    for spine in ("left", "right", "top"):
+        ax.spines[spine].set_visible(False)
+    return fig

@@ -1,0 +1,84 @@
+"""The figures of a verification report, built from the result of :func:`auxbearing.verify.run.verify`."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+
+def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
+    """Section key -> [(figure, caption)] for :func:`auxbearing.report.verify_html.render`."""
+    from auxbearing.coastdown_life import cycles_of_worst_contact
+    from auxbearing.plots import coastdown as pc
+    from auxbearing.plots import drop as pd
+    from auxbearing.plots.machine import plot_machine
+
+    cases = result["design"]["cases"]
+    out: dict[str, list] = {"machine": [(plot_machine(cases.machine), "Rotor, touchdown planes, bearings, "
+                                         "clearances (radially enlarged), mounts and collars.")]}
+    drops = []
+    for case, run in cases.drops.items():
+        ds, summary = run.dataset, run.summary
+        if case == "drop at the maximum speed":
+            for k in range(ds.sizes["plane"]):
+                drops.append((pd.plot_orbit(ds, k), f"{case}: orbit of the journal at {ds.plane.values[k]}"))
+            drops.append((pd.plot_ball_stress(ds), f"{case}: largest ball contact stress"))
+            drops.append((pd.plot_tilt(ds), f"{case}: tilt and axial position of the rotor"))
+        drops.append((pd.plot_contact_force(ds), f"{case}: journal/race collision force ({summary['verdict']})"))
+        drops.append((pd.plot_whirl_timeline(summary), f"{case}: whirl, window by window"))
+    out["drops"] = drops
+    coast = cases.coastdown
+    if coast is not None:
+        figs = [(pc.plot_speeds(coast.history), "Spin-down of rotor and races (grey: reduced model)")]
+        for k in range(len(cases.machine.planes)):
+            figs.append((pc.plot_temperatures(coast.history, k), "Temperatures of the plane's thermal network"))
+        figs.append((pc.plot_clearances(coast.history), "Clearances with thermal growth"))
+        for k, life in enumerate(coast.life):
+            figs.append((pc.plot_stress_cycles(cycles_of_worst_contact(life)),
+                         f"{cases.machine.planes[k].name}: stress cycles of the drop's most damaged contact"))
+        out["coastdown"] = figs
+    if cases.campaign_store:
+        from auxbearing.campaign.store import load_results
+        from auxbearing.plots.campaign import plot_histograms, plot_whirl_map
+
+        ds = load_results(cases.campaign_store)
+        figs = [(plot_histograms(ds), "Distributions of the campaign's outcomes")]
+        keys = [str(k) for k in ds["input"].values]
+        if len(keys) >= 2:
+            figs.append((plot_whirl_map(ds, keys[0], keys[1]), f"Whirl class over {keys[0]} and {keys[1]}"))
+        out["campaign"] = figs
+    if result.get("candidates"):
+        out["candidates"] = [(_candidate_bars(result), "Worst margin of every candidate (negative: fails)")]
+    rec = result.get("recommendation")
+    if rec:
+        out["recommendation"] = [(_recommendation_map(rec), "Worst drop margin of every design tried")]
+    return out
+
+
+def _candidate_bars(result: dict) -> Figure:
+    fig = Figure(figsize=(7, 3), layout="constrained")
+    ax = fig.add_subplot()
+    labels = [row[1] for row in result["candidate_rows"]]
+    values = [float(row[3].rstrip(" %")) if row[3] != "-" else np.nan for row in result["candidate_rows"]]
+    ax.barh(labels, values, color=["tab:green" if v >= 0 else "tab:red" for v in values])
+    ax.axvline(0.0, color="black", lw=0.8)
+    ax.set_xlabel("Worst margin [%]")
+    ax.invert_yaxis()
+    return fig
+
+
+def _recommendation_map(rec: dict) -> Figure:
+    fig = Figure(figsize=(7, 4), layout="constrained")
+    ax = fig.add_subplot()
+    points = rec["points"]
+    x = [p["contact_angle_deg"] for p in points]
+    y = [p["inner_groove_ratio"] for p in points]
+    c = [100 * p["worst_margin"] for p in points]
+    sc = ax.scatter(x, y, c=c, s=[30 + 60 * p["clearance_factor"] for p in points], cmap="RdYlGn")
+    fig.colorbar(sc, ax=ax, label="worst margin [%]")
+    ax.plot(rec["contact_angle_deg"], rec["inner_groove_ratio"], "k*", ms=14, label="recommended")
+    ax.set_xlabel("Contact angle [deg]")
+    ax.set_ylabel("Inner groove ratio [-]")
+    ax.legend(fontsize=8)
+    ax.set_title("marker size: radial clearance factor", loc="left", fontsize=9)
+    return fig

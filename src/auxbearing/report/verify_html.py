@@ -1,0 +1,138 @@
+"""The verification report: one self-contained HTML file, verdicts first, then the evidence.
+
+Order: the verdict and why; the machine at a glance; the verdict table (criterion, required, found, margin,
+pass/fail); the evidence of every criterion with its figures (drops, coast-down, campaign); the candidate
+bearings ranked; the recommended geometry and what binds it; the assumptions and defaults used; inputs and
+version. Nothing of the source paper appears unless the machine is the paper's rig (the paper reproduction
+is linked: ``auxbearing study``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from datetime import UTC, datetime
+
+from auxbearing import __version__
+from auxbearing.report.html import _CSS, _e, _table, figure_png_base64
+
+_EXTRA_CSS = """
+pre{white-space:pre-wrap;word-break:break-word}
+.pass{background:#e5f5e5}.fail{background:#fbe3e3}.unchecked{background:#f3f0dc}
+.banner{font-size:1.3em;padding:.6em 1em;border-radius:6px;margin:1em 0}
+.banner.pass{border:2px solid #4a4}.banner.fail{border:2px solid #c44}
+"""
+
+
+def _fmt(value, unit: str = "") -> str:
+    if value is None:
+        return "-"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, (int, float)):
+        if isinstance(value, float) and not math.isfinite(value):
+            return "∞" if value > 0 else "-∞"
+        text = f"{value:.4g}"
+        return text if unit in ("", "-") else f"{text} {unit}"
+    return str(value)
+
+
+def _margin(value) -> str:
+    return "-" if value is None else ("∞" if not math.isfinite(value) else f"{100.0 * value:+.1f} %")
+
+
+def _figure(fig, caption: str) -> str:
+    return (f"<figure><img alt='{_e(caption)}' src='data:image/png;base64,{figure_png_base64(fig)}'>"
+            f"<figcaption>{_e(caption)}</figcaption></figure>")
+
+
+def verdict_rows(criteria: list) -> tuple[list[list[str]], list[str]]:
+    """Rows of the verdict table and their classes."""
+    rows, classes = [], []
+    for c in criteria:
+        status = "not checked" if c.passed is None else ("pass" if c.passed else "FAIL")
+        rows.append([c.name, _fmt(c.required, c.unit), _fmt(c.found, c.unit), _margin(c.margin), status])
+        classes.append("unchecked" if c.passed is None else ("pass" if c.passed else "fail"))
+    return rows, classes
+
+
+def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
+    """HTML text of the report from the result of :func:`auxbearing.verify.run.verify` and its figures.
+
+    ``figures`` maps a section key (machine, drops, coastdown, campaign, candidates, recommendation) to a
+    list of (matplotlib Figure, caption).
+    """
+    main = result["design"]
+    verdict = result["verdict"]
+    failing = [c for c in main["criteria"] if c.passed is False]
+    why = ("every checked criterion holds" if not failing else
+           "fails on " + "; ".join(f"{c.name} ({_fmt(c.found, c.unit)} against {_fmt(c.required, c.unit)}: "
+                                   f"{c.evidence})" for c in failing))
+    parts = ["<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>",
+             f"<title>Touchdown-bearing verification: {_e(result['machine'])}</title>",
+             f"<style>{_CSS}{_EXTRA_CSS}</style></head><body>",
+             f"<h1>Touchdown-bearing verification: {_e(result['machine'])}</h1>",
+             f"<div class='banner {'pass' if verdict == 'pass' else 'fail'}'><b>Verdict: {verdict.upper()}</b> "
+             f"&mdash; {_e(why)}</div>"]
+    if result.get("quick"):
+        parts.append("<p class='paper'>A <b>--quick</b> first look: short drops, the first seconds of the "
+                     "coast-down and a small campaign. Run without --quick before you rely on it.</p>")
+    parts.append("<h2>The machine at a glance</h2>")
+    parts += [_figure(f, c) for f, c in figures.get("machine", [])]
+    rows, classes = verdict_rows(main["criteria"])
+    parts.append("<h2>Verdicts</h2>")
+    parts.append(_table(["criterion", "required", "found", "margin", "pass/fail"], rows,
+                        "Margin: found/required - 1 for a lower bound, 1 - found/required for an upper bound.",
+                        classes))
+    parts.append("<h3>Where each required value comes from, and the evidence</h3>")
+    parts.append(_table(["criterion", "required value from", "evidence"],
+                        [[c.name, c.origin or "-", c.evidence] for c in main["criteria"]]))
+    parts.append("<h2>Evidence: the drops</h2>")
+    parts.append(_table(["case", "plane", "verdict", "peak force [N]", "peak stress [MPa]", "s0", "axial peak [N]",
+                         "whirl at the end", "backward whirl onset [ms]"], main["drop_rows"]))
+    parts += [_figure(f, c) for f, c in figures.get("drops", [])]
+    parts.append("<h2>Evidence: the coast-down with heat</h2>")
+    parts.append(_table(["plane", "hottest part [°C]", "smallest journal/race clearance [µm]",
+                         "smallest internal clearance [µm]", "damage per drop", "drops to failure",
+                         "drops to dent limit", "governs"], main["coastdown_rows"],
+                        main.get("coastdown_caption", "")))
+    parts += [_figure(f, c) for f, c in figures.get("coastdown", [])]
+    parts.append("<h2>Evidence: the campaign over the drop conditions</h2>")
+    if main.get("campaign_rows"):
+        parts.append(_table(["quantity", "value", "95 % interval", "among"], main["campaign_rows"]))
+        if main.get("drivers"):
+            parts.append(_table(["input", "rank correlation with backward whirl", "with peak stress"],
+                                main["drivers"], "What drives the outcome (Spearman rank correlations)"))
+        parts += [_figure(f, c) for f, c in figures.get("campaign", [])]
+    else:
+        parts.append("<p>No campaign was run (--campaign-samples 0).</p>")
+    if result.get("candidates"):
+        parts.append("<h2>Candidate bearings in the same seats</h2>")
+        parts.append(_table(["rank", "bearing", "verdict", "worst margin", "failing criteria"],
+                            result["candidate_rows"], "Ranked by the worst margin of the checked criteria."))
+        parts += [_figure(f, c) for f, c in figures.get("candidates", [])]
+    if result.get("recommendation"):
+        rec = result["recommendation"]
+        parts.append("<h2>Recommendation: geometry of the bearing family</h2>")
+        parts.append(f"<p>For the {_e(rec['family'].replace('_', ' '))} family, over contact angle "
+                     f"{rec['bounds']['contact_angle_deg'][0]:.0f}-{rec['bounds']['contact_angle_deg'][1]:.0f} deg, "
+                     f"inner groove ratio {rec['bounds']['inner_groove_ratio'][0]:.3f}-"
+                     f"{rec['bounds']['inner_groove_ratio'][1]:.3f} and {rec['bounds']['clearance_factor'][0]:.2f}-"
+                     f"{rec['bounds']['clearance_factor'][1]:.2f} times the radial clearance "
+                     f"({rec['evaluations']} drops at the maximum speed):</p>")
+        parts.append(_table(["quantity", "recommended", "as the file has it"], result["recommendation_rows"]))
+        binds = rec["binding_criterion"] + (
+            f"; at the bound of {', '.join(rec['variables_at_bounds'])}" if rec["variables_at_bounds"] else "")
+        parts.append(f"<p><b>What binds:</b> {_e(binds)}. Worst margin {_margin(rec['worst_margin'])} against "
+                     f"{_margin(rec['as_is'])} as built.</p>")
+        parts += [_figure(f, c) for f, c in figures.get("recommendation", [])]
+    parts.append("<h2>Assumptions and defaults used</h2><ul>")
+    parts += [f"<li>{_e(a)}</li>" for a in result["assumptions"]]
+    parts.append("</ul>")
+    parts.append("<h2>Inputs and version</h2>")
+    parts.append(f"<p class='small'>auxbearing {__version__}, {datetime.now(UTC):%Y-%m-%d %H:%M} UTC, "
+                 f"{result['wall_time_s']:.0f} s. The reproduction of the source paper is a separate command: "
+                 "<code>auxbearing study</code>.</p>")
+    parts.append(f"<pre class='small'>{_e(json.dumps(result['inputs'], indent=1, default=str))}</pre>")
+    parts.append("</body></html>")
+    return "".join(parts)

@@ -1,0 +1,1 @@
+"""Verification of a machine's touchdown bearings: cases, criteria, candidates, a recommendation."""

@@ -1,0 +1,155 @@
+"""Other bearings in the same seats, and the best geometry of the chosen bearing family.
+
+Candidates (:func:`candidate_tables`): each candidate bearing replaces the bearing of every touchdown
+plane, with everything derived from the bearing (journal radius from its bore, race mass, line-contact
+stiffness) derived again, so the comparison is the one the source paper makes (four-point against
+angular contact) carried to the machine.
+
+Recommendation (:func:`recommend`): for the family of the machine's bearing, the contact angle (within
+the source paper's Sec. IV range of 15-45 deg), the groove radius ratios (0.505-0.53, inner; the outer
+keeps its offset from the inner) and the radial touchdown clearance (60-140 % of the file's, and below
+the air-gap limit when one is given) that maximise the worst margin of the drop criteria at the maximum
+speed: a grid over the box, then a Nelder-Mead polish from its best point (scipy), each point a drop of
+the machine. The criterion with the smallest margin at the optimum binds; a variable at its bound says
+the box binds.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from pathlib import Path
+
+import numpy as np
+
+from auxbearing.errors import InputError
+
+CONTACT_ANGLE_RANGE = (math.radians(15.0), math.radians(45.0))  #: source paper Sec. IV
+GROOVE_RATIO_RANGE = (0.505, 0.53)  #: ours: the paper's 0.51-0.52 widened to what makers grind
+CLEARANCE_RANGE = (0.6, 1.4)  #: ours: fraction of the file's radial clearance
+
+
+def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
+    """(label, machine tables) per candidate; a spec is a catalogue name, a bearing TOML path or a table."""
+    out = []
+    for i, spec in enumerate(specs):
+        if isinstance(spec, dict):
+            unknown = [k for k in spec if k not in ("name", "bearing")]
+            if unknown:
+                raise InputError.for_field(f"candidate.{i}.{unknown[0]}", spec[unknown[0]],
+                                           "unknown key; allowed keys: name, bearing")
+            if "bearing" not in spec:
+                raise InputError(f"candidate.{i}.bearing: missing; a [[candidate]] names its bearing")
+            bearing, label = spec["bearing"], str(spec.get("name", spec["bearing"]))
+        else:
+            bearing, label = str(spec).strip(), str(spec).strip()
+            if not bearing:
+                raise InputError.for_field("--candidates", spec, "an empty name in the list")
+        tables = copy.deepcopy(data)
+        for plane in tables["touchdown"]:
+            plane["bearing"] = bearing
+            for derived in ("race_mass", "race_inertia", "line_stiffness", "face_stiffness", "face_radius"):
+                plane.pop(derived, None)  # follow the new bearing
+        out.append((label, tables))
+    return out
+
+
+def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
+    """The machine's tables with contact angle, inner groove ratio and clearance factor x = (alpha, fi, c)."""
+    tables = copy.deepcopy(data)
+    for k, plane in enumerate(tables["touchdown"]):
+        bearing = machine.planes[k].bearing
+        table = bearing.to_table()
+        if bearing.type != "deep_groove":
+            table["contact_angle"] = f"{float(x[0])!r} rad"
+        offset = bearing.outer_groove_ratio - bearing.inner_groove_ratio
+        table["inner_groove_ratio"] = float(x[1])
+        table["outer_groove_ratio"] = float(x[1] + offset)
+        plane["bearing"] = table
+        plane["radial_clearance"] = f"{float(machine.planes[k].radial_clearance * x[2])!r} m"
+    return tables
+
+
+def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: bool = False,
+              progress=None) -> dict:
+    """The geometry of the machine's bearing family that maximises the worst drop margin (module docstring)."""
+    from scipy.optimize import minimize
+
+    from auxbearing.drop import run_machine
+    from auxbearing.machine import machine_from_mapping
+    from auxbearing.verify.cases import QUICK_DROP
+
+    machine = machine_from_mapping(data, name, base)
+    first = machine.planes[0].bearing
+    angle_free = first.type != "deep_groove"
+    c_high = CLEARANCE_RANGE[1]
+    if criteria.get("amb_air_gap"):
+        limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
+        c_high = min(c_high, limit / max(p.radial_clearance for p in machine.planes))
+    bounds = np.array([CONTACT_ANGLE_RANGE if angle_free else (first.contact_angle, first.contact_angle),
+                       GROOVE_RATIO_RANGE, (CLEARANCE_RANGE[0], max(c_high, CLEARANCE_RANGE[0]))])
+    duration = {"duration": f"{min(machine.simulation.duration, QUICK_DROP)!r} s"} if quick else {}
+    evaluated: list[dict] = []
+
+    def margins(x) -> dict:
+        x = np.clip(x, bounds[:, 0], bounds[:, 1])
+        tables = _design_tables(data, machine, x)
+        tables.setdefault("drop", {}).update(duration)
+        try:
+            run = run_machine(machine_from_mapping(tables, name, base), lean=True)
+        except InputError as err:  # a geometry the bearing cannot have (e.g. clearance past the bore)
+            point = {"x": x, "worst": -1.0, "binding": f"invalid geometry: {err}", "margins": {}}
+            evaluated.append(point)
+            return point
+        summary = run.summary
+        out = {}
+        if summary["verdict"] != "ok":
+            out["model range"] = -1.0
+        s0 = min((p["s0"] for p in summary["planes"] if p["s0"] is not None), default=0.0)
+        out["s0"] = s0 / criteria["min_s0"] - 1.0
+        if any(p["backward_whirl_onset_ms"] is not None for p in summary["planes"]):
+            out["backward whirl"] = -1.0
+        shoulder = max(p["shoulder_use"] for p in summary["planes"])
+        out["contact ellipse below the shoulder"] = 1.0 - shoulder
+        binding = min(out, key=out.get)
+        point = {"x": x, "worst": out[binding], "binding": binding, "margins": out}
+        evaluated.append(point)
+        if progress is not None:
+            progress(f"design {len(evaluated)}: worst margin {out[binding]:+.3f} ({binding})")
+        return point
+
+    levels = 2 if quick else 3
+    grids = [np.linspace(lo, hi, levels) if hi > lo else np.array([lo]) for lo, hi in bounds]
+    for a in grids[0]:
+        for f in grids[1]:
+            for c in grids[2]:
+                margins(np.array([a, f, c]))
+    best = max(evaluated, key=lambda p: p["worst"])
+    if not quick:
+        span = bounds[:, 1] - bounds[:, 0]
+        scale = np.where(span > 0.0, span, 1.0)
+        start = (best["x"] - bounds[:, 0]) / scale
+
+        def cost(u):
+            return -margins(bounds[:, 0] + np.clip(u, 0.0, 1.0) * scale)["worst"]
+
+        minimize(cost, start, method="Nelder-Mead", options={"maxfev": 12, "xatol": 0.02, "fatol": 1e-3})
+        best = max(evaluated, key=lambda p: p["worst"])
+    x = best["x"]
+    at_bound = [name for name, value, (lo, hi) in zip(("contact angle", "groove ratio", "clearance"), x, bounds,
+                                                        strict=True)
+                if hi > lo and (abs(value - lo) < 1e-3 * (hi - lo) or abs(value - hi) < 1e-3 * (hi - lo))]
+    offset = first.outer_groove_ratio - first.inner_groove_ratio
+    return {
+        "family": first.type, "contact_angle_deg": math.degrees(x[0]), "inner_groove_ratio": float(x[1]),
+        "outer_groove_ratio": float(x[1] + offset), "radial_clearance_mm": [p.radial_clearance * x[2] * 1e3
+                                                                             for p in machine.planes],
+        "clearance_factor": float(x[2]), "worst_margin": best["worst"], "binding_criterion": best["binding"],
+        "variables_at_bounds": at_bound, "margins": best["margins"], "evaluations": len(evaluated),
+        "bounds": {"contact_angle_deg": [math.degrees(v) for v in bounds[0]], "inner_groove_ratio": list(bounds[1]),
+                   "clearance_factor": list(bounds[2])},
+        "points": [{"contact_angle_deg": math.degrees(p["x"][0]), "inner_groove_ratio": float(p["x"][1]),
+                    "clearance_factor": float(p["x"][2]), "worst_margin": p["worst"], "binding": p["binding"]}
+                   for p in evaluated],
+        "as_is": margins(np.array([first.contact_angle, first.inner_groove_ratio, 1.0]))["worst"],
+    }

@@ -1,0 +1,123 @@
+"""Judging one design's cases against the criteria (:mod:`auxbearing.verify.criteria`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from auxbearing.verify.cases import Cases
+from auxbearing.verify.criteria import (
+    Criterion,
+    lower_bound,
+    not_checked,
+    origin,
+    upper_bound,
+    yes_no,
+)
+from auxbearing.whirl import BACKWARD
+
+
+def _drop_planes(cases: Cases):
+    for case, run in cases.drops.items():
+        for plane in run.summary["planes"]:
+            yield case, run, plane
+
+
+def _excursion(run, k: int) -> float:
+    """Largest distance of the journal centre from its bearing centre in a drop [m]."""
+    ds = run.dataset.isel(plane=k)
+    return float(np.max(np.hypot(ds.journal_x.values - ds.ring_x.values, ds.journal_y.values - ds.ring_y.values)))
+
+
+def judge(cases: Cases, criteria: dict) -> list[Criterion]:
+    """Every criterion of the issue for one design, in the order the report shows them."""
+    out = []
+    # s0 of every ball contact in every drop
+    s0s = [(p["s0"], case, p["name"]) for case, run, p in _drop_planes(cases) if run.summary["verdict"] == "ok"]
+    worst = min((s for s in s0s if s[0] is not None), default=None)
+    if worst is None:
+        found, where = None, "no drop ended inside the model's range"
+    else:
+        found, where = worst[0], f"{worst[1]}, {worst[2]}"
+    out.append(lower_bound("static safety factor s0 of every ball contact", found, criteria["min_s0"], "-",
+                           origin("min_s0", criteria), f"smallest in the drops: {where}"))
+    # no run leaving the model's range
+    verdicts = {case: run.summary["verdict"] for case, run in cases.drops.items()}
+    if cases.coastdown is not None:
+        verdicts["coast-down"] = cases.coastdown.summary["verdict"]
+    bad = {c: v for c, v in verdicts.items() if v != "ok"}
+    reasons = {c: (cases.drops[c].summary if c in cases.drops else cases.coastdown.summary)["reason"] for c in bad}
+    out.append(yes_no("no run leaves the model's range or a limit", "every run ends ok",
+                      "all ok" if not bad else "; ".join(f"{c}: {v}" for c, v in bad.items()), not bad,
+                      "issue 12: a run outside the model's range is a failed design",
+                      "; ".join(f"{c}: {r}" for c, r in reasons.items()) or "every drop and the coast-down stayed "
+                                                                                 "in range"))
+    # no sustained backward whirl or dry whip
+    whirls = [(case, p["name"], p["backward_whirl_onset_ms"], p["whirl"]) for case, _, p in _drop_planes(cases)
+              if p["backward_whirl_onset_ms"] is not None or p["whirl"] in BACKWARD]
+    out.append(yes_no("no sustained backward whirl or dry whip", "none in any drop",
+                      "none" if not whirls else "; ".join(
+                          f"{c}, {n}: {w} (onset {o:.0f} ms)" if o is not None else f"{c}, {n}: {w}"
+                          for c, n, o, w in whirls), not whirls,
+                      "Jiang & Ulbrich 2005 and Jiang 2007: backward whirl and dry whip destroy touchdown bearings",
+                      "whirl judged window by window (auxbearing.whirl)"))
+    coast = cases.coastdown.summary if cases.coastdown is not None else None
+    if coast is not None:
+        hottest = max((max(p["max_temperature_C"].values()), p["name"]) for p in coast["planes"])
+        out.append(upper_bound("peak bearing temperature", hottest[0], criteria["max_temperature"] - 273.15, "°C",
+                               origin("max_temperature", criteria), f"coast-down, {hottest[1]}"))
+        from auxbearing.coastdown import _preload_stress
+
+        stresses = []
+        for k, p in enumerate(coast["planes"]):
+            pd = p["min_internal_clearance_um"] * 1e-6
+            stresses.append((_preload_stress(_ballset(cases, k), pd) / 1e6 if pd < 0.0 else 0.0, p["name"], pd))
+        worst_pre = max(stresses)
+        out.append(upper_bound("preload of a closing internal clearance", worst_pre[0],
+                               criteria["max_preload_stress"] / 1e6, "MPa", origin("max_preload_stress", criteria),
+                               f"{worst_pre[1]}: smallest internal clearance {worst_pre[2] * 1e6:.2f} um "
+                               "(stress at rest of the preload it makes)"))
+        required = criteria["required_drops"] or cases.machine.life.required_drops
+        allowed = min((p["allowed_drops"], p["name"], p["governing"]) for p in coast["planes"])
+        source = origin("required_drops", criteria) if criteria["required_drops"] else (
+            "the machine file's life.required_drops" if "life" in cases.tables else
+            "an assumption of auxbearing (life.required_drops = 10), not a standard's clause")
+        out.append(lower_bound("drops to failure (fatigue or dent)", allowed[0], required, "drops", source,
+                               f"{allowed[1]}: {allowed[2]} governs"))
+    else:
+        out.append(not_checked("peak bearing temperature", "no coast-down was run", ""))
+    # clearance against the magnetic air gap and a seal
+    largest = max(p.radial_clearance for p in cases.machine.planes)
+    if coast is not None and cases.coastdown is not None:
+        largest = max(largest, float(cases.coastdown.history.radial_clearance.max()))
+    if criteria["amb_air_gap"] is not None:
+        limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
+        out.append(upper_bound("touchdown clearance against the magnetic air gap", largest * 1e3, limit * 1e3, "mm",
+                               f"{origin('air_gap_fraction', criteria)}; air gap from your [criteria]",
+                               "largest radial clearance with thermal growth"))
+    else:
+        out.append(not_checked("touchdown clearance against the magnetic air gap",
+                               "give criteria.amb_air_gap to check it", origin("air_gap_fraction", criteria)))
+    if criteria["seal_clearance"] is not None:
+        excursion = max(_excursion(run, k) for run in cases.drops.values() for k in range(len(cases.machine.planes)))
+        out.append(upper_bound("journal excursion against the seal clearance", excursion * 1e3,
+                               criteria["seal_clearance"] * 1e3, "mm", origin("seal_clearance", criteria),
+                               "largest journal excursion from its bearing centre in the drops"))
+    else:
+        out.append(not_checked("journal excursion against the seal clearance", "give criteria.seal_clearance to "
+                               "check it", "user input"))
+    if cases.campaign is not None:
+        p = cases.campaign["p_backward_whirl"]
+        out.append(upper_bound("probability of backward whirl over the drop conditions", p["value"],
+                               criteria["max_backward_whirl_probability"], "-",
+                               origin("max_backward_whirl_probability", criteria),
+                               f"campaign of {cases.campaign['ok']} drops that ended ok; 95 % interval "
+                               f"{p['low']:.3f}-{p['high']:.3f}"))
+    return out
+
+
+def _ballset(cases: Cases, k: int):
+    from auxbearing.ballset import ballset_params
+
+    plane = cases.machine.planes[k]
+    return ballset_params(plane.bearing, plane.ball_constant)
+

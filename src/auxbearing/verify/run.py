@@ -1,0 +1,178 @@
+"""``verify``: from a machine file to a report with criteria, margins, candidates and a recommendation.
+
+:func:`verify` runs the cases of :mod:`auxbearing.verify.cases` on the machine's design, judges them
+(:mod:`auxbearing.verify.judge`), does the same for every candidate bearing, looks for the best geometry of
+the design's bearing family (:mod:`auxbearing.verify.designs`) and writes ``report.html``
+(:mod:`auxbearing.report.verify_html`), ``verify.json`` and the data behind it into the output folder.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from auxbearing.errors import InputError
+from auxbearing.machine import machine_table
+from auxbearing.verify.cases import Cases, run_cases, verify_settings
+from auxbearing.verify.criteria import read_criteria, worst_margin
+from auxbearing.verify.designs import candidate_tables, recommend
+from auxbearing.verify.judge import judge
+
+
+def _drop_rows(cases: Cases) -> list[list]:
+    rows = []
+    for case, run in cases.drops.items():
+        for p in run.summary["planes"]:
+            rows.append([case, p["name"], run.summary["verdict"], _n(p["peak_contact_force_N"], "{:.0f}"),
+                         _n(p["peak_ball_stress_MPa"], "{:.0f}"), _n(p["s0"], "{:.2f}"), _n(p["peak_axial_force_N"],
+                                                                                            "{:.0f}"),
+                         p["whirl"], _n(p["backward_whirl_onset_ms"], "{:.0f}")])
+    return rows
+
+
+def _n(value, fmt: str) -> str:
+    return "-" if value is None else fmt.format(value)
+
+
+def _coastdown_rows(cases: Cases) -> list[list]:
+    if cases.coastdown is None:
+        return []
+    return [[p["name"], f"{max(p['max_temperature_C'].values()):.1f}", f"{p['min_radial_clearance_um']:.1f}",
+             f"{p['min_internal_clearance_um']:.2f}", f"{p['damage_per_drop']:.3g}", f"{p['drops_to_failure']:.3g}",
+             f"{p['drops_to_dent_limit']:.3g}", p["governing"]] for p in cases.coastdown.summary["planes"]]
+
+
+def _campaign_rows(stats: dict | None) -> tuple[list[list], list[list]]:
+    if not stats:
+        return [], []
+    rows = []
+    for key, label in (("p_backward_whirl", "probability of sustained backward whirl"),
+                       ("p_out_of_range", "probability of leaving the model's range"),
+                       ("p_s0_below_required", "probability of s0 below the required value")):
+        p = stats[key]
+        rows.append([label, f"{p['value']:.3f}", f"{p['low']:.3f}-{p['high']:.3f}", p["among"]])
+    for name, entry in stats.get("quantiles", {}).items():
+        if "stress" in name and entry.get("p95") is not None:
+            rows.append([f"{name} p50 / p95", f"{entry['p50']:.0f} / {entry['p95']:.0f} {entry['unit']}", "-", "-"])
+    drivers = []
+    sens = stats.get("sensitivity", {})
+    outputs = sens.get("outputs", {})
+    names = set()
+    for values in outputs.values():
+        names.update(values)
+    for name in sorted(names):
+        drivers.append([name, _driver(outputs, "backward_whirl", name),
+                        _driver(outputs, "peak_ball_stress_max_MPa", name)])
+    return rows, drivers
+
+
+def _driver(outputs: dict, output: str, name: str) -> str:
+    entry = outputs.get(output, {}).get(name, {})
+    value = entry.get("rho", entry.get("ST"))
+    return "-" if value is None or (isinstance(value, float) and not math.isfinite(value)) else f"{value:+.2f}"
+
+
+def _design(cases: Cases, criteria: dict) -> dict:
+    judged = judge(cases, criteria)
+    campaign_rows, drivers = _campaign_rows(cases.campaign)
+    return {"criteria": judged, "worst_margin": worst_margin(judged),
+            "verdict": "fail" if any(c.passed is False for c in judged) else "pass",
+            "drop_rows": _drop_rows(cases), "coastdown_rows": _coastdown_rows(cases),
+            "coastdown_caption": "; ".join(cases.notes), "campaign_rows": campaign_rows, "drivers": drivers,
+            "cases": cases}
+
+
+def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quick: bool = False,
+           samples: int | None = None, workers: int | None = None, scheduler: str | None = None,
+           with_recommendation: bool = True, progress: Callable[[str], None] | None = None) -> dict:
+    """Verify a machine's touchdown bearings (module docstring); returns what ``verify.json`` holds and more.
+
+    Parameters
+    ----------
+    spec : str or Path
+        A machine TOML file or an example machine's name.
+    out_dir : Path
+        Folder the campaign stores go into (the caller writes the report there).
+    candidates : list, optional
+        Catalogue names, bearing TOML paths or ``[[candidate]]`` tables; default the file's ``[[candidate]]``.
+    quick : bool
+        A first look: short drops, a few seconds of coast-down, a small campaign, a coarse recommendation.
+    samples : int, optional
+        Campaign size (0: no campaign); default ``verify.campaign_samples``.
+    """
+    start = time.perf_counter()
+    data, name, base = machine_table(spec)
+    criteria = read_criteria(data.get("criteria"))
+    settings = verify_settings(data)
+    if candidates is None:
+        candidates = data.get("candidate", [])
+        if not isinstance(candidates, list):
+            raise InputError.for_field("candidate", candidates, "give [[candidate]] tables")
+    candidate_list = candidate_tables(data, candidates)
+
+    def say(text: str) -> None:
+        if progress is not None:
+            progress(text)
+
+    design = _design(run_cases(data, name, base, quick=quick, samples=samples, store=out_dir / "campaign.zarr",
+                               workers=workers, scheduler=scheduler, required_s0=criteria["min_s0"],
+                               progress=lambda t: say(f"design: {t}")), criteria)
+    others = []
+    for i, (label, tables) in enumerate(candidate_list):
+        cases = run_cases(tables, f"{name} with {label}", base, quick=quick, samples=samples,
+                          store=out_dir / f"campaign_candidate_{i}.zarr", workers=workers, scheduler=scheduler,
+                          required_s0=criteria["min_s0"], progress=lambda t, label=label: say(f"{label}: {t}"))
+        others.append((label, _design(cases, criteria)))
+    rec = recommend(data, name, base, criteria, quick=quick, progress=say) if with_recommendation else None
+    machine = design["cases"].machine
+    result = {
+        "machine": machine.name, "verdict": design["verdict"], "design": design, "quick": quick,
+        "criteria": [c.as_json() for c in design["criteria"]], "worst_margin": design["worst_margin"],
+        "candidates": [{"bearing": label, "verdict": d["verdict"], "worst_margin": d["worst_margin"],
+                        "criteria": [c.as_json() for c in d["criteria"]]} for label, d in others],
+        "recommendation": rec, "settings": settings, "wall_time_s": 0.0,
+        "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
+                   "candidates": [label for label, _ in candidate_list], "quick": quick},
+    }
+    ranked = sorted([(machine.planes[0].bearing.name + " (the design)", design), *others],
+                    key=lambda item: -np.nan_to_num(item[1]["worst_margin"], nan=-np.inf))
+    result["candidate_rows"] = [[i + 1, label, d["verdict"], f"{100 * d['worst_margin']:+.1f} %"
+                                 if math.isfinite(d["worst_margin"]) else "-",
+                                 "; ".join(c.name for c in d["criteria"] if c.passed is False) or "-"]
+                                for i, (label, d) in enumerate(ranked)]
+    result["ranking"] = [label for label, _ in ranked]
+    if rec is not None:
+        first = machine.planes[0].bearing
+        result["recommendation_rows"] = [
+            ["contact angle", f"{rec['contact_angle_deg']:.1f} deg", f"{math.degrees(first.contact_angle):.1f} deg"],
+            ["inner / outer groove ratio", f"{rec['inner_groove_ratio']:.3f} / {rec['outer_groove_ratio']:.3f}",
+             f"{first.inner_groove_ratio:.3f} / {first.outer_groove_ratio:.3f}"],
+            ["radial clearance", ", ".join(f"{s:.3f}" for s in rec["radial_clearance_mm"]) + " mm",
+             ", ".join(f"{p.radial_clearance * 1e3:.3f}" for p in machine.planes) + " mm"],
+            ["worst drop margin", f"{100 * rec['worst_margin']:+.1f} %", f"{100 * rec['as_is']:+.1f} %"]]
+    result["assumptions"] = _assumptions(design["cases"], criteria, settings, quick)
+    result["wall_time_s"] = time.perf_counter() - start
+    return result
+
+
+def _assumptions(cases: Cases, criteria: dict, settings: dict, quick: bool) -> list[str]:
+    from auxbearing.verify.criteria import CRITERIA
+
+    out = []
+    for p in CRITERIA:
+        if p.key not in criteria["given"] and criteria[p.key] is not None:
+            out.append(f"criteria.{p.key}: default ({p.source})")
+    for plane in cases.machine.planes:
+        if plane.defaults:
+            out.append(f"{plane.name}: derived from the bearing's geometry or defaulted: {', '.join(plane.defaults)}")
+    out.append(f"low-speed drop at a quarter of the maximum speed unless verify.low_speed is given; campaign "
+               f"spreads (the [verify] table): unbalance phase over the whole turn, sliding friction +-"
+               f"{settings['friction_spread']:g}, radial clearance +-{settings['clearance_tolerance'] * 1e6:g} um")
+    out += cases.notes
+    if quick:
+        out.append("--quick: shorter drops, a partial coast-down, 8 campaign samples, a 2x2x2 design grid")
+    return out
