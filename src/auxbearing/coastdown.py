@@ -411,7 +411,7 @@ def run_coastdown(machine: Machine, until_stop: bool = True, duration: float | N
         temps = [net.step(limits.temps[k], _heat_per_node(net, *powers[k]), session.t)
                  for k, net in enumerate(networks)]
         verdict, reason = limits.update(temps, session.t)
-        record(2)
+    record(2)  # the drop's end, also when the drop itself left the model's range
     while verdict == OK and session.t < t_end - 1e-12:
         if until_stop and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
             stopped_at = session.t

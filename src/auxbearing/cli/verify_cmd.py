@@ -45,7 +45,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
 
     from auxbearing.io import atomic_output_dir, save_dataset, write_json
     from auxbearing.report.verify_figures import build_figures
-    from auxbearing.report.verify_html import render, verdict_rows
+    from auxbearing.report.verify_html import render, verdict_reason, verdict_rows
     from auxbearing.verify.run import verify
 
     if campaign_samples is not None and not 0 <= campaign_samples <= 100000:
@@ -88,6 +88,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     for row in rows:
         table.add_row(*[str(v) for v in row])
     console = Console()
+    console.print(f"{result['verdict'].upper()}: {verdict_reason(result['design']['criteria'])}", highlight=False)
     console.print(table)
     if result["candidates"]:
         console.print("Candidates ranked by worst margin: " + ", ".join(result["ranking"]), highlight=False)

@@ -56,6 +56,15 @@ def verdict_rows(criteria: list) -> tuple[list[list[str]], list[str]]:
     return rows, classes
 
 
+def verdict_reason(criteria: list) -> str:
+    """Why the design passes or fails, in one sentence: every failing criterion with its evidence."""
+    failing = [c for c in criteria if c.passed is False]
+    if not failing:
+        return "every checked criterion holds"
+    return "fails on " + "; ".join(f"{c.name} ({_fmt(c.found, c.unit)} against {_fmt(c.required, c.unit)}: "
+                                   f"{c.evidence})" for c in failing)
+
+
 def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     """HTML text of the report from the result of :func:`auxbearing.verify.run.verify` and its figures.
 
@@ -64,10 +73,7 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     """
     main = result["design"]
     verdict = result["verdict"]
-    failing = [c for c in main["criteria"] if c.passed is False]
-    why = ("every checked criterion holds" if not failing else
-           "fails on " + "; ".join(f"{c.name} ({_fmt(c.found, c.unit)} against {_fmt(c.required, c.unit)}: "
-                                   f"{c.evidence})" for c in failing))
+    why = verdict_reason(main["criteria"])
     parts = ["<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>",
              f"<title>Touchdown-bearing verification: {_e(result['machine'])}</title>",
              f"<style>{_CSS}{_EXTRA_CSS}</style></head><body>",

@@ -101,13 +101,18 @@ def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, sam
         say("drop with the process thrust reversed")
         cases.drops["drop with the thrust reversed"] = run_machine(
             variant(data, name, base, rotor={"axial_force": f"{float(-machine.rotor.axial_force)!r} N"}, drop=drop))
-    say("coast-down with heat")
-    if quick:
+    first = cases.drops["drop at the maximum speed"].summary
+    if first["verdict"] != "ok":
+        cases.notes.append("the coast-down was not run: the drop at the maximum speed it starts from already left "
+                           f"the model's range ({first['reason']})")
+    elif quick:
+        say("coast-down with heat")
         cases.coastdown = run_coastdown(cases.machine, until_stop=False,
                                         duration=min(QUICK_COASTDOWN, machine.coastdown.max_time))
         cases.notes.append(f"--quick: the coast-down ran for its first {QUICK_COASTDOWN:g} s only; temperatures, "
                            "clearances and life cover that part")
     else:
+        say("coast-down with heat")
         cases.coastdown = run_coastdown(cases.machine)
     if samples is not None:
         n = samples

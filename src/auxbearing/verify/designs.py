@@ -88,7 +88,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         c_high = min(c_high, limit / max(p.radial_clearance for p in machine.planes))
     bounds = np.array([CONTACT_ANGLE_RANGE if angle_free else (first.contact_angle, first.contact_angle),
                        GROOVE_RATIO_RANGE, (CLEARANCE_RANGE[0], max(c_high, CLEARANCE_RANGE[0]))])
-    duration = {"duration": f"{min(machine.simulation.duration, QUICK_DROP)!r} s"} if quick else {}
+    duration = {"duration": f"{float(min(machine.simulation.duration, QUICK_DROP))!r} s"} if quick else {}
     evaluated: list[dict] = []
 
     def margins(x) -> dict:

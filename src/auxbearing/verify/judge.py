@@ -84,7 +84,10 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
         out.append(lower_bound("drops to failure (fatigue or dent)", allowed[0], required, "drops", source,
                                f"{allowed[1]}: {allowed[2]} governs"))
     else:
-        out.append(not_checked("peak bearing temperature", "no coast-down was run", ""))
+        why = "; ".join(n for n in cases.notes if "coast-down was not run" in n) or "no coast-down was run"
+        for name in ("peak bearing temperature", "preload of a closing internal clearance",
+                     "drops to failure (fatigue or dent)"):
+            out.append(not_checked(name, why, ""))
     # clearance against the magnetic air gap and a seal
     largest = max(p.radial_clearance for p in cases.machine.planes)
     if coast is not None and cases.coastdown is not None:

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from auxbearing.errors import InputError
-from auxbearing.machine import machine_table
+from auxbearing.machine import machine_from_mapping, machine_table
 from auxbearing.verify.cases import Cases, run_cases, verify_settings
 from auxbearing.verify.criteria import read_criteria, worst_margin
 from auxbearing.verify.designs import candidate_tables, recommend
@@ -113,6 +113,11 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         if not isinstance(candidates, list):
             raise InputError.for_field("candidate", candidates, "give [[candidate]] tables")
     candidate_list = candidate_tables(data, candidates)
+    for label, tables in candidate_list:  # refuse a bad candidate before the first drop, not after
+        try:
+            machine_from_mapping(tables, name, base)
+        except InputError as err:
+            raise InputError(f"candidate '{label}': {err}") from None
 
     def say(text: str) -> None:
         if progress is not None:

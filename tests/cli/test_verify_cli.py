@@ -1,0 +1,135 @@
+"""auxbearing verify (issue 15): a machine file in, criteria, margins, candidates, a recommendation out.
+
+One quick verification of the blower with every criterion given (air gap, seal) and a candidate in the
+same seats is run once for the module; the undersized design is the heavy fast rotor of issue 12,
+whose drop at the maximum speed overloads the touchdown contact.
+"""
+
+import json
+import math
+from importlib import resources
+
+import pytest
+from click.testing import CliRunner
+
+from auxbearing.cli.main import cli
+from tests.browser import needs_chromium, probe_report
+
+CRITERIA_AND_CANDIDATE = """
+[criteria]
+min_s0 = 1.5
+amb_air_gap = "0.5 mm"
+seal_clearance = "0.4 mm"
+
+[[candidate]]
+name = "angular contact 7208"
+bearing = "7208"
+"""
+
+
+def _run(*args):
+    return CliRunner().invoke(cli, [str(a) for a in args])
+
+
+@pytest.fixture(scope="module")
+def blower_verified(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("verify")
+    text = resources.files("auxbearing.catalog").joinpath("machines/blower.toml").read_text()
+    machine = folder / "blower.toml"
+    machine.write_text(text + CRITERIA_AND_CANDIDATE)
+    out = folder / "report"
+    result = _run("verify", "--machine", machine, "--out", out, "--quick", "--campaign-samples", 4, "--quiet")
+    assert result.exit_code == 0, result.output
+    return out, result.output
+
+
+@pytest.mark.slow
+def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_verified):
+    out, _ = blower_verified
+    data = json.loads((out / "verify.json").read_text())
+    assert data["verdict"] in ("pass", "fail")
+    names = [c["name"] for c in data["criteria"]]
+    assert len(names) == 9 and len(set(names)) == 9
+    for c in data["criteria"]:
+        assert {"name", "required", "found", "margin", "pass"} <= set(c)
+        if c["kind"] == "lower":
+            assert math.isclose(c["margin"], c["found"] / c["required"] - 1.0)
+        elif c["kind"] == "upper":
+            assert math.isclose(c["margin"], 1.0 - c["found"] / c["required"])
+        if c["margin"] is not None:
+            assert c["pass"] == (c["margin"] >= 0.0)
+    # every input given, so every criterion is checked
+    assert all(c["pass"] is not None for c in data["criteria"])
+    assert data["verdict"] == ("pass" if all(c["pass"] for c in data["criteria"]) else "fail")
+    assert [c["bearing"] for c in data["candidates"]] == ["angular contact 7208"]
+    assert len(data["ranking"]) == 2
+    rec = data["recommendation"]
+    assert rec["worst_margin"] >= rec["as_is"] - 1e-12  # the search keeps the design if nothing beats it
+    lo, hi = rec["bounds"]["contact_angle_deg"]
+    assert lo <= rec["contact_angle_deg"] <= hi
+    assert rec["binding_criterion"]
+    assert {p.name for p in out.iterdir()} >= {"report.html", "verify.json", "coastdown.nc", "drop_0.nc",
+                                               "campaign.zarr"}
+
+
+@pytest.mark.slow
+def test_verify_prints_the_verdict_and_its_reason_first(blower_verified):
+    _, output = blower_verified
+    first = output.strip().splitlines()[0]
+    assert first.startswith(("PASS: every checked criterion holds", "FAIL: fails on"))
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_verify_report_loads_every_figure_and_shows_no_paper_number(blower_verified, tmp_path):
+    out, _ = blower_verified
+    html = (out / "report.html").read_text(encoding="utf-8")
+    data = probe_report(html, tmp_path)
+    assert data["images"] >= 8
+    assert data["loaded"] == data["images"]
+    assert data["sections"] >= 8
+    assert data["empty"] == []
+    # a user's machine: nothing of the source paper's reproduction (claims, its bearings, its figures)
+    for text in ("claim", "QJ202", "7202", "Sun et al", "Fig. "):
+        assert text not in html
+    # the verdict comes before any evidence
+    assert html.index("Verdict:") < html.index("<h2>")
+
+
+@pytest.mark.slow
+def test_undersized_design_fails_on_the_model_range_with_the_reason_on_top(tmp_path):
+    out = tmp_path / "report"
+    result = _run("verify", "--machine", "heavy_fast_rotor", "--out", out, "--campaign-samples", 0,
+                  "--no-recommendation", "--json")
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    assert data["verdict"] == "fail"
+    failing = [c["name"] for c in data["criteria"] if c["pass"] is False]
+    assert failing == ["no run leaves the model's range or a limit"]
+    failed = next(c for c in data["criteria"] if c["pass"] is False)
+    assert "line_contact_overload" in failed["found"]
+    # what depends on the coast-down is not checked (never passed) when the drop it starts from failed
+    unchecked = {c["name"] for c in data["criteria"] if c["pass"] is None}
+    assert "peak bearing temperature" in unchecked and "drops to failure (fatigue or dent)" in unchecked
+    html = (out / "report.html").read_text(encoding="utf-8")
+    banner = html[html.index("Verdict:"):html.index("<h2>")]
+    assert "FAIL" in banner and "line" in banner
+
+
+def test_bad_criteria_key_is_one_line_and_nothing_is_written(tmp_path):
+    machine = tmp_path / "m.toml"
+    text = resources.files("auxbearing.catalog").joinpath("machines/blower.toml").read_text()
+    machine.write_text(text + '\n[criteria]\nmin_so = 2\n')
+    out = tmp_path / "report"
+    result = _run("verify", "--machine", machine, "--out", out, "--quick")
+    assert result.exit_code == 2
+    lines = result.output.strip().splitlines()
+    assert len(lines) == 1 and "criteria.min_so" in lines[0]
+    assert not out.exists()
+
+
+def test_bad_candidate_is_refused_before_any_drop(tmp_path):
+    out = tmp_path / "report"
+    result = _run("verify", "--machine", "blower", "--out", out, "--candidates", "QJ208,,7208")
+    assert result.exit_code == 2 and "--candidates" in result.output
+    assert not out.exists()
