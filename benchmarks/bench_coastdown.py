@@ -1,0 +1,141 @@
+"""Coast-down of the shipped blower (issue 13): wall time against simulated time, auto path beside full dynamics.
+
+In one process, after a short run that compiles or loads the kernels:
+
+1. ``run_coastdown(read_machine("blower"))`` (mode "auto": full dynamics in windows, the reduced model on
+   settled stretches) from the drop speed to standstill, best of ``--repeats``: wall and CPU time against
+   the simulated time (target: wall <= 0.1 x simulated on the 2-core machine). The progress callback
+   (called after every window and stretch) splits the wall time into the drop with the first window,
+   the other full-dynamics windows, the reduced stretches and what follows the last of them (fatigue,
+   outputs), also by speed band;
+2. the full-dynamics path, ``mode="full"``, on the first ``--full-duration`` seconds only: its wall time
+   per simulated second, and that cost extrapolated (not run) to the auto run's time to standstill; a
+   second estimate takes each speed band at the cost of the auto run's own windows in that band (the
+   first seconds are at the drop speed, where the motion may cost less than at lower speeds).
+
+    python benchmarks/bench_coastdown.py [--repeats 3] [--full-duration 2.0] [--machine blower]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import re
+import time
+from itertools import pairwise
+
+import numpy as np
+
+from auxbearing.coastdown import run_coastdown
+from auxbearing.machine import read_machine
+
+#: Speed bands of the split, as fractions of the drop speed.
+BANDS = np.array([0.0, 0.25, 0.5, 0.75, 1.0 + 1e-9])
+
+
+def load() -> str:
+    one, five, fifteen = os.getloadavg()
+    return f"load average {one:.2f} / {five:.2f} / {fifteen:.2f} (1/5/15 min) on {os.cpu_count()} cores"
+
+
+class Split:
+    """Wall time between progress calls, booked to windows or stretches by how far simulated time moved.
+
+    Each call's status line carries the speed; wall and simulated time are also binned by speed, in
+    :data:`BANDS` fractions of the drop speed, so a cost per simulated second can be read per band.
+    """
+
+    def __init__(self, machine, until_stop: bool, duration: float | None) -> None:
+        self.t_end = machine.coastdown.max_time if until_stop else duration
+        self.window = machine.coastdown.check_window
+        self.rpm0 = abs(machine.rotor.speed) * 30.0 / math.pi
+        self.calls: list[tuple[float, float, float]] = []  # (wall clock, simulated time, speed [rpm])
+
+    def __call__(self, fraction: float, status: str) -> None:
+        found = re.search(r"([-+\d.]+) rpm", status)
+        self.calls.append((time.perf_counter(), fraction * self.t_end, abs(float(found.group(1))) if found else 0.0))
+
+    def report(self, start: float, stop: float) -> dict:
+        """Wall [s] before the first call (the drop and the first window), in windows, stretches, after the last.
+
+        ``bands``: per speed band, [window wall, window simulated, stretch wall, stretch simulated].
+        """
+        calls = self.calls
+        out = {"drop": (calls[0][0] if calls else stop) - start, "windows": 0.0, "stretches": 0.0,
+               "tail": stop - calls[-1][0] if calls else 0.0, "window_s": 0.0, "stretch_s": 0.0,
+               "bands": np.zeros((len(BANDS) - 1, 4))}
+        for (w0, t0, _), (w1, t1, rpm) in pairwise(calls):
+            window = t1 - t0 <= self.window * (1.0 + 1e-6)
+            out["windows" if window else "stretches"] += w1 - w0
+            out["window_s" if window else "stretch_s"] += t1 - t0
+            band = min(int(np.searchsorted(BANDS, rpm / self.rpm0, side="right")) - 1, len(BANDS) - 2)
+            out["bands"][max(band, 0), 0 if window else 2] += w1 - w0
+            out["bands"][max(band, 0), 1 if window else 3] += t1 - t0
+        return out
+
+
+def timed(machine, until_stop: bool, duration: float | None, mode: str):
+    split = Split(machine, until_stop, duration)
+    wall, cpu = time.perf_counter(), time.process_time()
+    run = run_coastdown(machine, until_stop=until_stop, duration=duration, mode=mode, progress=split)
+    stop = time.perf_counter()
+    return stop - wall, time.process_time() - cpu, run.summary, split.report(wall, stop)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--machine", default="blower")
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--full-duration", type=float, default=2.0, help="simulated seconds of the full path [s]")
+    args = parser.parse_args()
+    print(load())
+    machine = read_machine(args.machine)
+    start = time.perf_counter()
+    run_coastdown(machine, until_stop=False, duration=0.02)
+    print(f"kernels compiled or loaded by a 20 ms run: {time.perf_counter() - start:.2f} s")
+
+    best = (math.inf,)
+    for _ in range(args.repeats):
+        result = timed(machine, True, None, "auto")
+        print(f"  auto run: wall {result[0]:.2f} s, CPU {result[1]:.2f} s")
+        best = min(best, result, key=lambda r: r[0])
+    wall, cpu, s, split = best
+    sim = s["simulated_s"]
+    print(f"\n{machine.name}, auto path, best of {args.repeats}: verdict {s['verdict']}, standstill reached: "
+          f"{s['reached_standstill']}, {sim:.2f} s simulated ({s['full_dynamics_s']:.2f} s of it in "
+          f"{s['windows']} full-dynamics windows, {s['reduced_model_s']:.2f} s in {s['reduced_stretches']} reduced "
+          f"stretches), energy error {s['energy_balance_error']:.1e}")
+    print(f"  wall {wall:.2f} s, CPU {cpu:.2f} s -> wall / simulated = {wall / sim:.3f} (target <= 0.1), "
+          f"CPU / simulated = {cpu / sim:.3f}")
+    print(f"  wall by part: drop and first window {split['drop']:.2f} s; other windows {split['windows']:.2f} s "
+          f"for {split['window_s']:.2f} s simulated; stretches {split['stretches']:.2f} s for "
+          f"{split['stretch_s']:.2f} s simulated; after the last {split['tail']:.2f} s")
+
+    bands = split["bands"]
+    for i in range(len(BANDS) - 1):
+        ww, ws, sw, ss = bands[i]
+        cost = f"{ww / ws:.1f} s of wall per simulated second" if ws > 0.0 else "no window"
+        print(f"    speed {100 * BANDS[i]:3.0f}-{min(100 * BANDS[i + 1], 100):3.0f} % of the drop speed: windows "
+              f"{ww:.2f} s for {ws:.2f} s simulated ({cost}); stretches {sw:.2f} s for {ss:.2f} s simulated")
+
+    f_wall, f_cpu, fs, f_split = timed(machine, False, args.full_duration, "full")
+    per_s = f_wall / fs["simulated_s"]
+    window_per_s = f_split["windows"] / max(f_split["window_s"], 1e-300)
+    print(f"\nfull dynamics (mode='full') on the first {fs['simulated_s']:.2f} s: wall {f_wall:.2f} s, CPU "
+          f"{f_cpu:.2f} s -> {per_s:.2f} s of wall per simulated second ({window_per_s:.2f} s in its windows alone)")
+    # fixed parts (drop, fatigue and outputs) once, then the windows' cost per simulated second for the rest
+    estimate = f_wall + window_per_s * (sim - fs["simulated_s"])
+    print(f"  extrapolated, not run: the full path to standstill ({sim:.1f} s) would take about "
+          f"{estimate / 60:.0f} min of wall at this cost -> wall / simulated about {estimate / sim:.1f}; the auto "
+          f"path is {estimate / wall:.0f}x faster")
+    # the first seconds are at the drop speed; the auto run's own windows give the cost at lower speeds
+    rate = np.where(bands[:, 1] > 0.0, bands[:, 0] / np.maximum(bands[:, 1], 1e-300), window_per_s)
+    by_band = split["drop"] + split["tail"] + float(np.sum(rate * (bands[:, 1] + bands[:, 3])))
+    print(f"  extrapolated band by band (each speed band at the cost of the auto run's windows in it): about "
+          f"{by_band / 60:.0f} min -> wall / simulated about {by_band / sim:.1f}")
+    print(load())
+
+
+if __name__ == "__main__":
+    main()
