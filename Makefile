@@ -1,18 +1,25 @@
-# Two commands on a fresh machine: `make study` (the main job) and `make test` (all tests).
+# Two commands on a fresh machine: `make verify` (the main job: verify the example blower's touchdown
+# bearings into verify/report.html) and `make test` (all tests). `make study` reproduces the source paper.
 # `make quick` is the edit loop: ruff, then every test not marked slow (30 s or less once the kernels are cached).
 PYTHON ?= python3
 VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed-stamp
 OUT ?= study
+VERIFY_OUT ?= verify
+MACHINE ?= blower
 
-.PHONY: study test quick lint bench clean
+.PHONY: verify study test quick lint bench clean
 
 $(STAMP): pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
 	@touch $(STAMP)
+
+verify: $(STAMP)
+	$(BIN)/auxbearing verify --machine $(MACHINE) --out $(VERIFY_OUT)
+	@echo "Verification: $(VERIFY_OUT)/report.html (open it in a browser); verdicts in $(VERIFY_OUT)/verify.json"
 
 study: $(STAMP)
 	$(BIN)/auxbearing study --out $(OUT)
@@ -30,5 +37,5 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
 
 clean:
-	rm -rf $(VENV) $(OUT) out .pytest_cache .ruff_cache
+	rm -rf $(VENV) $(OUT) $(VERIFY_OUT) out .pytest_cache .ruff_cache
 	find src -name "*.nbi" -o -name "*.nbc" | xargs rm -f  # numba caches do not see edits in imported modules
