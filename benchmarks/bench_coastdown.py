@@ -40,47 +40,48 @@ def load() -> str:
 
 
 class Split:
-    """Wall time between progress calls, booked to windows or stretches by how far simulated time moved.
+    """Wall and CPU time between progress calls, booked to windows or stretches by how far simulated time moved.
 
-    Each call's status line carries the speed; wall and simulated time are also binned by speed, in
-    :data:`BANDS` fractions of the drop speed, so a cost per simulated second can be read per band.
+    Each call's status line carries the speed; the times are also binned by speed, in :data:`BANDS`
+    fractions of the drop speed, so a cost per simulated second can be read per band.
     """
 
     def __init__(self, machine, until_stop: bool, duration: float | None) -> None:
         self.t_end = machine.coastdown.max_time if until_stop else duration
         self.window = machine.coastdown.check_window
         self.rpm0 = abs(machine.rotor.speed) * 30.0 / math.pi
-        self.calls: list[tuple[float, float, float]] = []  # (wall clock, simulated time, speed [rpm])
+        self.calls: list[tuple[float, float, float, float]] = []  # wall clock, CPU clock, simulated time, rpm
 
     def __call__(self, fraction: float, status: str) -> None:
         found = re.search(r"([-+\d.]+) rpm", status)
-        self.calls.append((time.perf_counter(), fraction * self.t_end, abs(float(found.group(1))) if found else 0.0))
+        self.calls.append((time.perf_counter(), time.process_time(), fraction * self.t_end,
+                           abs(float(found.group(1))) if found else 0.0))
 
-    def report(self, start: float, stop: float) -> dict:
-        """Wall [s] before the first call (the drop and the first window), in windows, stretches, after the last.
+    def report(self, start: tuple[float, float], stop: tuple[float, float]) -> dict:
+        """(wall, CPU) [s] before the first call (the drop and the first window), in windows, stretches, after.
 
-        ``bands``: per speed band, [window wall, window simulated, stretch wall, stretch simulated].
+        ``bands``: per speed band, [wall, CPU, simulated] of its windows, then of its stretches.
         """
         calls = self.calls
-        out = {"drop": (calls[0][0] if calls else stop) - start, "windows": 0.0, "stretches": 0.0,
-               "tail": stop - calls[-1][0] if calls else 0.0, "window_s": 0.0, "stretch_s": 0.0,
-               "bands": np.zeros((len(BANDS) - 1, 4))}
-        for (w0, t0, _), (w1, t1, rpm) in pairwise(calls):
+        first, last = (calls[0][:2], calls[-1][:2]) if calls else (stop, stop)
+        out = {"drop": np.subtract(first, start), "tail": np.subtract(stop, last), "windows": np.zeros(3),
+               "stretches": np.zeros(3), "bands": np.zeros((len(BANDS) - 1, 6))}
+        for (w0, c0, t0, _), (w1, c1, t1, rpm) in pairwise(calls):
             window = t1 - t0 <= self.window * (1.0 + 1e-6)
-            out["windows" if window else "stretches"] += w1 - w0
-            out["window_s" if window else "stretch_s"] += t1 - t0
-            band = min(int(np.searchsorted(BANDS, rpm / self.rpm0, side="right")) - 1, len(BANDS) - 2)
-            out["bands"][max(band, 0), 0 if window else 2] += w1 - w0
-            out["bands"][max(band, 0), 1 if window else 3] += t1 - t0
+            spent = np.array([w1 - w0, c1 - c0, t1 - t0])
+            out["windows" if window else "stretches"] += spent
+            band = min(max(int(np.searchsorted(BANDS, rpm / self.rpm0, side="right")) - 1, 0), len(BANDS) - 2)
+            first_col = 0 if window else 3
+            out["bands"][band, first_col:first_col + 3] += spent
         return out
 
 
 def timed(machine, until_stop: bool, duration: float | None, mode: str):
     split = Split(machine, until_stop, duration)
-    wall, cpu = time.perf_counter(), time.process_time()
+    start = (time.perf_counter(), time.process_time())
     run = run_coastdown(machine, until_stop=until_stop, duration=duration, mode=mode, progress=split)
-    stop = time.perf_counter()
-    return stop - wall, time.process_time() - cpu, run.summary, split.report(wall, stop)
+    stop = (time.perf_counter(), time.process_time())
+    return stop[0] - start[0], stop[1] - start[1], run.summary, split.report(start, stop)
 
 
 def main() -> None:
@@ -108,32 +109,39 @@ def main() -> None:
           f"stretches), energy error {s['energy_balance_error']:.1e}")
     print(f"  wall {wall:.2f} s, CPU {cpu:.2f} s -> wall / simulated = {wall / sim:.3f} (target <= 0.1), "
           f"CPU / simulated = {cpu / sim:.3f}")
-    print(f"  wall by part: drop and first window {split['drop']:.2f} s; other windows {split['windows']:.2f} s "
-          f"for {split['window_s']:.2f} s simulated; stretches {split['stretches']:.2f} s for "
-          f"{split['stretch_s']:.2f} s simulated; after the last {split['tail']:.2f} s")
-
+    w, st = split["windows"], split["stretches"]
+    print(f"  by part, wall (CPU): drop and first window {split['drop'][0]:.2f} s ({split['drop'][1]:.2f} s); other "
+          f"windows {w[0]:.2f} s ({w[1]:.2f} s) for {w[2]:.2f} s simulated; stretches {st[0]:.2f} s ({st[1]:.2f} s) "
+          f"for {st[2]:.2f} s simulated; after the last {split['tail'][0]:.2f} s ({split['tail'][1]:.2f} s)")
     bands = split["bands"]
     for i in range(len(BANDS) - 1):
-        ww, ws, sw, ss = bands[i]
-        cost = f"{ww / ws:.1f} s of wall per simulated second" if ws > 0.0 else "no window"
+        ww, wc, ws, sw, sc, ss = bands[i]
+        cost = f"{ww / ws:.1f} s wall, {wc / ws:.1f} s CPU per simulated second" if ws > 0.0 else "no window"
         print(f"    speed {100 * BANDS[i]:3.0f}-{min(100 * BANDS[i + 1], 100):3.0f} % of the drop speed: windows "
-              f"{ww:.2f} s for {ws:.2f} s simulated ({cost}); stretches {sw:.2f} s for {ss:.2f} s simulated")
+              f"{ww:.2f} s for {ws:.2f} s simulated ({cost}); stretches {sw:.2f} s ({sc:.2f} s CPU) for {ss:.2f} s "
+              "simulated")
 
     f_wall, f_cpu, fs, f_split = timed(machine, False, args.full_duration, "full")
-    per_s = f_wall / fs["simulated_s"]
-    window_per_s = f_split["windows"] / max(f_split["window_s"], 1e-300)
+    fw = f_split["windows"]
+    per_s = np.array([f_wall, f_cpu]) / fs["simulated_s"]
+    window_per_s = fw[:2] / max(fw[2], 1e-300)
     print(f"\nfull dynamics (mode='full') on the first {fs['simulated_s']:.2f} s: wall {f_wall:.2f} s, CPU "
-          f"{f_cpu:.2f} s -> {per_s:.2f} s of wall per simulated second ({window_per_s:.2f} s in its windows alone)")
+          f"{f_cpu:.2f} s -> {per_s[0]:.2f} s wall, {per_s[1]:.2f} s CPU per simulated second ({window_per_s[0]:.2f} s"
+          f" wall, {window_per_s[1]:.2f} s CPU in its windows alone)")
     # fixed parts (drop, fatigue and outputs) once, then the windows' cost per simulated second for the rest
-    estimate = f_wall + window_per_s * (sim - fs["simulated_s"])
+    estimate = np.array([f_wall, f_cpu]) + window_per_s * (sim - fs["simulated_s"])
     print(f"  extrapolated, not run: the full path to standstill ({sim:.1f} s) would take about "
-          f"{estimate / 60:.0f} min of wall at this cost -> wall / simulated about {estimate / sim:.1f}; the auto "
-          f"path is {estimate / wall:.0f}x faster")
+          f"{estimate[0] / 60:.0f} min of wall ({estimate[1] / 60:.0f} min CPU) at this cost -> wall / simulated about "
+          f"{estimate[0] / sim:.1f} (CPU {estimate[1] / sim:.1f}); the auto path is {estimate[0] / wall:.0f}x faster")
     # the first seconds are at the drop speed; the auto run's own windows give the cost at lower speeds
-    rate = np.where(bands[:, 1] > 0.0, bands[:, 0] / np.maximum(bands[:, 1], 1e-300), window_per_s)
-    by_band = split["drop"] + split["tail"] + float(np.sum(rate * (bands[:, 1] + bands[:, 3])))
+    sims = bands[:, 2] + bands[:, 5]
+    by_band = []
+    for j in range(2):
+        rate = np.where(bands[:, 2] > 0.0, bands[:, j] / np.maximum(bands[:, 2], 1e-300), window_per_s[j])
+        by_band.append(split["drop"][j] + split["tail"][j] + float(np.sum(rate * sims)))
     print(f"  extrapolated band by band (each speed band at the cost of the auto run's windows in it): about "
-          f"{by_band / 60:.0f} min -> wall / simulated about {by_band / sim:.1f}")
+          f"{by_band[0] / 60:.0f} min wall ({by_band[1] / 60:.0f} min CPU) -> wall / simulated about "
+          f"{by_band[0] / sim:.1f} (CPU {by_band[1] / sim:.1f})")
     print(load())
 
 
