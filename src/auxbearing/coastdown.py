@@ -46,7 +46,16 @@ from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
-from auxbearing.drop import MachineRun, integrate_machine, machine_dataset, machine_summary, whirl_window
+from auxbearing.drop import (
+    MachineRun,
+    as_machine,
+    integrate_machine,
+    machine_dataset,
+    machine_summary,
+    simulated_time,
+    whirl_window,
+)
+from auxbearing.errors import InputError
 from auxbearing.machine import DRAG_SPEED_SCALE, Machine
 from auxbearing.statics import ISO76_BALL_STRESS
 from auxbearing.thermal import HOUSING, JOURNAL, NODE_NAMES, build_network
@@ -356,17 +365,18 @@ def _preload_stress(ballset, clearance: float) -> float:
     return float(max(st.stress_inner.max(), st.stress_outer.max()))
 
 
-def run_coastdown(machine: Machine, until_stop: bool = True, duration: float | None = None, mode: str = "auto",
-                  progress: Callable[[float, str], None] | None = None) -> CoastdownRun:
+def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: float | str | None = None,
+                  mode: str = "auto", progress: Callable[[float, str], None] | None = None) -> CoastdownRun:
     """Run a machine from its drop to standstill (or for ``duration`` seconds); see the module docstring.
 
     Parameters
     ----------
-    machine : Machine
+    machine : Machine or str
+        A machine, or a machine TOML path or example machine's name.
     until_stop : bool
         Go on until the rotor turns slower than ``coastdown.stop_speed`` (at most ``coastdown.max_time``).
-    duration : float, optional
-        Simulated time [s] instead of running to standstill.
+    duration : float or str, optional
+        Simulated time (s, or a string with a unit) instead of running to standstill.
     mode : {"auto", "full"}
         "auto" hands settled stretches to the reduced model; "full" keeps full dynamics throughout
         (for checking the reduced model; slow for long coast-downs).
@@ -374,8 +384,11 @@ def run_coastdown(machine: Machine, until_stop: bool = True, duration: float | N
         Called with (fraction, status line) after every window and stretch.
     """
     if mode not in ("auto", "full"):
-        raise ValueError(f"mode = {mode!r}: must be 'auto' or 'full'")
+        raise InputError.for_field("mode", mode, "must be 'auto' or 'full'")
+    machine = as_machine(machine)
     coast = machine.coastdown
+    if duration is not None:
+        duration = simulated_time(duration)
     t_end = coast.max_time if (until_stop and duration is None) else float(duration or coast.max_time)
     wall_start = time.perf_counter()
     drop_length = min(machine.simulation.duration, t_end)

@@ -156,15 +156,35 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
     return Integration(model, grid, watch, memory, y, verdict, wall, compile_s, out_step, decimated)
 
 
-def run_machine(machine: Machine, duration: float | None = None,
+def as_machine(machine) -> Machine:
+    """A :class:`~auxbearing.machine.Machine` as given, or read from a TOML path or an example machine's name."""
+    if isinstance(machine, Machine):
+        return machine
+    from auxbearing.machine import read_machine
+
+    return read_machine(machine)
+
+
+def simulated_time(value, field: str = "duration") -> float:
+    """A simulated time from a number (s) or a string with a unit ("50 ms") [s]; positive and finite."""
+    from auxbearing.errors import InputError
+
+    seconds = convert(field, value, "time")
+    if not (math.isfinite(seconds) and seconds > 0.0):
+        raise InputError.for_field(field, value, "must be a positive, finite time")
+    return seconds
+
+
+def run_machine(machine: Machine | str, duration: float | str | None = None,
                 progress: Callable[[float, str], None] | None = None, lean: bool = False) -> MachineRun:
     """Integrate a machine's touchdown and summarise it (module docstring).
 
     Parameters
     ----------
-    machine : Machine
-    duration : float, optional
-        Simulated time [s]; default ``machine.simulation.duration``.
+    machine : Machine or str
+        A machine, or the path of a machine TOML file or an example machine's name (``auxbearing machines``).
+    duration : float or str, optional
+        Simulated time (a number in s or a string with a unit, "50 ms"); default ``machine.simulation.duration``.
     progress : callable, optional
         Called with (fraction done, a short status line) after every slice of 20 000 steps.
     lean : bool
@@ -174,7 +194,8 @@ def run_machine(machine: Machine, duration: float | None = None,
     -------
     MachineRun
     """
-    duration = machine.simulation.duration if duration is None else float(duration)
+    machine = as_machine(machine)
+    duration = machine.simulation.duration if duration is None else simulated_time(duration)
     run = integrate_machine(machine, duration, None, progress)
     ds = machine_dataset(machine, run.model, run.grid, run.output_step, lean)
     summary = machine_summary(machine, run, ds, duration)

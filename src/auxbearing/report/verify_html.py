@@ -24,6 +24,11 @@ pre{white-space:pre-wrap;word-break:break-word}
 """
 
 
+#: Criteria judged on the coast-down, which the geometry search does not run.
+COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing internal clearance",
+                      "drops to failure (fatigue or dent)")
+
+
 def _fmt(value, unit: str = "") -> str:
     if value is None:
         return "-"
@@ -131,6 +136,13 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
             f"; at the bound of {', '.join(rec['variables_at_bounds'])}" if rec["variables_at_bounds"] else "")
         parts.append(f"<p><b>What binds:</b> {_e(binds)}. Worst margin {_margin(rec['worst_margin'])} against "
                      f"{_margin(rec['as_is'])} as built.</p>")
+        parts.append("<p class='small'>Each point of the search is judged by its drop at the maximum speed (s0, "
+                     "the model's range, backward whirl, the contact ellipse against the shoulder); the coast-down "
+                     "criteria and the campaign are not part of it (each point would need a whole coast-down).</p>")
+        unaddressed = [c.name for c in main["criteria"] if c.passed is False and c.name in COASTDOWN_CRITERIA]
+        if unaddressed:
+            parts.append(f"<p><b>Not addressed by this recommendation:</b> {_e(', '.join(unaddressed))} "
+                         "(check it with a verification of the recommended geometry).</p>")
         parts += [_figure(f, c) for f, c in figures.get("recommendation", [])]
     parts.append("<h2>Assumptions and defaults used</h2><ul>")
     parts += [f"<li>{_e(a)}</li>" for a in result["assumptions"]]
