@@ -139,6 +139,75 @@ def ball_contact(
     return out
 
 
+def ellipse_checks(bearing: BearingGeometry, result: dict) -> tuple[list[str], str | None]:
+    """Where a contact of :func:`ball_contact` leaves Hertz theory: warnings, and a reason no result follows.
+
+    Hertz's solution holds for a contact small against the bodies' radii (Johnson, *Contact Mechanics*,
+    1985, Sec. 4.1); a semi-major axis as large as the ball's radius is outside it altogether (the
+    reason returned). Short of that, an ellipse whose half-length, added to the contact angle, reaches
+    past the groove shoulder is cut by the shoulder's edge, which carries a stress Hertz does not give
+    (a warning). The shoulder is the one the machine model assumes
+    (:data:`auxbearing.machine.SHOULDER_FRACTION` of the ball diameter above the groove bottom), and the
+    test is the one its observer applies during a drop.
+
+    Parameters
+    ----------
+    bearing : BearingGeometry
+    result : dict
+        What :func:`ball_contact` returned for it.
+
+    Returns
+    -------
+    warnings : list of str
+    refusal : str or None
+        Why the numbers mean nothing, or None.
+
+    Examples
+    --------
+    >>> from auxbearing import get_bearing
+    >>> b = get_bearing("QJ202")
+    >>> ellipse_checks(b, ball_contact(b, 1000.0))
+    ([], None)
+    >>> conformal = b.with_changes(inner_groove_ratio=0.5000001, outer_groove_ratio=0.5000001)
+    >>> ellipse_checks(conformal, ball_contact(conformal, 1000.0))[1][:45]
+    'the inner contact ellipse (semi-major axis 89'
+    """
+    from auxbearing.machine import SHOULDER_FRACTION
+
+    radius = 0.5 * bearing.ball_diameter
+    alpha = math.radians(result["contact_angle_deg"])
+    warnings = []
+    for race in RACES:
+        c = result[race]
+        a = c["semi_major_mm"] * 1e-3
+        if a >= radius:
+            return [], (f"the {race} contact ellipse (semi-major axis {a * 1e3:.4g} mm) is as large as the ball "
+                        f"(radius {radius * 1e3:.4g} mm) at a contact load of {c['contact_load_N']:.4g} N: Hertz "
+                        "theory needs a contact small against the ball, so no result follows")
+        groove = c["groove_ratio"] * bearing.ball_diameter
+        shoulder = math.acos(max(-1.0, 1.0 - SHOULDER_FRACTION * bearing.ball_diameter / groove))
+        reach = alpha + a / groove
+        if reach > shoulder:
+            warnings.append(f"the {race} contact ellipse runs over the groove shoulder: contact angle "
+                            f"{math.degrees(alpha):.3g} deg plus half the ellipse ({math.degrees(a / groove):.3g} "
+                            f"deg of groove arc) reach {math.degrees(reach):.3g} deg, past the shoulder at "
+                            f"{math.degrees(shoulder):.3g} deg (shoulder height {SHOULDER_FRACTION:g} D assumed); the "
+                            "edge carries a stress Hertz does not give")
+    return warnings, None
+
+
+def sweep_grid(start: float, stop: float, step: float) -> np.ndarray:
+    """START, START + STEP, ... up to STOP, never past it (a float error of 1e-9 steps is forgiven).
+
+    >>> sweep_grid(10.0, 89.9, 5.0)[-1]
+    np.float64(85.0)
+    >>> len(sweep_grid(0.505, 0.6, 0.0025))
+    39
+    """
+    count = math.floor((stop - start) / step + 1e-9) + 1
+    return start + step * np.arange(count)
+
+
 def contact_map(
     bearing: BearingGeometry,
     ball_load: float,

@@ -1,25 +1,117 @@
-"""Files out: NetCDF and JSON that carry their units, inputs and the package version.
+"""Files in and out: text in any encoding we can tell, NetCDF and JSON that carry units, inputs and version.
 
 Output folders are written atomically: everything goes to a hidden sibling folder first and is
-moved into place only when the job has finished, so a failed run leaves no half-written folder.
+moved into place only when the job has finished, so a failed run leaves no half-written folder. A
+run killed too hard to clean up (SIGKILL, out of memory) leaves its scratch folder behind; the next
+run into the same folder removes it once the process that made it is gone.
 """
 
 from __future__ import annotations
 
+import codecs
 import contextlib
 import json
 import math
 import os
 import shutil
+import socket
 import tempfile
+import warnings
 from collections.abc import Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import xarray as xr
 
 from auxbearing import __version__
 from auxbearing.errors import InputError
+
+if TYPE_CHECKING:  # xarray is imported by the functions that write it, so reading a TOML file needs none
+    import xarray as xr
+
+
+class FileEncodingWarning(UserWarning):
+    """A text file was not UTF-8 and was read in an encoding we had to assume."""
+
+
+#: Byte-order marks, longest first (a UTF-32 LE mark begins like a UTF-16 LE one), with their encodings.
+_BOMS = ((codecs.BOM_UTF32_LE, "utf-32"), (codecs.BOM_UTF32_BE, "utf-32"), (codecs.BOM_UTF8, "utf-8-sig"),
+         (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
+#: Share of NUL bytes in the odd (or even) positions that marks UTF-16 text without a byte-order mark:
+#: text of Latin letters, digits and punctuation has a zero high byte in every character.
+_UTF16_NUL_SHARE = 0.3
+#: Share of control characters (other than tab, newline, carriage return, form feed) above which the
+#: bytes are not text in any encoding.
+_BINARY_CONTROL_SHARE = 0.01
+
+
+def decode_text(data: bytes) -> tuple[str, str, bool]:
+    """Text of a file's bytes, the encoding used and whether it had to be assumed.
+
+    A byte-order mark or valid UTF-8 is certain; UTF-16 without a mark is told by its NUL bytes;
+    anything else is read as Windows-1252 (ISO 8859-1 where Windows-1252 leaves a byte undefined),
+    the usual encoding of files saved by Western-European Windows programs.
+
+    Raises
+    ------
+    ValueError
+        The bytes are not text (many control characters).
+
+    Examples
+    --------
+    >>> decode_text("Prüfstand".encode("utf-8"))
+    ('Prüfstand', 'UTF-8', False)
+    >>> decode_text("Prüfstand".encode("latin-1"))
+    ('Prüfstand', 'Windows-1252', True)
+    >>> decode_text("x = 1".encode("utf-16-le"))
+    ('x = 1', 'UTF-16-LE', True)
+    """
+    for bom, encoding in _BOMS:
+        if data.startswith(bom):
+            return _checked_text(data.decode(encoding), encoding.upper()), encoding.upper(), False
+    if 0 not in data:  # NUL is valid UTF-8, but no text file holds one: it marks UTF-16 or binary data
+        try:
+            return _checked_text(data.decode("utf-8"), "UTF-8"), "UTF-8", False
+        except UnicodeDecodeError:
+            pass
+    else:
+        odd, even = data[1::2].count(0), data[0::2].count(0)
+        half = len(data) // 2
+        for share, encoding in ((odd, "utf-16-le"), (even, "utf-16-be")):
+            if share >= _UTF16_NUL_SHARE * half and len(data) % 2 == 0:
+                try:
+                    return _checked_text(data.decode(encoding), encoding.upper()), encoding.upper(), True
+                except UnicodeDecodeError:
+                    break
+        raise ValueError("holds NUL bytes: it is not a text file")
+    try:
+        return _checked_text(data.decode("cp1252"), "Windows-1252"), "Windows-1252", True
+    except UnicodeDecodeError:
+        return _checked_text(data.decode("latin-1"), "ISO-8859-1"), "ISO-8859-1", True
+
+
+def _checked_text(text: str, encoding: str) -> str:
+    control = sum(1 for ch in text if ord(ch) < 32 and ch not in "\t\n\r\f") + text.count("\x7f")
+    if text and control > _BINARY_CONTROL_SHARE * len(text):
+        raise ValueError(f"read as {encoding} it is mostly control characters: it is not a text file")
+    return text
+
+
+def read_text(path: str | Path, field: str = "file") -> str:
+    """A text file's content; one-line errors naming ``field`` and a warning when the encoding was assumed."""
+    path = Path(path)
+    if path.is_dir():
+        raise InputError.for_field(field, str(path), "is a folder, not a file")
+    if not path.is_file():
+        raise InputError.for_field(field, str(path), "not found")
+    try:
+        text, encoding, assumed = decode_text(path.read_bytes())
+    except ValueError as err:
+        raise InputError.for_field(field, str(path), str(err)) from None
+    if assumed:
+        warnings.warn(FileEncodingWarning(f"{field} = '{path}': not UTF-8; read as {encoding} (save it as UTF-8 "
+                                          "to be sure of its accented letters)"), stacklevel=2)
+    return text
 
 
 def provenance(inputs: dict | None = None) -> dict:
@@ -34,7 +126,12 @@ def save_dataset(ds: xr.Dataset, path: str | Path, inputs: dict | None = None) -
     out.attrs = {k: _netcdf_attr(v) for k, v in {**ds.attrs, **provenance(inputs)}.items()}
     for name in out.variables:
         out[name].attrs = {k: _netcdf_attr(v) for k, v in out[name].attrs.items()}
-    out.to_netcdf(path)
+    try:
+        out.to_netcdf(path)
+    except RuntimeError as err:  # the NetCDF/HDF5 library reports a full disk as "NetCDF: HDF error"
+        free = shutil.disk_usage(path.parent).free
+        raise OSError(None, f"the NetCDF library could not write it ({err}); {free / 1e6:.0f} MB free on that "
+                            "disk; a full disk, a file-size limit or a quota?", str(path)) from None
     return path
 
 
@@ -88,37 +185,91 @@ def save_figure(fig, stem: str | Path, formats: tuple[str, ...] = ("png",)) -> l
     return paths
 
 
-def check_output_dir(target: str | Path) -> Path:
+def check_output_dir(target: str | Path, field: str = "--out") -> Path:
     """``target`` as a Path if an output folder can be made there, else a one-line InputError.
 
     Called where the command line reads ``--out``, before any work, so that a bad folder never
     costs a finished computation; :func:`atomic_output_dir` checks again when it writes.
     """
     target = Path(target)
+    if not str(target).strip():
+        raise InputError.for_field(field, str(target), "is empty; give a folder name")
     if target.exists() and not target.is_dir():
-        raise InputError(f"out = '{target}': exists and is not a folder; give a folder path")
-    existing = next(p for p in (target, *target.parents) if p.exists())
+        raise InputError.for_field(field, str(target), "exists and is not a folder; give a folder path")
+    existing = next(p for p in (target.absolute(), *target.absolute().parents) if p.exists())
     if not existing.is_dir():
-        raise InputError(f"out = '{target}': '{existing}' is a file, so no folder can be made below it")
+        raise InputError.for_field(field, str(target), f"'{existing}' is a file, so no folder can be made below it")
     if not os.access(existing, os.W_OK | os.X_OK):
-        raise InputError(f"out = '{target}': '{existing}' is not writable")
+        raise InputError.for_field(field, str(target), f"'{existing}' is not writable")
     return target
 
 
+#: Marker of the scratch folder an :func:`atomic_output_dir` writes into: "<host> <process id>".
+SCRATCH_OWNER = ".auxbearing-scratch"
+
+
+def _scratch_prefix(target: Path) -> str:
+    return f".{target.name}.partial-"
+
+
+def _owner_is_gone(folder: Path) -> bool:
+    """True when the process named in a scratch folder's marker no longer runs on this host."""
+    try:
+        host, pid = (folder / SCRATCH_OWNER).read_text().split()
+        pid_number = int(pid)
+    except (OSError, ValueError):
+        return False  # no marker (not ours, or being made this instant): leave it
+    if host != socket.gethostname():
+        return False
+    try:
+        os.kill(pid_number, 0)
+    except ProcessLookupError:
+        return True
+    except PermissionError:  # a live process of another user
+        return False
+    return False
+
+
+def remove_stale_scratch(target: str | Path) -> list[Path]:
+    """Remove the scratch folders of runs into ``target`` that were killed before they could clean up.
+
+    Returns the folders removed. A folder whose run is still alive (another run into the same folder
+    at this moment) is left alone.
+    """
+    target = Path(target)
+    parent = target.absolute().parent
+    if not parent.is_dir():
+        return []
+    removed = []
+    for folder in parent.glob(_scratch_prefix(target) + "*"):
+        if folder.is_dir() and _owner_is_gone(folder):
+            shutil.rmtree(folder, ignore_errors=True)
+            removed.append(folder)
+    return removed
+
+
 @contextlib.contextmanager
-def atomic_output_dir(target: str | Path) -> Iterator[Path]:
-    """Yield a scratch folder; on success its files replace those in ``target``, on error it vanishes."""
-    target = check_output_dir(target)
+def atomic_output_dir(target: str | Path, field: str = "--out") -> Iterator[Path]:
+    """Yield a scratch folder; on success its files replace those in ``target``, on error it vanishes.
+
+    The scratch folder is a hidden sibling of ``target`` holding a marker with this process's id, so a
+    later run can tell a killed run's leftovers (:func:`remove_stale_scratch`) from a running one's.
+    """
+    target = check_output_dir(target, field)
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
-        scratch = Path(tempfile.mkdtemp(prefix=f".{target.name}.", dir=target.parent))
+        remove_stale_scratch(target)
+        scratch = Path(tempfile.mkdtemp(prefix=_scratch_prefix(target), dir=target.parent))
+        (scratch / SCRATCH_OWNER).write_text(f"{socket.gethostname()} {os.getpid()}\n")
     except OSError as err:
-        raise InputError(f"out = '{target}': cannot create the output folder here ({err.strerror})") from None
+        raise InputError.for_field(field, str(target), f"cannot create the output folder here ({err.strerror})"
+                                   ) from None
     try:
         yield scratch
     except BaseException:
         shutil.rmtree(scratch, ignore_errors=True)
         raise
+    (scratch / SCRATCH_OWNER).unlink()
     target.mkdir(exist_ok=True)
     for item in scratch.iterdir():
         dest = target / item.name

@@ -14,6 +14,7 @@ from functools import cache
 from importlib import resources
 
 from auxbearing.errors import InputError
+from auxbearing.params import as_typed
 from auxbearing.units import to_si
 
 
@@ -188,4 +189,4 @@ def material_from_mapping(data: dict, name: str, source: str, prefix: str = "") 
     try:
         return Material(modulus, nu, str(data.get("name", name)), source, **optional)
     except InputError as err:
-        raise InputError(prefix + str(err)) from None
+        raise as_typed(err, data, prefix) from None

@@ -9,6 +9,7 @@ in the row's display unit.
 from __future__ import annotations
 
 import math
+import re
 from typing import NamedTuple
 
 from auxbearing.errors import InputError
@@ -115,16 +116,20 @@ def display_value(param: Param, value: float) -> object:
     return f"{Quantity(value, si_unit(param.dimension)).to(unit).magnitude:.6g} {unit}"
 
 
-def check(param: Param, value: object, field: str | None = None) -> None:
-    """Apply the row's rule; the InputError names the field, the value as a person reads it and the rule."""
+def check(param: Param, value: object, field: str | None = None, typed: object = None) -> None:
+    """Apply the row's rule; the InputError names the field, the value and the rule.
+
+    The value is shown as typed (``typed``) when given, else as a person reads it in the row's display unit.
+    """
     name = field or f"{param.section}.{param.key}"
     if value is None:
         if param.rule.startswith("optional"):
             return
         raise InputError.for_field(name, value, "is required")
     if isinstance(value, bool) or not isinstance(value, (int, float)) or math.isnan(value):
-        raise InputError.for_field(name, value, f"must be a number in {param.display_unit or 'SI units'}")
-    shown = display_value(param, value)
+        raise InputError.for_field(name, value if typed is None else typed,
+                                   f"must be a number in {param.display_unit or 'SI units'}")
+    shown = display_value(param, value) if typed is None else typed
     if math.isinf(value):
         raise InputError.for_field(name, shown, "must be finite")
     rule = param.rule
@@ -180,10 +185,33 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
             raise InputError.for_field(prefix + key, value,
                                        f"needs a unit, e.g. '{value} {param.display_unit or si_unit(param.dimension)}'")
         out[key] = convert(prefix + key, value, param.dimension)
-        check(param, out[key], prefix + key)
+        check(param, out[key], prefix + key, value)
     return out
 
 
 def by_key(rows: tuple[Param, ...], section: str) -> dict[str, Param]:
     """The rows of one section, by key."""
     return {p.key: p for p in rows if p.section == section}
+
+
+_FIELD_VALUE_RULE = re.compile(r"^(?P<field>[^=]+?) = (?P<value>.*?): (?P<rule>.*)$", re.DOTALL)
+
+
+def as_typed(err: InputError, typed: dict, prefix: str = "") -> InputError:
+    """The error of a check made on SI values, told again with the key's prefix and the value as typed.
+
+    Checks run on converted numbers ("-0.006"); a person wrote "-6 mm". The field of the message is
+    looked up in ``typed`` (the table as read); an error about another field keeps its value.
+
+    Examples
+    --------
+    >>> str(as_typed(InputError("ball_diameter = -0.006: must be > 0"), {"ball_diameter": "-6 mm"}, "bearing."))
+    "bearing.ball_diameter = '-6 mm': must be > 0"
+    """
+    text = str(err)
+    match = _FIELD_VALUE_RULE.match(text)
+    if match is not None:
+        key = match["field"].removeprefix(prefix)
+        if key in typed:
+            return InputError.for_field(prefix + key, typed[key], match["rule"])
+    return err if text.startswith(prefix) else InputError(prefix + text)

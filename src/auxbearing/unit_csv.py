@@ -9,6 +9,7 @@ the file, the column and the file line.
 
 from __future__ import annotations
 
+import io
 import math
 import re
 from pathlib import Path
@@ -53,14 +54,16 @@ def unit_scale(column: str, unit: str, dimension: str) -> float:
 
 def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: str = "file",
                   aliases: dict[str, str] | None = None, units: dict[str, str] | None = None,
-                  delimiter: str | None = None, unknown: str = "ignore") -> UnitTable:
+                  delimiter: str | None = None, unknown: str = "ignore", max_rows: int | None = None,
+                  budget_name: str = "max_rows") -> UnitTable:
     """Read a CSV whose header names each column with its unit.
 
     Parameters
     ----------
     path : path
-        The file. Blank lines are skipped; lines starting with ``#`` are comments, and
-        ``# key = value`` comments are returned as metadata.
+        The file, in UTF-8 or an encoding :func:`auxbearing.io.read_text` can tell (with a warning).
+        Blank lines are skipped; lines starting with ``#`` are comments, and ``# key = value``
+        comments are returned as metadata.
     columns : dict
         Column name (lower case) -> :class:`Column`.
     file_field : str
@@ -73,16 +76,20 @@ def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: s
         Field separator; default a comma if the header has one, else a semicolon, else whitespace.
     unknown : {"ignore", "error"}
         What a header column that is not in ``columns`` does.
+    max_rows : int, optional
+        Budget of data rows; a longer file is refused (naming ``budget_name``) before any value is converted.
 
     Raises
     ------
     InputError
         Missing file or header, a column twice, an unknown column (with ``unknown="error"``),
-        a missing or wrong unit, a missing or non-numeric value, a row with the wrong field count.
+        a missing or wrong unit, a missing or non-numeric value, a row with the wrong field count,
+        more rows than ``max_rows``.
     """
+    from auxbearing.io import read_text
+
     path = Path(path)
-    if not path.is_file():
-        raise InputError.for_field(file_field, str(path), "not found")
+    text_of_file = read_text(path, file_field)
     aliases = aliases or {}
 
     def canonical(name: str) -> str | None:
@@ -96,7 +103,7 @@ def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: s
     header_line = 0
     rows: list[list[str]] = []
     lines: list[int] = []
-    with path.open(encoding="utf-8-sig") as handle:
+    with io.StringIO(text_of_file, newline=None) as handle:
         for number, line in enumerate(handle, start=1):
             text = line.strip()
             if not text:
@@ -120,6 +127,9 @@ def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: s
                                  f"{header_line}) has {len(header)}")
             rows.append(fields)
             lines.append(number)
+            if max_rows is not None and len(rows) > max_rows:
+                raise InputError(f"{file_field} = '{path}': more than {max_rows} rows (line {number}): beyond the "
+                                 f"budget {budget_name} {max_rows}; split the file or raise {budget_name}")
     if header is None:
         example = ", ".join(f"{n} [{c.example_unit}]" for n, c in columns.items() if c.required) or \
             ", ".join(f"{n} [{c.example_unit}]" for n, c in columns.items())

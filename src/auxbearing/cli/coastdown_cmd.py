@@ -10,7 +10,7 @@ from pathlib import Path
 
 import click
 
-from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option, warn
+from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option, option_named, warn
 from auxbearing.errors import InputError
 
 
@@ -41,13 +41,18 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, as_json
     from rich.console import Console
     from rich.table import Table
 
+    from auxbearing.cli.drop_cmd import plausibility
     from auxbearing.coastdown import run_coastdown
     from auxbearing.coastdown_life import cycles_of_worst_contact
     from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.machine import read_machine
     from auxbearing.units import to_si
 
-    machine = read_machine(machine_spec)
+    with option_named("--machine", "machine"), option_named("--machine", "file", value=machine_spec):
+        machine = read_machine(machine_spec)
+    warn(*plausibility(machine, {"unbalance": f"{machine_spec}: rotor.unbalance",
+                                 "clearance": f"{machine_spec}: radial_clearance",
+                                 "line_stiffness": f"{machine_spec}: line_stiffness"}))
     seconds = None
     if duration is not None:
         seconds = to_si("--duration", duration, "time", "s")

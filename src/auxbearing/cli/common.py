@@ -2,11 +2,37 @@
 
 from __future__ import annotations
 
+import contextlib
+from collections.abc import Iterator
 from pathlib import Path
 
 import click
 
 from auxbearing.catalog import bearing_names
+from auxbearing.errors import InputError
+
+
+class BudgetExceeded(RuntimeError):
+    """A computation used up a budget the user can raise (the message says which and how)."""
+
+
+@contextlib.contextmanager
+def option_named(option: str, *fields: str, value: object = None) -> Iterator[None]:
+    """Tell an InputError about ``field = ...`` again as ``option = ...`` (the name the user typed).
+
+    Library functions name their inputs by their keys ("machine", "file"); on the command line the
+    same input is an option ("--machine"). With ``value``, only an error about that value is renamed (a
+    machine file names other files: a bearing file in it is not ``--machine``).
+    """
+    try:
+        yield
+    except InputError as err:
+        text = str(err)
+        for field in fields:
+            head = f"{field} = " if value is None else f"{field} = {str(value)!r}"
+            if text.startswith(head):
+                raise InputError(option + text[len(field):]) from None
+        raise
 
 
 def bearing_option(default: str = "QJ202"):
@@ -27,7 +53,7 @@ def checked_out_dir(ctx: click.Context, param: click.Parameter, value: Path | No
     from auxbearing.io import check_output_dir
 
     # An InputError here reaches the group's one-line handler (click parses inside Group.invoke).
-    return None if value is None else check_output_dir(value)
+    return None if value is None else check_output_dir(value, max(param.opts, key=len))
 
 
 def warn(*warnings: str | None, where: str = "") -> None:
@@ -54,19 +80,36 @@ def quantity(field: str, text: str | None, dimension: str, default_unit: str | N
     return to_si(field, text, dimension, default_unit)
 
 
-def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: str | None = None):
-    """Load a bearing (a :class:`~auxbearing.bearing.BearingGeometry`) and apply the common overrides."""
+def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: str | None = None,
+                    option: str = "--bearing"):
+    """Load a bearing (a :class:`~auxbearing.bearing.BearingGeometry`) and apply the common overrides.
+
+    Errors name the options as typed (``option``, ``--contact-angle``, ``--groove-ratio``) with the values as typed.
+    """
     from auxbearing.bearing import load_bearing
     from auxbearing.units import to_si
 
-    bearing = load_bearing(spec)
+    bearing = load_bearing(spec, option)
     changes: dict = {}
+    typed: dict = {}
     if contact_angle is not None:
         changes["contact_angle"] = to_si("--contact-angle", contact_angle, "angle", "deg")
+        typed["contact_angle"] = ("--contact-angle", contact_angle)
     if groove_ratio is not None:
         ratio = to_si("--groove-ratio", groove_ratio, "dimensionless")
         changes.update(inner_groove_ratio=ratio, outer_groove_ratio=ratio)
-    return bearing.with_changes(**changes) if changes else bearing
+        typed["inner_groove_ratio"] = typed["outer_groove_ratio"] = ("--groove-ratio", groove_ratio)
+    if not changes:
+        return bearing
+    try:
+        return bearing.with_changes(**changes)
+    except InputError as err:
+        field, _, rule = str(err).partition(": ")
+        key = field.split(" = ")[0]
+        if key in typed:
+            name, text = typed[key]
+            raise InputError.for_field(name, text, f"{rule} (bearing {bearing.name})") from None
+        raise
 
 
 def echo_json(obj: object) -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import click
@@ -15,6 +16,18 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
+from auxbearing.errors import InputError
+
+#: Default budget of a contact sweep: grid points (contact angles x groove ratios). Each point holds 14
+#: numbers and the figures draw every one, so 250 000 points are ~30 MB and a few seconds.
+MAX_SWEEP_POINTS = 250_000
+
+
+def _ball_load(text: str) -> float:
+    load = quantity("--ball-load", text, "force", "N")
+    if load < 0.0:
+        raise InputError.for_field("--ball-load", text, "must be >= 0 N")
+    return load
 
 _ROWS = (
     ("contact_load_N", "Contact load", "N", "{:.1f}"),
@@ -46,11 +59,18 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.contact import ball_contact
+    from auxbearing.contact import ball_contact, ellipse_checks
     from auxbearing.statics import stress_warning
     bearing = resolve_bearing(bearing_spec, contact_angle, groove_ratio)
-    load = quantity("--ball-load", ball_load, "force", "N")
+    load = _ball_load(ball_load)
     result = ball_contact(bearing, load, method=method)
+    # the option to blame for a contact outside Hertz theory: the override given, else the load
+    blame = next(((n, v) for n, v in (("--groove-ratio", groove_ratio), ("--contact-angle", contact_angle))
+                  if v is not None), ("--ball-load", ball_load))
+    notes, refusal = ellipse_checks(bearing, result)
+    if refusal is not None:
+        raise InputError.for_field(blame[0], blame[1], refusal)
+    warn(*notes, where=f"{blame[0]} {blame[1]}: ")
     warn(stress_warning(1e6 * max(result["inner"]["max_stress_MPa"], result["outer"]["max_stress_MPa"])))
     if as_json:
         echo_json(result)
@@ -74,9 +94,11 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
               metavar="START STOP STEP", help="Contact angles [deg] (Fig. 2: 10-75 deg).")
 @click.option("--ratio-range", nargs=3, type=float, default=(0.505, 0.6, 0.0025), show_default=True,
               metavar="START STOP STEP", help="Groove radius coefficients [-] (Fig. 3: 0.505-0.6).")
+@click.option("--max-points", default=MAX_SWEEP_POINTS, show_default=True, type=click.IntRange(min=1),
+              help="Budget: most grid points (angles x ratios) a sweep may have.")
 @out_option("out/contact")
 @json_option()
-def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, out_dir, as_json):
+def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, max_points, out_dir, as_json):
     """Sweep contact angle and groove ratio; write NetCDF data and Fig. 2-3 style figures.
 
     Writes contact_map.nc (dims race x contact_angle x groove_ratio, SI units in attrs),
@@ -89,10 +111,20 @@ def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, out
     from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
     bearing = resolve_bearing(bearing_spec)
-    load = quantity("--ball-load", ball_load, "force", "N")
-    angles = _grid("--angle-range", angle_range)
-    ratios = _grid("--ratio-range", ratio_range)
+    load = _ball_load(ball_load)
+    angles = _grid("--angle-range", angle_range, lambda v: 0.0 <= v < 90.0, "contact angles must lie in [0, 90) deg",
+                   max_points)
+    ratios = _grid("--ratio-range", ratio_range, lambda v: v > 0.5, "groove ratios must exceed 0.5", max_points)
+    points = len(angles) * len(ratios)
+    if points > max_points:
+        raise InputError(f"--angle-range x --ratio-range = {len(angles):.4g} x {len(ratios):.4g} = {points:.4g} grid "
+                         f"points: beyond the budget --max-points {max_points}; take larger steps or raise "
+                         "--max-points")
     ds = contact_map(bearing, load, angles, ratios)
+    outside = _points_outside_hertz(bearing, ds)
+    if outside:
+        warn(f"{outside} of {points} grid points have a contact ellipse past the groove shoulder or as large as the "
+             "ball: their values are outside Hertz theory (see `auxbearing contact` at one of them)")
     summary = {"bearing": bearing.describe(), "ball_load_N": load, "fig4_comparison": type_comparison(bearing, load)}
     inputs = {"bearing": bearing.describe(), "ball_load_N": load, "angle_range_deg": angle_range,
               "ratio_range": ratio_range}
@@ -114,15 +146,39 @@ def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, out
     click.echo(f"Wrote {Path(out_dir) / 'contact_map.nc'} and the Fig. 2-3 figures in {out_dir}/")
 
 
-def _grid(name: str, triple: tuple[float, float, float]):
+def _grid(name: str, triple: tuple[float, float, float], valid, rule: str, budget: int):
+    """START..STOP by STEP, checked, never past STOP; its length is known before anything is allocated."""
     import numpy as np
 
-    start, stop, step = triple
-    if step <= 0 or stop < start:
-        from auxbearing.errors import InputError
+    from auxbearing.contact import sweep_grid
 
-        raise InputError.for_field(name, triple, "needs START <= STOP and STEP > 0")
-    return np.arange(start, stop + 0.5 * step, step)
+    start, stop, step = triple
+    typed = " ".join(f"{v:g}" for v in triple)
+    if not all(math.isfinite(v) for v in triple):
+        raise InputError.for_field(name, typed, "START STOP STEP must be finite numbers")
+    if step <= 0 or stop < start:
+        raise InputError.for_field(name, typed, "needs START <= STOP and STEP > 0")
+    if not (valid(start) and valid(stop)):
+        raise InputError.for_field(name, typed, rule)
+    count = math.floor((stop - start) / step + 1e-9) + 1
+    if count > budget:  # refused here, before an array of that length is made
+        raise InputError.for_field(name, typed, f"{count:.4g} values: beyond the budget --max-points {budget}; "
+                                                "take a larger STEP or raise --max-points")
+    return np.asarray(sweep_grid(start, stop, step))
+
+
+def _points_outside_hertz(bearing, ds) -> int:
+    """Grid points whose ellipse is as large as the ball or reaches past the shoulder (as in :func:`ellipse_checks`)."""
+    import numpy as np
+
+    from auxbearing.machine import SHOULDER_FRACTION
+
+    a = ds["semi_major"].values  # race x angle x ratio
+    groove = ds["groove_ratio"].values[None, None, :] * bearing.ball_diameter
+    alpha = np.radians(ds["contact_angle"].values)[None, :, None]
+    shoulder = np.arccos(np.maximum(-1.0, 1.0 - SHOULDER_FRACTION * bearing.ball_diameter / groove))
+    bad = (a >= 0.5 * bearing.ball_diameter) | (alpha + a / groove > shoulder)
+    return int(np.count_nonzero(bad.any(axis=0)))
 
 
 COMMANDS = [contact_command, contact_sweep_command]

@@ -22,10 +22,12 @@ from auxbearing.cli.common import (
     checked_out_dir,
     echo_json,
     json_option,
+    option_named,
     out_option,
     resolve_bearing,
     warn,
 )
+from auxbearing.cli.drop_checks import budgeted, check_budget, plausibility, race_sink_warning, sink_check
 from auxbearing.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.errors import InputError
 
@@ -86,10 +88,14 @@ def quiet_option():
 
 
 def build_inputs(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
-    """Bearing, Rotor and DropCase from catalogue/TOML/options (options win)."""
+    """Bearing, Rotor and DropCase from catalogue/TOML/options (options win); errors name options as typed."""
     from auxbearing.drop_params import DropCase, Rotor, read_config
 
-    bearing, rotor_kw, drop_kw = (None, {}, {}) if config is None else read_config(config)
+    if config is None:
+        bearing, rotor_kw, drop_kw = None, {}, {}
+    else:
+        with option_named("--config", "file"):
+            bearing, rotor_kw, drop_kw = read_config(config)
     source = ctx.get_parameter_source("bearing_spec")
     if bearing is None or source != click.core.ParameterSource.DEFAULT:
         bearing = resolve_bearing(bearing_spec)
@@ -98,9 +104,37 @@ def build_inputs(ctx: click.Context, bearing_spec: str, config: Path | None, par
         param = by_key[(section, key)]
         field = f"--{_option_name(param)}"
         value = convert(field, text, param.dimension, param.display_unit or None)
-        check(param, value, field)
+        check(param, value, field, text)
         (rotor_kw if section == "rotor" else drop_kw)[key] = value
-    return bearing, Rotor(**rotor_kw), DropCase(**drop_kw)
+    with _options_as_typed(params):
+        return bearing, Rotor(**rotor_kw), DropCase(**drop_kw)
+
+
+@contextlib.contextmanager
+def _options_as_typed(params: dict):
+    """An error about ``rotor.x`` / ``drop.x`` / the plane's keys, told as the option typed (when one was)."""
+    aliases = {"touchdown.0.radial_clearance": ("drop", "clearance"), "drop.start_x, drop.start_y": ("drop", "start_x"),
+               "touchdown.0.journal_radius": ("rotor", "radius")}
+    try:
+        yield
+    except InputError as err:
+        field, sep, rest = str(err).partition(" = ")
+        key = aliases.get(field) or tuple(field.split(".", 1))
+        param = next((p for p in PARAMETERS if (p.section, p.key) == key), None)
+        if not sep or param is None or key not in params:
+            raise
+        _, _, rule = rest.partition(": ")
+        raise InputError.for_field(f"--{_option_name(param)}", params[key], rule) from None
+
+
+def paper_machine(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
+    """The paper's drop as :func:`build_inputs` gives it and its machine, built before any work is done."""
+    from auxbearing.machine import planar_machine
+
+    bearing, rotor, case = build_inputs(ctx, bearing_spec, config, params)
+    with _options_as_typed(params):
+        machine = planar_machine(bearing, rotor, case)
+    return bearing, rotor, case, machine
 
 
 _ROWS = (("peak_contact_force_N", "Peak collision force", "N", "{:.1f}"),
@@ -129,13 +163,16 @@ def _fmt(fmt: str, value) -> str:
 @bearing_option()
 @config_option()
 @parameter_options
+@click.option("--max-wall-time", default=None, metavar="TIME",
+              help="Wall-time budget of the run (plain numbers in s) [default: the machine's drop.max_wall_time, "
+                   "600 s for the paper's rig].")
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
               callback=checked_out_dir,
               help="Write the time series (drop.nc), drop_summary.json and the figures into this folder.")
 @json_option()
 @quiet_option()
 @click.pass_context
-def drop_command(ctx, machine_spec, bearing_spec, config, params, out_dir, as_json, quiet):
+def drop_command(ctx, machine_spec, bearing_spec, config, params, max_wall_time, out_dir, as_json, quiet):
     """Drop of a rotor onto its touchdown bearings.
 
     With --machine: a rigid rotor on one or two touchdown planes (gyroscopics, axial touchdown,
@@ -146,6 +183,13 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, out_dir, as_js
     defaults with the corrected units, clearance 0.2 mm, 6000 rpm, 0.15 s. Values take units
     ("0.2mm", "6000rpm"); plain numbers use the unit named in each option's help.
     """
+    wall = None
+    if max_wall_time is not None:
+        from auxbearing.units import to_si
+
+        wall = to_si("--max-wall-time", max_wall_time, "time", "s")
+        if not 0.0 < wall <= 1e6:
+            raise InputError.for_field("--max-wall-time", max_wall_time, "must lie in (0, 1e6] s")
     if machine_spec is not None:
         duration = params.pop(("drop", "duration"), None)  # --duration applies to both kinds of run
         paper_options = [f"--{_option_name(p)}" for p in PARAMETERS if (p.section, p.key) in params]
@@ -154,12 +198,24 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, out_dir, as_js
             given = paper_options or (["--config"] if config is not None else ["--bearing"])
             raise InputError.for_field(given[0], "given with --machine",
                                        "the paper-rig options do not apply to a machine; set them in its file")
-        _machine_drop(machine_spec, duration, out_dir, as_json, quiet)
+        _machine_drop(machine_spec, duration, wall, out_dir, as_json, quiet)
         return
-    _paper_drop(ctx, bearing_spec, config, params, out_dir, as_json, quiet)
+    _paper_drop(ctx, bearing_spec, config, params, wall, out_dir, as_json, quiet)
 
 
-def _paper_drop(ctx, bearing_spec, config, params, out_dir, as_json, quiet) -> None:
+def _typed_names(params: dict) -> dict:
+    """How the paper drop's plausibility warnings name each input: the option as typed, else the default."""
+    names = {"unbalance": ("rotor", "eccentricity"), "clearance": ("drop", "clearance"),
+             "line_stiffness": ("drop", "line_stiffness")}
+    out = {}
+    for name, key in names.items():
+        param = next(p for p in PARAMETERS if (p.section, p.key) == key)
+        option = f"--{_option_name(param)}"
+        out[name] = f"{option} {params[key]}" if key in params else f"{option} (default)"
+    return out
+
+
+def _paper_drop(ctx, bearing_spec, config, params, wall, out_dir, as_json, quiet) -> None:
     from rich.console import Console
     from rich.table import Table
 
@@ -168,11 +224,18 @@ def _paper_drop(ctx, bearing_spec, config, params, out_dir, as_json, quiet) -> N
     from auxbearing.paper.drop_paper import PAPER_DROP
     from auxbearing.statics import stress_warning
 
-    bearing, rotor, case = build_inputs(ctx, bearing_spec, config, params)
+    bearing, rotor, case, machine = paper_machine(ctx, bearing_spec, config, params)
+    blame = next((f"--{_option_name(p)} = {params[(p.section, p.key)]!r}" for p in PARAMETERS
+                  if p.key in ("duration", "max_step") and (p.section, p.key) in params), "the paper's drop")
+    check_budget(machine, case.duration, blame, "run it as a machine file (drop --machine), whose drop.max_steps "
+                                                "can be raised")
+    sink_check(bearing, machine, case.ball_constant, f"--ball-constant = {params.get(('drop', 'ball_constant'))!r}")
+    warn(*plausibility(machine, _typed_names(params)))
+    seconds = wall if wall is not None else machine.simulation.max_wall_time
     # The output folder is checked before the integration, so a bad --out costs no run.
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
         with ProgressReporter(f"drop on {bearing.name}", quiet) as progress:
-            ds, summary = run_drop(bearing, rotor, case, progress=progress)
+            ds, summary = run_drop(bearing, rotor, case, progress=budgeted(progress, seconds))
         if tmp is not None:
             from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress
 
@@ -187,6 +250,7 @@ def _paper_drop(ctx, bearing_spec, config, params, out_dir, as_json, quiet) -> N
         warn(summary["reason"])
     elif summary["peak_ball_stress_MPa"] is not None:
         warn(stress_warning(summary["peak_ball_stress_MPa"] * 1e6))
+    warn(race_sink_warning(ds, bearing))
     if as_json:
         echo_json(summary)
         return
@@ -215,7 +279,8 @@ _PLANE_ROWS = (("peak_contact_force_N", "Peak collision force", "N", "{:.1f}"),
                ("max_mount_deflection_um", "Largest mount deflection", "µm", "{:.1f}"))
 
 
-def _machine_drop(spec: str, duration: str | None, out_dir: Path | None, as_json: bool, quiet: bool) -> None:
+def _machine_drop(spec: str, duration: str | None, wall: float | None, out_dir: Path | None, as_json: bool,
+                  quiet: bool) -> None:
     from rich.console import Console
     from rich.table import Table
 
@@ -224,12 +289,20 @@ def _machine_drop(spec: str, duration: str | None, out_dir: Path | None, as_json
     from auxbearing.machine import read_machine
     from auxbearing.units import to_si
 
-    machine = read_machine(spec)
+    with option_named("--machine", "machine"), option_named("--machine", "file", value=spec):
+        machine = read_machine(spec)
     seconds = None
     if duration is not None:
         seconds = to_si("--duration", duration, "time", "s")
         if not 0.0 < seconds < 1e6:
             raise InputError.for_field("--duration", duration, "must lie between 0 and 1e6 s")
+    if wall is not None:
+        machine = machine.with_simulation(max_wall_time=wall)
+    check_budget(machine, seconds if seconds is not None else machine.simulation.duration,
+                 f"--duration = {duration!r}" if duration is not None else f"--machine = {spec!r}: drop.duration",
+                 "raise drop.max_steps in the machine file")
+    warn(*plausibility(machine, {"unbalance": f"{spec}: rotor.unbalance", "clearance": f"{spec}: radial_clearance",
+                                 "line_stiffness": f"{spec}: line_stiffness"}))
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
         with ProgressReporter(f"drop of {machine.name}", quiet) as progress:
             run = run_machine(machine, seconds, progress=progress)
@@ -302,10 +375,17 @@ def machines_command(as_json):
 
 
 def _list(name: str, text: str, dimension: str, unit: str | None) -> tuple[float, ...]:
-    items = [t for t in text.replace(";", ",").split(",") if t.strip()]
+    items = [t.strip() for t in text.replace(";", ",").split(",") if t.strip()]
     if not items:
         raise InputError.for_field(name, text, "needs a comma-separated list")
-    return tuple(convert(name, t.strip(), dimension, unit) for t in items)
+    values = []
+    for item in items:
+        try:
+            values.append(convert(name, item, dimension, unit))
+        except InputError as err:
+            rule = str(err).partition(": ")[2]
+            raise InputError.for_field(name, text, f"item {item!r}: {rule}") from None
+    return tuple(values)
 
 
 @click.command("drop-compare")
@@ -341,19 +421,27 @@ def drop_compare_command(ctx, config, params, bearings, clearances, frictions, p
 
     from auxbearing.paper.drop_paper import PAPER_DROP, drop_compare
 
+    if config is not None:
+        from auxbearing.bearing import read_toml
+
+        if "bearing" in read_toml(config, "--config"):
+            raise InputError.for_field("--config", str(config), "its [bearing] table does not apply: drop-compare "
+                                                                "runs the catalogue bearings of --bearings; remove "
+                                                                "the table, or use `auxbearing drop --config`")
     _, rotor, case = build_inputs(ctx, "QJ202", config, params)
     names = tuple(b.strip() for b in bearings.split(",") if b.strip())
+    if not names:
+        raise InputError.for_field("--bearings", bearings, "needs at least one catalogue bearing, e.g. QJ202,7202")
     for name in names:
-        resolve_bearing(name)  # fail early on a typo
+        with option_named("--bearings", "bearing"):
+            resolve_bearing(name, option="bearing")  # fail early on a typo
     s_list = _list("--clearances", clearances, "length", "mm")
     for s in s_list:
-        check(next(p for p in PARAMETERS if p.key == "clearance"), s, "--clearances")
+        check(next(p for p in PARAMETERS if p.key == "clearance"), s, "--clearances", clearances)
     mu_list = _list("--frictions", frictions, "dimensionless", None)
     for mu in mu_list:
-        check(next(p for p in PARAMETERS if p.key == "sliding_friction"), mu, "--frictions")
+        check(next(p for p in PARAMETERS if p.key == "sliding_friction"), mu, "--frictions", frictions)
     phase_list = _list("--phases", phases, "angle", "deg")
-    if not names:
-        raise InputError.for_field("--bearings", bearings, "needs at least one catalogue bearing")
     with ProgressReporter("drop-compare", quiet) as progress:
         result = drop_compare(out_dir, names, s_list, mu_list, rotor, replace(case), checks,
                               progress=lambda label, f: progress(f, label), phases=phase_list)

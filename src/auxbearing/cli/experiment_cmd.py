@@ -7,13 +7,14 @@ case and writes data, figures and a JSON summary.
 
 from __future__ import annotations
 
+import contextlib
 import math
 from pathlib import Path
 
 import click
 
 from auxbearing.catalog import bearing_names
-from auxbearing.cli.common import echo_json, json_option, out_option, quantity, resolve_bearing
+from auxbearing.cli.common import echo_json, json_option, option_named, out_option, quantity, resolve_bearing, warn
 from auxbearing.errors import InputError
 
 
@@ -24,7 +25,44 @@ def _offset(text: str) -> str | tuple[float, float]:
     parts = text.split(",")
     if len(parts) != 2:
         raise InputError.for_field("--offset", text, "must be auto, fit, start or 'X0,Y0' (e.g. '31.7 um,-18.4 um')")
-    return (to_si("--offset x0", parts[0], "length", "um"), to_si("--offset y0", parts[1], "length", "um"))
+    with _as_option("--offset", text):
+        return (to_si("x0", parts[0], "length", "um"), to_si("y0", parts[1], "length", "um"))
+
+
+@contextlib.contextmanager
+def _as_option(option: str, text: str):
+    """An error about a part of an option's value, told as the whole option as typed."""
+    try:
+        yield
+    except InputError as err:
+        field, _, rule = str(err).partition(": ")
+        raise InputError.for_field(option, text, f"{field}: {rule}") from None
+
+
+def _positive(option: str, text: str | None, dimension: str, unit: str) -> float | None:
+    value = quantity(option, text, dimension, unit)
+    if value is not None and not value > 0.0:
+        raise InputError.for_field(option, text, f"must be > 0 {unit}")
+    return value
+
+
+def _units(items: tuple[str, ...]) -> dict[str, str]:
+    """``--unit CHANNEL=UNIT`` items, each channel known and each unit of its channel's dimension."""
+    from auxbearing.experiment.io import CHANNELS, channel_name
+    from auxbearing.unit_csv import unit_scale
+
+    out = {}
+    for item in items:
+        channel, sep, unit = item.partition("=")
+        if not sep or not channel.strip() or not unit.strip():
+            raise InputError.for_field("--unit", item, "must be CHANNEL=UNIT, e.g. x=um")
+        key = channel_name(channel)
+        if key is None:
+            raise InputError.for_field("--unit", item, "unknown channel; channels are " + ", ".join(CHANNELS))
+        with _as_option("--unit", item):
+            unit_scale(channel.strip(), unit.strip(), CHANNELS[key][0])
+        out[channel.strip()] = unit.strip()
+    return out
 
 
 @click.command("experiment")
@@ -74,29 +112,37 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     from auxbearing.experiment.run import run_experiment
     from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.units import to_si
-    unit_map = {}
-    for item in units:
-        channel, sep, unit = item.partition("=")
-        if not sep or not unit.strip():
-            raise InputError.for_field("--unit", item, "must be CHANNEL=UNIT, e.g. x=um")
-        unit_map[channel.strip()] = unit.strip()
-    cfg_bearing, rotor_kw, drop_kw = (None, {}, {}) if config is None else read_config(config)
+    unit_map = _units(units)
+    cfg_bearing, rotor_kw, drop_kw = None, {}, {}
+    if config is not None:
+        with option_named("--config", "file"):
+            cfg_bearing, rotor_kw, drop_kw = read_config(config)
     bearing = resolve_bearing(bearing_spec) if bearing_spec is not None else cfg_bearing or resolve_bearing("QJ202")
+    factor = to_si("--scale", scale, "dimensionless")
+    if factor <= 0.0:
+        raise InputError.for_field("--scale", scale, "must be > 0 (a sensor sensitivity correction)")
     prep = Preprocessing(
         offset=_offset(offset.strip()),
-        scale=to_si("--scale", scale, "dimensionless"),
+        scale=factor,
         cutoff=None if cutoff.strip().lower() == "none" else _frequency(cutoff),
         drop_time=quantity("--drop-time", drop_time, "time", "s"),
     )
-    fit_options = FitOptions(window=to_si("--fit-window", fit_window, "time", "ms"))
-    data = read_measured(measured, unit_map)
+    fit_options = FitOptions(window=_positive("--fit-window", fit_window, "time", "ms"))
+    clearance_si = _positive("--clearance", clearance, "length", "mm")
+    with option_named("--measured", "measured file"):
+        data = read_measured(measured, unit_map, field="--measured")
+    with option_named("--drop-time", "drop_time"), option_named("--cutoff", "cutoff"):
+        from auxbearing.experiment.orbit import preprocess
+
+        preprocess(data, prep)  # the record against the options, before any fit or simulation
     progress = Progress(TextColumn("{task.description:<48}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
                         TimeElapsedColumn(), console=Console(stderr=True), disable=quiet or as_json, transient=True)
     with progress:
         task = progress.add_task("experiment", total=1.0)
         result = run_experiment(data, bearing, Rotor(**rotor_kw), DropCase(**drop_kw), prep, fit=not no_fit,
-                                fit_options=fit_options, clearance=quantity("--clearance", clearance, "length", "mm"),
+                                fit_options=fit_options, clearance=clearance_si,
                                 progress=lambda f, label: progress.update(task, completed=f, description=label))
+    warn(*result.summary.get("warnings", []))
     inputs = {"measured": str(measured), "bearing": bearing.describe(), "config": str(config) if config else None,
               "offset": offset, "scale": scale, "cutoff": cutoff, "drop_time": drop_time, "clearance": clearance,
               "fit": not no_fit, "fit_window": fit_window, "units": unit_map}
@@ -121,6 +167,8 @@ def _frequency(text: str) -> float:
         q = ureg.Quantity(text.strip())
         value = float(q.to("Hz").magnitude) if isinstance(q, pint.Quantity) and not q.dimensionless else float(
             getattr(q, "magnitude", q))
+    except (OverflowError, ValueError, TypeError):
+        raise InputError.for_field("--cutoff", text, "is not a finite number") from None
     except Exception:  # pint raises several unrelated types for malformed text
         raise InputError.for_field("--cutoff", text, "must be a frequency such as '8 kHz' or 8000 (Hz)") from None
     if not (math.isfinite(value) and value > 0.0):

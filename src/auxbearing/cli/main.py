@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import importlib
 import sys
+import warnings
 
 import click
 
+from auxbearing.cli.common import BudgetExceeded
 from auxbearing.errors import ConvergenceError, InputError
 
 EXIT_USER_ERROR = 2
@@ -63,27 +65,83 @@ class _Group(click.Group):
             formatter.write_dl(rows)
 
     def invoke(self, ctx: click.Context):
-        try:
-            return super().invoke(ctx)
-        except InputError as err:
-            click.echo(f"error: {err}", err=True)
-            ctx.exit(EXIT_USER_ERROR)
-        except ConvergenceError as err:
-            click.echo(f"error: {err}", err=True)
-            ctx.exit(1)
-        except UnicodeDecodeError as err:
-            click.echo(f"error: a file is not UTF-8 text ({err.reason} at byte {err.start}); save it as UTF-8",
-                       err=True)
-            ctx.exit(EXIT_USER_ERROR)
-        except OSError as err:
-            # A full disk or a read-only folder is the machine's state, not a bug: one line.
-            where = f" '{err.filename}'" if err.filename else ""
-            click.echo(f"error: file{where}: {err.strerror or err}", err=True)
-            ctx.exit(EXIT_USER_ERROR)
-        except MemoryError:
-            click.echo("error: out of memory; shorten the run or coarsen its output (drop.max_output_points)",
-                       err=True)
-            ctx.exit(EXIT_USER_ERROR)
+        raw = [*ctx._protected_args, *ctx.args]  # click empties both once the command is found
+        with warnings.catch_warnings():
+            warnings.showwarning = _one_line_warning
+            try:
+                _refuse_empty_paths(self, ctx)
+                return super().invoke(ctx)
+            except InputError as err:
+                _fail(ctx, _named_as_typed(str(err), raw), EXIT_USER_ERROR)
+            except click.UsageError as err:
+                # click's own parsing errors (a choice, a missing option, a typo in an option's name) as one line
+                where = f"; see '{err.ctx.command_path} --help'" if err.ctx is not None else ""
+                _fail(ctx, err.format_message().rstrip(".") + where, EXIT_USER_ERROR)
+            except ConvergenceError as err:
+                _fail(ctx, str(err), 1)
+            except BudgetExceeded as err:
+                _fail(ctx, str(err), 1)
+            except UnicodeDecodeError as err:
+                _fail(ctx, f"a file is not text in any encoding auxbearing can tell ({err.reason} at byte "
+                           f"{err.start}); save it as UTF-8", EXIT_USER_ERROR)
+            except OSError as err:
+                # A full disk or a read-only folder is the machine's state, not a bug: one line.
+                where = f" '{err.filename}'" if err.filename else ""
+                _fail(ctx, f"file{where}: {err.strerror or err}", EXIT_USER_ERROR)
+            except MemoryError:
+                _fail(ctx, "out of memory; shorten the run or coarsen its output (drop.max_output_points)",
+                      EXIT_USER_ERROR)
+
+
+def _named_as_typed(message: str, args: list[str]) -> str:
+    """A message about ``field = 'value'`` whose value the user gave to an option, told with that option's name.
+
+    Library code names a file it cannot read by a key of its own ("file = 'c.toml'"); the user typed
+    ``--config c.toml``. Only plain fields are renamed (not a file's ``table.key``), and only when exactly one
+    option carries that value.
+    """
+    field, sep, rest = message.partition(" = ")
+    if not sep or field.startswith("-") or "." in field or not rest.startswith(("'", '"')):
+        return message
+    quote = rest[0]
+    value = rest[1:rest.find(quote, 1)]
+    options = [args[k - 1] for k in range(1, len(args)) if args[k] == value and args[k - 1].startswith("--")]
+    options += [a.partition("=")[0] for a in args if a.startswith("--") and a.partition("=")[2] == value]
+    return f"{options[0]} = {rest}" if len(set(options)) == 1 else message
+
+
+def _fail(ctx: click.Context, message: str, status: int) -> None:
+    click.echo(f"error: {' '.join(message.split())}", err=True)
+    ctx.exit(status)
+
+
+def _one_line_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """Every warning as one ``warning:`` line on stderr (a library's file and line mean nothing to a user)."""
+    text = " ".join(str(message).split())
+    if not issubclass(category, UserWarning) or category.__module__.split(".")[0] != "auxbearing":
+        text = f"{category.__name__}: {text}"
+    click.echo(f"warning: {text}", err=True)
+
+
+def _refuse_empty_paths(group: click.Group, ctx: click.Context) -> None:
+    """An empty file or folder option (``--out ''``) would mean the current folder: refuse it by its name.
+
+    click turns '' into ``Path('.')`` before any callback sees it, so the raw arguments are read here.
+    """
+    args = [*ctx._protected_args, *ctx.args]
+    if not args:
+        return
+    command = group.get_command(ctx, args[0])
+    if command is None:
+        return
+    names = {opt for p in command.params if isinstance(p, click.Option) and isinstance(p.type, click.Path)
+             for opt in p.opts}
+    for k, arg in enumerate(args[1:], start=1):
+        option, sep, value = arg.partition("=")
+        if option in names and ((sep and not value.strip()) or (not sep and k + 1 < len(args)
+                                                                 and not args[k + 1].strip())):
+            raise InputError.for_field(option, value if sep else args[k + 1],
+                                       "is empty; give a file or folder name ('.' for the current folder)")
 
 
 @click.group(cls=_Group, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})

@@ -26,7 +26,8 @@ CONFIG is an optional TOML file; every section is optional and defaults to the p
   [bearing]             the four-point bearing: catalogue = "QJ202", or a full [bearing]
                         table as for `auxbearing contact --bearing FILE`
   [comparison_bearing]  the angular-contact bearing: catalogue = "7202", or a full table
-  [static], [rotor], [drop], [experiment]   see `auxbearing static/drop/experiment --help`
+  [rotor], [drop]       the drop case, see `auxbearing drop --help`
+Every table is checked before the first stage runs.
 """
 
 
@@ -45,7 +46,7 @@ def study_command(config_path, out_dir, stages, quiet, as_json):  # noqa: D103 (
 
     from auxbearing.paper.study import run_study
     from auxbearing.paper.study_config import load_study_config
-    config = load_study_config(config_path)
+    config = load_study_config(config_path, "--config")
     selected = list(stages) or None
     console = Console(stderr=True, quiet=quiet)
     with Progress(SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn(),

@@ -42,13 +42,22 @@ UNIFORM_TOLERANCE = 0.01
 MIN_SAMPLING_RATE = 5e3
 
 
-def _channel(name: str) -> str | None:
+def channel_name(name: str) -> str | None:
+    """The channel a column or variable name means (aliases and case resolved), or None.
+
+    >>> channel_name("RPM"), channel_name("q")
+    ('speed', None)
+    """
     key = name.strip().lower()
     key = _ALIASES.get(key, key)
     return key if key in CHANNELS else None
 
 
-def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: str | None = None) -> xr.Dataset:
+_channel = channel_name
+
+
+def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: str | None = None,
+             field: str = "measured file") -> xr.Dataset:
     """Read a measured drop from a CSV file and check it.
 
     Parameters
@@ -60,6 +69,8 @@ def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: s
         the header wins only when it agrees, otherwise the option is an error.
     delimiter : str, optional
         Field separator; default: a comma if the header has one, else whitespace.
+    field : str
+        How an error names the file (``--measured`` on the command line).
 
     Returns
     -------
@@ -74,13 +85,13 @@ def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: s
         missing unit, a field that is not a number, a missing value, time not increasing,
         non-uniform or too slow sampling, too few samples.
     """
-    table = read_unit_csv(path, _CSV_COLUMNS, file_field="measured file", aliases=_ALIASES, units=units,
+    table = read_unit_csv(path, _CSV_COLUMNS, file_field=field, aliases=_ALIASES, units=units,
                           delimiter=delimiter)
     return _checked(table.data, [f"line {n}" for n in table.lines], Path(path).name,
                     {h: h for h in table.header}, table.meta)
 
 
-def read_netcdf(path: str | Path, units: dict[str, str] | None = None) -> xr.Dataset:
+def read_netcdf(path: str | Path, units: dict[str, str] | None = None, field: str = "measured file") -> xr.Dataset:
     """Read a measured drop from NetCDF: variables ``x``, ``y`` (optional ``speed``) over ``time``.
 
     Units come from each variable's ``units`` attribute (and the time coordinate's), or from
@@ -89,12 +100,15 @@ def read_netcdf(path: str | Path, units: dict[str, str] | None = None) -> xr.Dat
     Returns and raises as :func:`read_csv`; rows are named by their index along ``time``.
     """
     path = Path(path)
+    if path.is_dir():
+        raise InputError.for_field(field, str(path), "is a folder, not a file")
     if not path.is_file():
-        raise InputError.for_field("measured file", str(path), "not found")
+        raise InputError.for_field(field, str(path), "not found")
     try:
         raw = xr.load_dataset(path, decode_times=False)
     except Exception as err:  # netCDF4/h5py raise several unrelated types for a bad file
-        raise InputError.for_field("measured file", str(path), f"is not a readable NetCDF file ({err})") from None
+        reason = " ".join(str(err).split())[:200]
+        raise InputError.for_field(field, str(path), f"is not a readable NetCDF file ({reason})") from None
     units = {(_channel(k) or k): v for k, v in (units or {}).items()}
     names = {(_channel(str(k)) or str(k)): str(k) for k in [*raw.data_vars, *raw.coords]}
     data: dict[str, np.ndarray] = {}
@@ -114,7 +128,12 @@ def read_netcdf(path: str | Path, units: dict[str, str] | None = None) -> xr.Dat
         bad = np.nonzero(~np.isfinite(values))[0]
         if bad.size:
             raise InputError(f"{path.name}: variable {names[channel]!r}, index {bad[0]}: missing value")
-        data[channel] = values * unit_scale(names[channel], unit, dimension)
+        try:
+            data[channel] = values * unit_scale(names[channel], unit, dimension)
+        except InputError:
+            raise InputError(f"{path.name}: variable {names[channel]!r}: units {unit!r} is not a "
+                             f"{dimension.replace('_', ' ')} (store seconds for time, lengths such as um for x "
+                             "and y)") from None
     sizes = {c: v.size for c, v in data.items()}
     if len(set(sizes.values())) != 1:
         raise InputError(f"{path.name}: channels have different lengths {sizes}")
@@ -123,12 +142,15 @@ def read_netcdf(path: str | Path, units: dict[str, str] | None = None) -> xr.Dat
                     {c: names[c] for c in data}, meta)
 
 
-def read_measured(path: str | Path, units: dict[str, str] | None = None) -> xr.Dataset:
-    """A measured drop from ``.nc`` / ``.nc4`` / ``.cdf`` (NetCDF) or any other file as CSV."""
+def read_measured(path: str | Path, units: dict[str, str] | None = None, field: str = "measured file") -> xr.Dataset:
+    """A measured drop from ``.nc`` / ``.nc4`` / ``.cdf`` (NetCDF) or any other file as CSV.
+
+    ``field`` names the file in an error (``--measured`` on the command line).
+    """
     suffix = Path(path).suffix.lower()
     if suffix in (".nc", ".nc4", ".cdf", ".netcdf"):
-        return read_netcdf(path, units)
-    return read_csv(path, units)
+        return read_netcdf(path, units, field)
+    return read_csv(path, units, field=field)
 
 
 def _checked(data: dict[str, np.ndarray], where: list[str], name: str, labels: dict, meta: dict) -> xr.Dataset:

@@ -48,6 +48,12 @@ GRAVITY = 9.80665
 CIRCLE_BINS = 36
 #: A bin belongs to the clearance circle when its envelope reaches this fraction of the largest.
 ENVELOPE_FRACTION = 0.85
+#: Opening stretch of a record whose median is taken as the levitated position [s], at least
+#: :data:`OPENING_SAMPLES` samples: a fixed time, not a share of the record, so rest appended after the
+#: drop (a longer record) never pushes the window past the drop.
+OPENING_STRETCH = 1e-3
+#: Fewest samples of the opening stretch (a median of fewer is at the mercy of the noise).
+OPENING_SAMPLES = 16
 
 
 @dataclass(frozen=True)
@@ -133,7 +139,7 @@ def detect_drop(t: np.ndarray, x: np.ndarray, y: np.ndarray, noise: float) -> tu
     """Moment of the drop: the journal leaves its levitated position, back-dated by free fall.
 
     The first sample farther than d = max(10 noise, 2 um) from the median of the opening
-    samples marks the movement; a journal starting from rest falls d in sqrt(2 d / g), so the
+    stretch (:data:`OPENING_STRETCH`) marks the movement; a journal starting from rest falls d in sqrt(2 d / g), so the
     drop is that much earlier. The unbalance adds a drift that makes the movement visible a
     little sooner, so the estimate is early by up to ~0.5 ms; the fit refines it.
 
@@ -144,7 +150,7 @@ def detect_drop(t: np.ndarray, x: np.ndarray, y: np.ndarray, noise: float) -> tu
     info : dict
         Levitated position (x, y) [m] and how the drop was found.
     """
-    n0 = max(16, t.size // 100)
+    n0 = max(OPENING_SAMPLES, int(np.searchsorted(t, t[0] + OPENING_STRETCH)))
     x0, y0 = float(np.median(x[:n0])), float(np.median(y[:n0]))
     threshold = max(10.0 * noise, 2e-6)
     moved = np.nonzero(np.hypot(x - x0, y - y0) > threshold)[0]

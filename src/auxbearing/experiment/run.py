@@ -124,7 +124,8 @@ def run_experiment(
     ExperimentResult
         ``datasets``: ``measured`` (orbit, force, ball loads and stress over time since the
         drop) and ``simulated_<label>`` (:func:`auxbearing.drop.run_drop` output);
-        ``summary``: JSON-ready; ``figures``: orbits, force/stress and (with the fit) the fit window.
+        ``summary``: JSON-ready (``warnings``: sentences on results that mean little, such as an orbit that
+        never reaches the clearance used); ``figures``: orbits, force/stress and (with the fit) the fit window.
     """
     def step(fraction: float, label: str) -> None:
         if progress is not None:
@@ -169,6 +170,13 @@ def run_experiment(
         sensitivity[f"{ds_um:+.0f}"] = (float(c["contact_force"].max()), float(c["max_ball_stress"].max() / 1e6))
     measured_summary["clearance_used_um"] = s_used * 1e6
     measured_summary["clearance_source"] = s_source
+    warnings = []
+    if measured_summary["impacts"] == 0:
+        reach = s_used * 1e6 + measured_summary["peak_excursion_um"]
+        warnings.append(f"the measured orbit never reaches the clearance circle used for the force ({s_used * 1e6:.4g} "
+                        f"um, {s_source}): its largest radius after the drop is {reach:.4g} um, so the estimate sees "
+                        "no contact (peak force 0 N, no impacts); give the clearance (--clearance) or let the fit "
+                        "find it")
     measured_summary["peak_stress_if_clearance_minus_1um_MPa"] = sensitivity["-1"][1]
     measured_summary["peak_stress_if_clearance_plus_1um_MPa"] = sensitivity["+1"][1]
     measured_summary["peak_force_if_clearance_minus_1um_N"] = sensitivity["-1"][0]
@@ -206,6 +214,7 @@ def run_experiment(
         "measured": measured_summary,
         "simulated": {k: v for k, v in columns.items() if k != "measured"},
         "peak_table": peak_table(columns),
+        "warnings": warnings,
     }
     if fitted is not None:
         tau, sim_xy, meas_xy = fitted.pop("fitted_orbit")

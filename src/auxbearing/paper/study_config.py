@@ -15,6 +15,10 @@ catalogue = "7202"
 [rotor]                   # rotor and drop case: see `auxbearing drop --help`
 [drop]
 ```
+
+The static stage always runs the paper's load grid (Fig. 6-8) and the experiment stage the shipped
+SYNTHETIC records, so a ``[static]`` or ``[experiment]`` table would be read by nothing: it is refused
+rather than ignored.
 """
 
 from __future__ import annotations
@@ -28,7 +32,14 @@ from auxbearing.bearing import BearingGeometry, bearing_from_mapping, get_bearin
 from auxbearing.errors import InputError
 from auxbearing.units import to_si
 
-SECTIONS = ("study", "bearing", "comparison_bearing", "static", "rotor", "drop", "experiment")
+SECTIONS = ("study", "bearing", "comparison_bearing", "rotor", "drop")
+#: Tables a study file might be expected to take but that no stage reads, with the reason.
+UNREAD_SECTIONS = {
+    "static": "the static stage runs the paper's load grid of Fig. 6-8 on the two bearings",
+    "experiment": "the experiment stage runs the shipped SYNTHETIC drop records",
+}
+#: Bearing type each bearing table of a study must have (the paper compares these two kinds).
+BEARING_TYPES = {"bearing": "four_point", "comparison_bearing": "angular_contact"}
 STUDY_KEYS = ("title", "ball_load", "contact_angles", "groove_ratios")
 DEFAULT_TITLE = "auxbearing study: four-point-contact auxiliary bearings"
 
@@ -43,18 +54,20 @@ class StudyConfig:
     ball_load: float = 1000.0
     contact_angles_deg: tuple[float, float, float] = (10.0, 75.0, 1.0)
     groove_ratios: tuple[float, float, float] = (0.505, 0.6, 0.0025)
-    sections: dict = field(default_factory=dict)  # raw [static], [rotor], [drop], [experiment] tables
+    sections: dict = field(default_factory=dict)  # raw [rotor] and [drop] tables (checked when read)
     source: str = "defaults (the paper)"
 
     def angle_grid(self) -> np.ndarray:
-        """Contact angles of the sweep [deg]."""
-        start, stop, step = self.contact_angles_deg
-        return np.arange(start, stop + 0.5 * step, step)
+        """Contact angles of the sweep [deg] (never past the stop)."""
+        from auxbearing.contact import sweep_grid
+
+        return sweep_grid(*self.contact_angles_deg)
 
     def ratio_grid(self) -> np.ndarray:
-        """Groove ratios of the sweep [-]."""
-        start, stop, step = self.groove_ratios
-        return np.arange(start, stop + 0.5 * step, step)
+        """Groove ratios of the sweep [-] (never past the stop)."""
+        from auxbearing.contact import sweep_grid
+
+        return sweep_grid(*self.groove_ratios)
 
     def describe(self) -> dict:
         """Inputs for files and the report."""
@@ -75,14 +88,23 @@ def default_config() -> StudyConfig:
     return StudyConfig(bearing=get_bearing("QJ202"), comparison=get_bearing("7202"))
 
 
-def load_study_config(path: str | Path | None) -> StudyConfig:
-    """Read and validate a study TOML file; ``None`` gives :func:`default_config`."""
+def load_study_config(path: str | Path | None, field: str = "file") -> StudyConfig:
+    """Read and validate a study TOML file; ``None`` gives :func:`default_config`.
+
+    Every table is checked here, before any stage runs; ``field`` names the file in an error
+    (``--config`` on the command line).
+    """
     if path is None:
         return default_config()
-    data = read_toml(path)
-    unknown = [k for k in data if k not in SECTIONS]
-    if unknown:
-        raise InputError.for_field(unknown[0], "[...]", "unknown section; allowed: " + ", ".join(SECTIONS))
+    data = read_toml(path, field)
+    for name, value in data.items():
+        if name in UNREAD_SECTIONS:
+            raise InputError.for_field(f"[{name}]", "table", f"not read by a study ({UNREAD_SECTIONS[name]}); "
+                                                            "remove it")
+        if name not in SECTIONS:
+            raise InputError.for_field(f"[{name}]", "table", "unknown section; allowed: " + ", ".join(SECTIONS))
+        if not isinstance(value, dict):
+            raise InputError.for_field(name, value, f"must be a table ([{name}]), not a single value")
     study = data.get("study", {})
     bad = [k for k in study if k not in STUDY_KEYS]
     if bad:
@@ -99,10 +121,19 @@ def load_study_config(path: str | Path | None) -> StudyConfig:
     ratios = _triple("study.groove_ratios", study.get("groove_ratios"), "dimensionless", base.groove_ratios)
     if ratios[0] <= 0.5:
         raise InputError.for_field("study.groove_ratios", study["groove_ratios"], "must start above 0.5")
-    sections = {name: data[name] for name in ("static", "rotor", "drop", "experiment") if name in data}
+    sections = {name: data[name] for name in ("rotor", "drop") if name in data}
+    _check_drop_tables(sections)
     return StudyConfig(bearing=bearing, comparison=comparison, title=str(study.get("title", DEFAULT_TITLE)),
                        ball_load=ball_load, contact_angles_deg=angles, groove_ratios=ratios,
                        sections=sections, source=str(path))
+
+
+def _check_drop_tables(sections: dict) -> None:
+    """The [rotor] and [drop] tables as the drop stage will read them, checked now (not after an hour of stages)."""
+    from auxbearing.drop_params import DropCase, Rotor, from_mapping
+
+    Rotor(**from_mapping(sections.get("rotor"), "rotor"))
+    DropCase(**from_mapping(sections.get("drop"), "drop"))
 
 
 def _bearing(table: dict | None, default: BearingGeometry, prefix: str) -> BearingGeometry:
@@ -111,11 +142,18 @@ def _bearing(table: dict | None, default: BearingGeometry, prefix: str) -> Beari
     if not isinstance(table, dict):
         raise InputError.for_field(prefix, table, "must be a table")
     if set(table) == {"catalogue"}:
-        try:
-            return get_bearing(str(table["catalogue"]))
-        except InputError as err:
-            raise InputError(f"{prefix}.catalogue" + str(err).removeprefix("bearing")) from None
-    return bearing_from_mapping(table, name=prefix, prefix=f"{prefix}.")
+        spec = table["catalogue"]
+        bearing = get_bearing(str(spec), f"{prefix}.catalogue")
+    else:
+        spec = "table"
+        bearing = bearing_from_mapping(table, name=prefix, prefix=f"{prefix}.")
+    kind = BEARING_TYPES[prefix]
+    if bearing.type != kind:
+        where = f"{prefix}.catalogue" if spec != "table" else f"{prefix}.type"
+        raise InputError.for_field(where, spec if spec != "table" else bearing.type,
+                                   f"is a {bearing.type} bearing; a study compares a four_point [bearing] with an "
+                                   "angular_contact [comparison_bearing]")
+    return bearing
 
 
 def _triple(field_name, value, dimension, default, deg=False) -> tuple[float, float, float]:

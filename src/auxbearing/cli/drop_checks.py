@@ -1,0 +1,119 @@
+"""Checks of a drop before and after it runs: step budget, wall-time budget, inputs whose results mean little.
+
+Before the run: the fewest steps the run can take against its step budget (:func:`check_budget`), a ball
+constant under which the rotor's weight alone sinks the race into its balls (:func:`sink_check`), and
+warnings for legal inputs outside the model's range (:func:`plausibility`). While it runs: a wall-time
+budget (:func:`budgeted`). After it: a race that sank further than an elastic contact can
+(:func:`race_sink_warning`).
+"""
+
+from __future__ import annotations
+
+from auxbearing.cli.common import BudgetExceeded
+from auxbearing.errors import InputError
+
+
+def check_budget(machine, duration: float, blame: str, raise_with: str) -> None:
+    """Refuse a run whose fewest possible steps (duration / max_step) already exceed its step budget.
+
+    ``blame`` names what the user set (``--duration = '20'``); ``raise_with`` says how the budget is raised.
+    """
+    sim = machine.simulation
+    fewest = duration / sim.max_step
+    if fewest > sim.max_steps:
+        raise InputError(f"{blame}: the run needs at least {fewest:.3g} steps (duration {duration:g} s / max_step "
+                         f"{sim.max_step:g} s), beyond the step budget drop.max_steps = {sim.max_steps:.3g}; shorten "
+                         f"the run, lengthen the largest step, or {raise_with}")
+
+
+def plausibility(machine, typed: dict) -> list[str]:
+    """Warnings for legal inputs whose results would mean little (``typed`` names each input).
+
+    An unbalance beyond the clearance, a clearance large against the journal, a line-contact constant
+    no material has.
+    """
+    from auxbearing.core.hertz import line_contact_constant
+    from auxbearing.machine import JOURNAL_COMPLIANCE
+
+    notes = []
+    rotor = machine.rotor
+    for plane in machine.planes:
+        s = plane.radial_clearance
+        if rotor.unbalance > s:
+            notes.append(f"{typed['unbalance']}: the unbalance eccentricity {rotor.unbalance * 1e6:.4g} um is "
+                         f"larger than the clearance {s * 1e6:.4g} um at {plane.name}: the mass centre orbits "
+                         "outside the clearance circle, far beyond any balance grade (ISO 21940-11 G6.3 is "
+                         "e = 6.3 mm/s / speed)")
+        if s > CLEARANCE_TO_RADIUS * plane.journal_radius:
+            notes.append(f"{typed['clearance']}: the clearance {s * 1e3:.4g} mm is {s / plane.journal_radius:.1%} "
+                         f"of the journal radius {plane.journal_radius * 1e3:.4g} mm at {plane.name}: the line-contact "
+                         f"law takes the clearance as small against the radius (below {CLEARANCE_TO_RADIUS:.0%})")
+        b = plane.bearing
+        length = b.width if b.width is not None else 2.0 * b.ball_diameter
+        steel = float(line_contact_constant(length, b.ring_material.compliance + JOURNAL_COMPLIANCE))
+        ratio = plane.line_stiffness / steel
+        if not 1.0 / LINE_STIFFNESS_SPAN <= ratio <= LINE_STIFFNESS_SPAN:
+            notes.append(f"{typed['line_stiffness']}: K_l = {plane.line_stiffness:.4g} N/m**(10/9) is {ratio:.3g} "
+                         f"times Palmgren's constant of a steel line contact as long as the race ({length * 1e3:g} mm: "
+                         f"{steel:.4g}); no journal and race material is that far from steel")
+    return notes
+
+
+#: Largest radial clearance, as a fraction of the journal radius, for which the journal/race line contact is
+#: the conformal contact of a shaft in a bore: the law takes the relative radius r (r + s) / s as r^2 / s
+#: (machine model, Johnson 1985 Eq. 4.43), an error of s / r, so 5 %.
+CLEARANCE_TO_RADIUS = 0.05
+#: Factor by which a line-contact constant may differ from Palmgren's steel value for the race's length before it
+#: is flagged: ceramics, bronzes and polymers bring E' within a factor of ~10 of steel's, so 100 is generous.
+LINE_STIFFNESS_SPAN = 100.0
+
+
+def sink_check(bearing, machine, case_ball_constant, typed: str) -> None:
+    """Refuse a ball constant under which the rotor's weight alone would sink the race into its balls."""
+    import numpy as np
+
+    from auxbearing.statics import SINK_LIMIT_FRACTION, sink_estimate
+
+    if case_ball_constant is None:
+        return
+    weight = machine.rotor.mass * machine.simulation.gravity
+    sink = float(sink_estimate(bearing, np.array([[0.0, weight, 0.0, 0.0, 0.0]]), case_ball_constant)[0])
+    if sink > SINK_LIMIT_FRACTION * bearing.ball_diameter:
+        raise InputError(f"{typed}: under the rotor's weight alone ({weight:.3g} N) the race would sink about "
+                         f"{sink * 1e3:.3g} mm into its balls (ball diameter {bearing.ball_diameter * 1e3:g} mm), "
+                         f"beyond {SINK_LIMIT_FRACTION:.0%} of a ball where no contact law holds; a steel ball "
+                         "constant is about 1e10 N/m**1.5")
+
+
+def race_sink_warning(ds, bearing) -> str | None:
+    """A sentence when the race moved into its balls further than an elastic steel contact can (planar view)."""
+    import numpy as np
+
+    from auxbearing.statics import SINK_WARNING_FRACTION
+
+    moved = float(np.max(np.hypot(ds["race_x"].values - ds["ring_x"].values,
+                                  ds["race_y"].values - ds["ring_y"].values), initial=0.0))
+    moved -= 0.5 * bearing.diametral_clearance
+    if moved <= SINK_WARNING_FRACTION * bearing.ball_diameter:
+        return None
+    return (f"the race moved {moved * 1e6:.4g} um into its balls, {moved / bearing.ball_diameter:.1%} of the ball "
+            "diameter: beyond the 1.6 % a steel ball's elastic approach reaches at 6000 MPa, so the ball-set contact "
+            "law is outside its range")
+
+
+def budgeted(progress, seconds: float):
+    """A progress callback that ends the run once it has used ``seconds`` of wall time (--max-wall-time)."""
+    import time
+
+    start = time.monotonic()
+
+    def report(fraction: float, status: str = "") -> None:
+        progress(fraction, status)
+        spent = time.monotonic() - start
+        if spent > seconds:
+            raise BudgetExceeded(f"--max-wall-time = {seconds:g} s: the drop used up its wall-time budget after "
+                                 f"{spent:.1f} s at {fraction:.1%} of the simulated time; the inputs make the model "
+                                 "stiff or long (look at masses, stiffnesses and --max-step), or raise "
+                                 "--max-wall-time to go on")
+
+    return report
