@@ -31,7 +31,8 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     if coast is not None:
         figs = [(pc.plot_speeds(coast.history), "Spin-down of rotor and races (grey: reduced model)")]
         for k in range(len(cases.machine.planes)):
-            figs.append((pc.plot_temperatures(coast.history, k), "Temperatures of the plane's thermal network"))
+            figs.append((pc.plot_temperatures(coast.history, k),
+                         f"{cases.machine.planes[k].name}: temperatures of the plane's thermal network"))
         figs.append((pc.plot_clearances(coast.history), "Clearances with thermal growth"))
         for k, life in enumerate(coast.life):
             figs.append((pc.plot_stress_cycles(cycles_of_worst_contact(life)),
