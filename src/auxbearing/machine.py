@@ -470,7 +470,7 @@ def _pack(machine: Machine) -> KernelModel:
     clearance = np.zeros(cm.MAX_PLANES)
     for k, p in enumerate(planes):
         clearance[k] = p.bearing.diametral_clearance
-    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine))
+    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine), *cm.new_scratch())
     y0 = np.zeros(cm.N_STATE)
     y0[cm.OMEGA] = r.speed
     y0[cm.X], y0[cm.Y] = r.start_x, r.start_y

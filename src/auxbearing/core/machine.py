@@ -159,13 +159,31 @@ class Limits(NamedTuple):
 
 
 class Machine(NamedTuple):
-    """Everything :func:`rhs` and the observer need."""
+    """Everything :func:`rhs` and the observer need.
+
+    ``scratch`` and ``last_diag`` are working memory: the right-hand side runs some 10^5 times a
+    drop, and allocating its small arrays each time cost a fifth of it. They make a Machine a
+    single-threaded object: give each thread its own (:func:`new_scratch`).
+    """
 
     rotor: Rotor
     planes: Planes
     ballsets: tuple  #: one :class:`auxbearing.core.ballset.BallSet` per plane (a copy of plane 0 when inactive)
     ballset_clearance: np.ndarray  #: diametral clearance of each plane's bearing [m]
     limits: Limits
+    scratch: np.ndarray  #: (:data:`SCRATCH`,) generalised forces, ball-set displacement and resultant
+    jac_stub: np.ndarray  #: (1, 1): the Jacobian argument of the ball-set kernel, unused here
+    last_diag: np.ndarray  #: (MAX_PLANES, len(DIAG_FIELDS)): each plane's diagnostics at the last rhs call
+
+
+#: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5).
+_Q, _DISP, _FORCE = 0, 6, 11
+SCRATCH = 16
+
+
+def new_scratch() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fresh (scratch, jac_stub, last_diag) for a :class:`Machine`."""
+    return np.zeros(SCRATCH), np.zeros((1, 1)), np.zeros((MAX_PLANES, len(DIAG_FIELDS)))
 
 
 # ----------------------------------------------------------------------------- rotor kinematics
@@ -323,13 +341,15 @@ def plane_forces(k, y, m, kin, q, out, diag):
     # --- ball set (Eq. 22), its damping (Eq. 23) and rolling resistance (Eq. 24, corrected)
     ox_, oy_ = y[b + OX], y[b + OY]
     ovx, ovy = y[b + OVX], y[b + OVY]
-    disp = np.zeros(5)
+    disp = m.scratch[_DISP:_DISP + 5]
+    force = m.scratch[_FORCE:_FORCE + 5]
+    for i in range(5):
+        disp[i] = 0.0
+        force[i] = 0.0
     disp[0] = rz
     disp[1] = rx - ox_
     disp[2] = ry - oy_
-    force = np.zeros(5)
-    jac = np.zeros((1, 1))
-    qmax, _ = accumulate(disp, m.ballsets[k], m.ballset_clearance[k], force, jac, False, False)
+    qmax, _ = accumulate(disp, m.ballsets[k], m.ballset_clearance[k], force, m.jac_stub, False, False)
     fex, fey = force[1], force[2]
     fez = force[0] if p.race_axial_free[k] > 0.0 else 0.0
     diag[D_BFX], diag[D_BFY], diag[D_BFZ], diag[D_QMAX] = fex, fey, force[0], qmax
@@ -430,11 +450,12 @@ def rhs(t, y, m, out):
         out[i] = 0.0
     rotor = m.rotor
     kin = rotor_kinematics(y, rotor)
-    q = np.zeros(6)  # generalised forces on G (3), theta_p (2), phi
-    diag = np.empty(len(DIAG_FIELDS))
+    q = m.scratch[_Q:_Q + 6]  # generalised forces on G (3), theta_p (2), phi
+    for i in range(6):
+        q[i] = 0.0
     for k in range(MAX_PLANES):
         if m.planes.active[k] > 0.0:
-            plane_forces(k, y, m, kin, q, out, diag)
+            plane_forces(k, y, m, kin, q, out, m.last_diag[k])
     om = y[OMEGA]
     mass = rotor.mass
     vgx = y[VX] + kin[0] * om

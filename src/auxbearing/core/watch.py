@@ -41,7 +41,7 @@ from auxbearing.core.machine import (
     RZ,
     energy_balance,
 )
-from auxbearing.core.probes import ball_extremes, orbit, plane_diagnostics
+from auxbearing.core.probes import ball_extremes, orbit
 
 #: Stop codes of :func:`observe` (0: none).
 LINE_CONTACT, BALL_STRESS, SHOULDER, MOUNT_TRAVEL, AXIAL_RUNAWAY, ENERGY_GAIN = range(1, 7)
@@ -80,6 +80,8 @@ class Watch(NamedTuple):
     whirl_acc: np.ndarray  #: (2, len(WHIRL_FIELDS)) running integrals of the open window
     whirl: np.ndarray  #: (n_windows, 2, len(WHIRL_FIELDS)) closed windows
     searches: np.ndarray  #: (2,) int64: peak refinements and contact-onset searches made (cost bookkeeping)
+    tmp: np.ndarray  #: (n,) working state for the dense-output searches
+    diags: np.ndarray  #: (2, len(DIAG_FIELDS)) each plane's diagnostics at the step's end
 
 
 def new_watch(n_states: int, window: float, n_windows: int, energy0: float) -> Watch:
@@ -90,7 +92,7 @@ def new_watch(n_states: int, window: float, n_windows: int, energy0: float) -> W
                  np.zeros((5, n_states)), np.zeros(1), np.zeros(two), np.zeros(two), np.full(two, -1.0),
                  np.zeros(4), np.full(1, energy0), np.zeros(2), np.full(1, window), np.zeros(1, np.int64),
                  np.full(1, window), np.zeros((two, n_fields)), np.zeros((max(n_windows, 1), two, n_fields)),
-                 np.zeros(2, np.int64))
+                 np.zeros(2, np.int64), np.zeros(n_states), np.zeros((two, len(DIAG_FIELDS))))
 
 
 @njit(cache=True, inline="always")
@@ -169,16 +171,22 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
 
 @njit(cache=True)
 def observe(t, h, y0, y1, coeff, m, w):
-    """After each accepted step from t to t + h: peaks, onsets, whirl windows, range (module docstring)."""
-    tmp = np.empty(y1.size)
+    """After each accepted step from t to t + h: peaks, onsets, whirl windows, range (module docstring).
+
+    The plane diagnostics at y1 are those of the right-hand side's last call: DOPRI5 evaluates it at
+    (t + h, y1) last (first same as last), and the searches below call it again, so they are copied first.
+    """
+    tmp = w.tmp
     lim = m.limits
-    diags = np.zeros((MAX_PLANES, len(DIAG_FIELDS)))
+    diags = w.diags
+    for k in range(MAX_PLANES):
+        for i in range(diags.shape[1]):
+            diags[k, i] = m.last_diag[k, i] if m.planes.active[k] > 0.0 else 0.0
     code = 0
     for k in range(MAX_PLANES):
         if m.planes.active[k] <= 0.0:
             continue
-        diag = plane_diagnostics(y1, m, k)
-        diags[k] = diag
+        diag = diags[k]
         if diag[D_PEN] > 0.0 and w.in_contact[k] <= 0.0:
             w.onsets[k] += 1.0
             if w.first_contact[k] < 0.0:
