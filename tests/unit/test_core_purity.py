@@ -16,7 +16,7 @@ import numpy, numba
 before = set(sys.modules)
 import auxbearing.core.{name}
 new = set(sys.modules) - before
-top = {n: n.split('.')[0] for n in new}
+top = {{n: n.split('.')[0] for n in new}}
 outside = sorted(n for n in new if top[n] not in sys.stdlib_module_names and top[n] != 'auxbearing')
 ours = sorted(n for n in new if top[n] == 'auxbearing' and n != 'auxbearing' and not n.startswith('auxbearing.core'))
 print(repr((outside, ours)))
