@@ -80,7 +80,7 @@ class BearingGeometry:
     source: str = "user input"
 
     def __post_init__(self) -> None:
-        if self.type not in BEARING_TYPES:
+        if not isinstance(self.type, str) or self.type not in BEARING_TYPES:
             raise InputError.for_field("type", self.type, "must be one of " + ", ".join(BEARING_TYPES))
         check_positive("ball_diameter", self.ball_diameter)
         check_positive("pitch_diameter", self.pitch_diameter)
@@ -319,7 +319,7 @@ def bearing_from_mapping(data: dict, name: str | None = None, prefix: str = "bea
     if missing:
         raise InputError(f"{prefix}{missing[0]}: missing; a bearing needs " + ", ".join(_REQUIRED_KEYS))
     kind = data["type"]
-    if kind not in BEARING_TYPES:
+    if not isinstance(kind, str) or kind not in BEARING_TYPES:
         raise InputError.for_field(prefix + "type", kind, "must be one of " + ", ".join(BEARING_TYPES))
     count = data["ball_count"]
     if isinstance(count, bool) or not isinstance(count, int):

@@ -14,6 +14,7 @@ from numbers import Real
 import pint
 
 from auxbearing.errors import InputError
+from auxbearing.params import EXTRA_UNITS as _EXTRA_UNITS
 from auxbearing.params import SI_UNITS as _SI_UNITS
 
 ureg = pint.UnitRegistry()
@@ -61,7 +62,7 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
     """
     si = SI_UNITS[dimension]
     if isinstance(value, bool):
-        raise InputError.for_field(field, value, f"must be a {_describe(dimension)}")
+        raise InputError.for_field(field, value, f"must be {_a(dimension)}")
     if isinstance(value, Real):
         if dimension == "dimensionless":
             quantity = Quantity(float(value), "")
@@ -74,14 +75,14 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
     elif isinstance(value, (pint.Quantity, str)):
         quantity = parse_quantity(field, value, dimension, default_unit)
     else:
-        raise InputError.for_field(field, value, f"must be a {_describe(dimension)}")
+        raise InputError.for_field(field, value, f"must be {_a(dimension)}")
     try:
         magnitude = float(quantity.to(si).magnitude)
     except pint.DimensionalityError:
         raise InputError.for_field(
             field,
             value,
-            f"unit {quantity.units} is not a {_describe(dimension)} "
+            f"unit {quantity.units} is not {_a(dimension)} "
             f"(use e.g. {_examples(dimension)})",
         ) from None
     except (OverflowError, TypeError, ValueError):  # "10**400 N": pint evaluates a huge integer
@@ -120,7 +121,7 @@ def _parse_string(field: str, text: str, dimension: str, default_unit: str | Non
         parsed = _offset_quantity(field, text, dimension)
     except Exception:  # pint raises several unrelated types for malformed text
         raise InputError.for_field(
-            field, text, f"cannot read it as a {_describe(dimension)} such as "
+            field, text, f"cannot read it as {_a(dimension)} such as "
             f"'{_example_value(dimension)}'"
         ) from None
     try:
@@ -148,7 +149,7 @@ def _offset_quantity(field: str, text: str, dimension: str) -> pint.Quantity:
         return Quantity(float(match.group(1)), match.group(2))
     except Exception:  # no match, or a unit pint does not know
         raise InputError.for_field(
-            field, text, f"cannot read it as a {_describe(dimension)} such as '{_example_value(dimension)}'"
+            field, text, f"cannot read it as {_a(dimension)} such as '{_example_value(dimension)}'"
         ) from None
 
 
@@ -181,13 +182,27 @@ def _describe(dimension: str) -> str:
     return dimension.replace("_", " ")
 
 
+def _a(dimension: str) -> str:
+    """The dimension with its article ("an angle", "a length")."""
+    text = _describe(dimension)
+    return ("an " if text[0] in "aeiou" else "a ") + text
+
+
+def _entry(dimension: str) -> tuple[str, str, str]:
+    """(examples, unit of a plain number, example value); the dynamics' extra dimensions have them too."""
+    if dimension in _EXAMPLES:
+        return _EXAMPLES[dimension]
+    si, examples = _EXTRA_UNITS[dimension]
+    return examples, si, f"1 {si}"
+
+
 def _examples(dimension: str) -> str:
-    return _EXAMPLES[dimension][0]
+    return _entry(dimension)[0]
 
 
 def _example_unit(dimension: str) -> str:
-    return _EXAMPLES[dimension][1]
+    return _entry(dimension)[1]
 
 
 def _example_value(dimension: str) -> str:
-    return _EXAMPLES[dimension][2]
+    return _entry(dimension)[2]

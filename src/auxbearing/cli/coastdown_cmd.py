@@ -11,6 +11,7 @@ from pathlib import Path
 import click
 
 from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option, option_named, warn
+from auxbearing.cli.drop_checks import MAX_BALL_CONTACTS
 from auxbearing.errors import InputError
 
 
@@ -27,9 +28,11 @@ from auxbearing.errors import InputError
               callback=checked_out_dir,
               help="Write coastdown.nc (the coast-down, reduced stretches marked), drop.nc, coastdown_summary.json "
                    "and the figures into this folder.")
+@click.option("--max-ball-contacts", default=MAX_BALL_CONTACTS, show_default=True, type=click.IntRange(min=1),
+              help="Budget: most ball contact pairs (balls x pairs) per touchdown plane; every step evaluates each.")
 @json_option()
 @click.option("--quiet", is_flag=True, help="No progress output.")
-def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, as_json, quiet):
+def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_ball_contacts, as_json, quiet):
     """A machine from the drop to standstill: spin-down, friction heat, thermal growth, drops to failure.
 
     Full dynamics checks the motion in short windows; once it has settled, a reduced model carries the
@@ -41,7 +44,7 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, as_json
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.cli.drop_cmd import plausibility
+    from auxbearing.cli.drop_checks import check_ball_contacts, plausibility
     from auxbearing.coastdown import run_coastdown
     from auxbearing.coastdown_life import cycles_of_worst_contact
     from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
@@ -50,6 +53,7 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, as_json
 
     with option_named("--machine", "machine"), option_named("--machine", "file", value=machine_spec):
         machine = read_machine(machine_spec)
+    check_ball_contacts(machine, max_ball_contacts, f"--machine = {machine_spec!r}")
     warn(*plausibility(machine, {"unbalance": f"{machine_spec}: rotor.unbalance",
                                  "clearance": f"{machine_spec}: radial_clearance",
                                  "line_stiffness": f"{machine_spec}: line_stiffness"}))

@@ -59,8 +59,8 @@ def checked_out_dir(ctx: click.Context, param: click.Parameter, value: Path | No
 def warn(*warnings: str | None, where: str = "") -> None:
     """Print each non-empty warning as one ``warning: ...`` line on stderr (stdout stays clean JSON)."""
     for text in warnings:
-        if text:
-            click.echo(f"warning: {where}{text}", err=True)
+        if text:  # one line whatever a typed value holds (a carriage return, a newline)
+            click.echo("warning: " + " ".join(f"{where}{text}".split()), err=True)
 
 
 def out_option(default: str):

@@ -65,8 +65,10 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
     load = _ball_load(ball_load)
     result = ball_contact(bearing, load, method=method)
     # the option to blame for a contact outside Hertz theory: the override given, else the load
-    blame = next(((n, v) for n, v in (("--groove-ratio", groove_ratio), ("--contact-angle", contact_angle))
-                  if v is not None), ("--ball-load", ball_load))
+    load_given = click.get_current_context().get_parameter_source("ball_load") != click.core.ParameterSource.DEFAULT
+    blame = next(((n, v) for n, v in (("--groove-ratio", groove_ratio), ("--contact-angle", contact_angle),
+                                      ("--ball-load", ball_load if load_given else None), ("--bearing", bearing_spec))
+                  if v is not None))
     notes, refusal = ellipse_checks(bearing, result)
     if refusal is not None:
         raise InputError.for_field(blame[0], blame[1], refusal)

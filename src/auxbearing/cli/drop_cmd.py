@@ -27,7 +27,16 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
-from auxbearing.cli.drop_checks import budgeted, check_budget, plausibility, race_sink_warning, sink_check
+from auxbearing.cli.drop_checks import (
+    MAX_BALL_CONTACTS,
+    budgeted,
+    check_ball_contacts,
+    check_budget,
+    decimation_note,
+    plausibility,
+    race_sink_warning,
+    sink_check,
+)
 from auxbearing.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.errors import InputError
 
@@ -118,13 +127,21 @@ def _options_as_typed(params: dict):
     try:
         yield
     except InputError as err:
-        field, sep, rest = str(err).partition(" = ")
+        text = str(err)
+        field, sep, rest = text.partition(" = ")
+        if not sep:  # "touchdown.0.journal_radius: missing; ..." names no value
+            field, _, rest = text.partition(": ")
         key = aliases.get(field) or tuple(field.split(".", 1))
         param = next((p for p in PARAMETERS if (p.section, p.key) == key), None)
-        if not sep or param is None or key not in params:
+        if param is None:
+            raise
+        option = f"--{_option_name(param)}"
+        if not sep:
+            raise InputError(f"{option}: {rest} (give {option})") from None
+        if key not in params:
             raise
         _, _, rule = rest.partition(": ")
-        raise InputError.for_field(f"--{_option_name(param)}", params[key], rule) from None
+        raise InputError.for_field(option, params[key], rule) from None
 
 
 def paper_machine(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
@@ -163,6 +180,8 @@ def _fmt(fmt: str, value) -> str:
 @bearing_option()
 @config_option()
 @parameter_options
+@click.option("--max-ball-contacts", default=MAX_BALL_CONTACTS, show_default=True, type=click.IntRange(min=1),
+              help="Budget: most ball contact pairs (balls x pairs) per touchdown plane; every step evaluates each.")
 @click.option("--max-wall-time", default=None, metavar="TIME",
               help="Wall-time budget of the run (plain numbers in s) [default: the machine's drop.max_wall_time, "
                    "600 s for the paper's rig].")
@@ -172,7 +191,8 @@ def _fmt(fmt: str, value) -> str:
 @json_option()
 @quiet_option()
 @click.pass_context
-def drop_command(ctx, machine_spec, bearing_spec, config, params, max_wall_time, out_dir, as_json, quiet):
+def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_contacts, max_wall_time, out_dir, as_json,
+                 quiet):
     """Drop of a rotor onto its touchdown bearings.
 
     With --machine: a rigid rotor on one or two touchdown planes (gyroscopics, axial touchdown,
@@ -198,9 +218,9 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, max_wall_time,
             given = paper_options or (["--config"] if config is not None else ["--bearing"])
             raise InputError.for_field(given[0], "given with --machine",
                                        "the paper-rig options do not apply to a machine; set them in its file")
-        _machine_drop(machine_spec, duration, wall, out_dir, as_json, quiet)
+        _machine_drop(machine_spec, duration, wall, max_ball_contacts, out_dir, as_json, quiet)
         return
-    _paper_drop(ctx, bearing_spec, config, params, wall, out_dir, as_json, quiet)
+    _paper_drop(ctx, bearing_spec, config, params, wall, max_ball_contacts, out_dir, as_json, quiet)
 
 
 def _typed_names(params: dict) -> dict:
@@ -215,7 +235,7 @@ def _typed_names(params: dict) -> dict:
     return out
 
 
-def _paper_drop(ctx, bearing_spec, config, params, wall, out_dir, as_json, quiet) -> None:
+def _paper_drop(ctx, bearing_spec, config, params, wall, max_contacts, out_dir, as_json, quiet) -> None:
     from rich.console import Console
     from rich.table import Table
 
@@ -229,6 +249,7 @@ def _paper_drop(ctx, bearing_spec, config, params, wall, out_dir, as_json, quiet
                   if p.key in ("duration", "max_step") and (p.section, p.key) in params), "the paper's drop")
     check_budget(machine, case.duration, blame, "run it as a machine file (drop --machine), whose drop.max_steps "
                                                 "can be raised")
+    check_ball_contacts(machine, max_contacts, f"--bearing = {bearing_spec!r}")
     sink_check(bearing, machine, case.ball_constant, f"--ball-constant = {params.get(('drop', 'ball_constant'))!r}")
     warn(*plausibility(machine, _typed_names(params)))
     seconds = wall if wall is not None else machine.simulation.max_wall_time
@@ -244,6 +265,11 @@ def _paper_drop(ctx, bearing_spec, config, params, wall, out_dir, as_json, quiet
             save_figure(plot_orbit_force(ds, PAPER_DROP.get(bearing.name)), tmp / "drop_orbit_force")
             save_figure(plot_speeds_stress(ds), tmp / "drop_speeds_stress")
             write_json(summary, tmp / "drop_summary.json", inputs)
+    times = ds["time"].values
+    step = float(times[1] - times[0]) if times.size > 1 else case.output_step
+    summary = {**summary, "output_step_s": step, "output_decimated": step > case.output_step * (1.0 + 1e-9)}
+    if summary["output_decimated"]:
+        warn(decimation_note(step, case.output_step, machine.simulation.max_output_points))
     if out_dir is not None:
         summary = {**summary, "out": str(out_dir)}
     if summary["verdict"] != "ok":
@@ -279,8 +305,8 @@ _PLANE_ROWS = (("peak_contact_force_N", "Peak collision force", "N", "{:.1f}"),
                ("max_mount_deflection_um", "Largest mount deflection", "µm", "{:.1f}"))
 
 
-def _machine_drop(spec: str, duration: str | None, wall: float | None, out_dir: Path | None, as_json: bool,
-                  quiet: bool) -> None:
+def _machine_drop(spec: str, duration: str | None, wall: float | None, max_contacts: int, out_dir: Path | None,
+                  as_json: bool, quiet: bool) -> None:
     from rich.console import Console
     from rich.table import Table
 
@@ -301,6 +327,7 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, out_dir: 
     check_budget(machine, seconds if seconds is not None else machine.simulation.duration,
                  f"--duration = {duration!r}" if duration is not None else f"--machine = {spec!r}: drop.duration",
                  "raise drop.max_steps in the machine file")
+    check_ball_contacts(machine, max_contacts, f"--machine = {spec!r}")
     warn(*plausibility(machine, {"unbalance": f"{spec}: rotor.unbalance", "clearance": f"{spec}: radial_clearance",
                                  "line_stiffness": f"{spec}: line_stiffness"}))
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
@@ -315,6 +342,9 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, out_dir: 
             for name, fig in machine_figures(run.dataset, summary).items():
                 save_figure(fig, tmp / f"drop_{name}")
             write_json(summary, tmp / "drop_summary.json", inputs)
+    if summary["output_decimated"]:
+        warn(decimation_note(summary["output_step_s"], machine.simulation.output_step,
+                             machine.simulation.max_output_points))
     if out_dir is not None:
         summary = {**summary, "out": str(out_dir)}
     if summary["verdict"] != "ok":
