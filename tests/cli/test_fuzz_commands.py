@@ -258,6 +258,38 @@ CAMPAIGN = [
     case("report-out-empty", "campaign-report nostore.zarr --out ''", "--out"),
 ]
 
+BUDGETS = [
+    case("budget-sweep-points-zero", "contact-sweep --max-points 0", "--max-points", "0"),
+    case("budget-sweep-points-text", "contact-sweep --max-points abc", "--max-points", "abc"),
+    case("budget-sweep-points-small", "contact-sweep --max-points 10", "--max-points", "10"),
+    case("budget-cases-zero", "static-cases --loads l.csv --max-cases 0", "--max-cases", "0",
+         files={"l.csv": "radial [N]\n1000\n"}),
+    case("budget-cases-small", "static-cases --loads l.csv --max-cases 1", "--max-cases", "1",
+         files={"l.csv": "radial [N]\n1000\n2000\n"}),
+    case("budget-wall-zero", "drop --max-wall-time 0", "--max-wall-time", "0"),
+    case("budget-wall-text", "drop --max-wall-time abc", "--max-wall-time", "abc"),
+    case("budget-wall-mass", "drop --max-wall-time '5 kg'", "--max-wall-time", "5 kg"),
+    case("budget-contacts-zero", "drop --max-ball-contacts 0", "--max-ball-contacts", "0"),
+    case("budget-contacts-small", "drop --max-ball-contacts 10", "--max-ball-contacts", "10"),
+    case("budget-coast-contacts-small", "coastdown --machine paper_rig --max-ball-contacts 10", "--max-ball-contacts",
+         "10"),
+]
+
+VERIFY = [
+    case("verify-machine-missing-option", "verify", "--machine"),
+    case("verify-machine-unknown", "verify --machine nomachine --out v", "--machine", "nomachine"),
+    case("verify-machine-folder", "verify --machine adir.toml --out v", "adir.toml", files=A_FOLDER,
+         avoid=("not found",)),
+    case("verify-candidates-unknown", "verify --machine blower --candidates QJ999 --out v", "--candidates",
+         "QJ999"),
+    case("verify-candidates-empty", "verify --machine blower --candidates '' --out v", "--candidates"),
+    case("verify-samples-negative", "verify --machine blower --campaign-samples -1 --out v", "--campaign-samples",
+         "-1"),
+    case("verify-workers-zero", "verify --machine blower --workers 0 --out v", "--workers", "0"),
+    case("verify-out-empty", "verify --machine blower --out ''", "--out"),
+    case("verify-out-file", "verify --machine blower --out afile", "--out", "afile", files=A_FILE),
+]
+
 OTHERS = [
     case("top-unknown-command", "nocommand", "nocommand"),
     case("bearings-extra", "bearings extra", "extra"),
@@ -267,7 +299,7 @@ OTHERS = [
 ]
 
 CASES = [*CONTACT, *SWEEP, *STATIC, *STATIC_CASES, *STATIC_STUDY, *DROP, *DROP_COMPARE, *EXPERIMENT, *COASTDOWN,
-         *STUDY, *CAMPAIGN, *OTHERS]
+         *STUDY, *CAMPAIGN, *VERIFY, *BUDGETS, *OTHERS]
 
 
 def _measured_placeholder(c):
@@ -285,6 +317,15 @@ def test_ids_are_unique():
     assert len(ids) == len(set(ids))
 
 
-@pytest.mark.parametrize("c", CASES, ids=[c.id for c in CASES])
+#: Cases that fail in modules this suite's author may not change, with where the fix belongs (strict: once the
+#: module is fixed the mark must go).
+KNOWN = {
+    "verify-candidates-unknown": "verify_cmd.py names the candidate 'candidate ...: touchdown.0.bearing', "
+                                 "not --candidates",
+}
+
+
+@pytest.mark.parametrize("c", [pytest.param(c, marks=pytest.mark.xfail(reason=KNOWN[c.id], strict=True))
+                               if c.id in KNOWN else c for c in CASES], ids=[c.id for c in CASES])
 def test_bad_option(c, tmp_path):
     check_case(c, tmp_path)
