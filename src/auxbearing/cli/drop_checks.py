@@ -140,3 +140,27 @@ def decimation_note(written: float, asked: float, max_points: float) -> str:
     return (f"the time series is written every {written * 1e6:.4g} us, not the {asked * 1e6:.4g} us asked: the run at "
             f"that step would exceed the output budget drop.max_output_points = {max_points:.3g} (memory); peaks, "
             "impacts and whirl come from the run itself, not from the written grid")
+
+
+#: Shortest time one journal/race impact lasts with steel contacts: about half the ~0.4 ms contact oscillation
+#: of the source paper's rig (docs/paper_notes.md, item 7). More contact onsets than one per this interval
+#: is a chatter no line contact of steel makes.
+IMPACT_DURATION = 0.2e-3
+
+
+def impact_rate_warning(where: str, impacts: int, first_impact_ms: float | None, simulated_s: float) -> str | None:
+    """A sentence when a plane counts more impacts than impacts of :data:`IMPACT_DURATION` can fit in the run.
+
+    >>> impact_rate_warning("QJ202", 20, 7.2, 0.15) is None
+    True
+    >>> impact_rate_warning("QJ202", 407662, 7.2, 0.15)[:34]
+    'QJ202: 407662 impacts in 142.8 ms,'
+    """
+    if not impacts or first_impact_ms is None:
+        return None
+    span = simulated_s - first_impact_ms * 1e-3
+    if impacts <= max(1.0, span / IMPACT_DURATION):
+        return None
+    return (f"{where}: {impacts} impacts in {span * 1e3:.1f} ms, more than one per {IMPACT_DURATION * 1e3:g} ms that a "
+            "steel impact lasts: the contact chatters and the line-contact law is outside its range (look at the "
+            "line stiffness and damping)")

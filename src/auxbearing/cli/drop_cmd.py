@@ -33,6 +33,7 @@ from auxbearing.cli.drop_checks import (
     check_ball_contacts,
     check_budget,
     decimation_note,
+    impact_rate_warning,
     plausibility,
     race_sink_warning,
     sink_check,
@@ -276,7 +277,8 @@ def _paper_drop(ctx, bearing_spec, config, params, wall, max_contacts, out_dir, 
         warn(summary["reason"])
     elif summary["peak_ball_stress_MPa"] is not None:
         warn(stress_warning(summary["peak_ball_stress_MPa"] * 1e6))
-    warn(race_sink_warning(ds, bearing))
+    warn(race_sink_warning(ds, bearing),
+         impact_rate_warning(bearing.name, summary["impacts"], summary["first_impact_ms"], float(times[-1])))
     if as_json:
         echo_json(summary)
         return
@@ -345,6 +347,8 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
     if summary["output_decimated"]:
         warn(decimation_note(summary["output_step_s"], machine.simulation.output_step,
                              machine.simulation.max_output_points))
+    warn(*(impact_rate_warning(p["name"], p["impacts"], p["first_impact_ms"], summary["simulated_s"])
+           for p in summary["planes"]))
     if out_dir is not None:
         summary = {**summary, "out": str(out_dir)}
     if summary["verdict"] != "ok":
