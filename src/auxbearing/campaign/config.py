@@ -257,6 +257,28 @@ def _inputs(head: dict, n_planes: int) -> tuple[tuple[CampaignInput, ...], list[
     return tuple(inputs), notes
 
 
+#: Keys of [[touchdown]] that act only with a mount (mount_stiffness given) or an axial catch (axial_clearance).
+MOUNT_KEYS = ("mount_damping", "mount_mass", "mount_deadband", "mount_stop", "stop_stiffness", "stop_damping",
+              "mount_travel")
+FACE_KEYS = ("face_stiffness", "face_damping", "face_friction", "face_radius")
+
+
+def _check_inputs_act(inputs: tuple[CampaignInput, ...], machine) -> None:
+    """Refuse an input that would change nothing: a mount value on a rigid plane, a face value without a catch."""
+    varied = {(k, i.name) for i in inputs for k in i.planes}
+    for inp in inputs:
+        for k in inp.planes:
+            plane = machine.planes[k]
+            if inp.name in MOUNT_KEYS and plane.mount is None and (k, "mount_stiffness") not in varied:
+                raise InputError.for_field(f"campaign.input.{inputs.index(inp)}.key", inp.key,
+                                           f"names nothing: plane {k} ({plane.name}) has no mount (give "
+                                           f"touchdown.{k}.mount_stiffness), so the value would change nothing")
+            if inp.name in FACE_KEYS and not plane.catches_axially and (k, "axial_clearance") not in varied:
+                raise InputError.for_field(f"campaign.input.{inputs.index(inp)}.key", inp.key,
+                                           f"names nothing: plane {k} ({plane.name}) does not catch axially (give "
+                                           f"touchdown.{k}.axial_clearance), so the value would change nothing")
+
+
 def apply_sample(tables: dict, inputs: tuple[CampaignInput, ...], values, as_quantity: bool = False) -> dict:
     """The machine tables with each input set to its sampled SI value (as ``"<value> <SI unit>"`` text).
 
@@ -329,6 +351,7 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     tables, base = _machine_tables(data, head, base)
     machine = machine_from_mapping(tables, name, base)
     inputs, notes = _inputs(head, len(machine.planes))
+    _check_inputs_act(inputs, machine)
     whirl_map = head.get("whirl_map")
     if whirl_map is not None:
         keys = [i.key for i in inputs]
