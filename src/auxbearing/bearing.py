@@ -7,6 +7,7 @@ Analysis*, 5th ed. (2007), Essential Concepts, Ch. 2 ("ball bearing macrogeometr
 
 from __future__ import annotations
 
+import functools
 import math
 import tomllib
 from dataclasses import dataclass, replace
@@ -369,10 +370,21 @@ def get_bearing(name: str, field: str = "bearing") -> BearingGeometry:
     >>> get_bearing("qj202").type
     'four_point'
     """
-    for key, entry in _catalogue().items():
-        if key.lower() == name.strip().lower():
-            return bearing_from_mapping(entry, name=key, prefix=f"catalogue {key}.")
+    if isinstance(name, str):
+        found = _catalogue_bearing(name.strip().lower())
+        if found is not None:
+            return found
     raise InputError.for_field(field, name, "unknown; catalogue names are " + ", ".join(_catalogue()))
+
+
+@functools.cache
+def _catalogue_bearing(lowered: str) -> BearingGeometry | None:
+    # A catalogue bearing is read through the unit library once per process (a frozen dataclass, so
+    # sharing it is safe): a campaign builds a machine per sample and spent most of that time here.
+    for key, entry in _catalogue().items():
+        if key.lower() == lowered:
+            return bearing_from_mapping(entry, name=key, prefix=f"catalogue {key}.")
+    return None
 
 
 def read_toml(path: str | Path, field: str = "file") -> dict:
