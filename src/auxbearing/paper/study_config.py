@@ -6,6 +6,7 @@ title = "My auxiliary bearing study"
 ball_load = "1000 N"                      # contact study load on one ball
 contact_angles = ["10 deg", "75 deg", "1 deg"]   # start, stop, step
 groove_ratios = [0.505, 0.6, 0.0025]             # start, stop, step
+paper_comparison = false  # true: the paper's QJ202/7202 numbers beside your bearings' results
 
 [bearing]                 # the four-point bearing: a full [bearing] table, or
 catalogue = "QJ202"       # a catalogue entry
@@ -19,11 +20,16 @@ catalogue = "7202"
 The static stage always runs the paper's load grid (Fig. 6-8) and the experiment stage the shipped
 SYNTHETIC records, so a ``[static]`` or ``[experiment]`` table would be read by nothing: it is refused
 rather than ignored.
+
+A file whose ``[bearing]``, ``[comparison_bearing]``, ``[rotor]`` or ``[drop]`` differs from the paper's
+is a study of the user's own bearings (:attr:`StudyConfig.own_bearings`): its report speaks of those
+bearings only, unless ``paper_comparison = true``.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import math
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import numpy as np
@@ -40,7 +46,7 @@ UNREAD_SECTIONS = {
 }
 #: Bearing type each bearing table of a study must have (the paper compares these two kinds).
 BEARING_TYPES = {"bearing": "four_point", "comparison_bearing": "angular_contact"}
-STUDY_KEYS = ("title", "ball_load", "contact_angles", "groove_ratios")
+STUDY_KEYS = ("title", "ball_load", "contact_angles", "groove_ratios", "paper_comparison")
 DEFAULT_TITLE = "auxbearing study: four-point-contact auxiliary bearings"
 
 
@@ -56,6 +62,27 @@ class StudyConfig:
     groove_ratios: tuple[float, float, float] = (0.505, 0.6, 0.0025)
     sections: dict = field(default_factory=dict)  # raw [rotor] and [drop] tables (checked when read)
     source: str = "defaults (the paper)"
+    paper_comparison: bool = False  # the paper's numbers beside a study of the user's own bearings
+
+    @property
+    def own_bearings(self) -> bool:
+        """True when the bearings, rotor or drop differ from the paper's (a study of the user's own bearings)."""
+        from auxbearing.drop_params import DropCase, Rotor, from_mapping
+
+        base = default_config()
+        if self.bearing != base.bearing or self.comparison != base.comparison:
+            return True
+        rotor = Rotor(**from_mapping(self.sections.get("rotor"), "rotor"))
+        case = DropCase(**from_mapping(self.sections.get("drop"), "drop"))
+        return not (_same(rotor, Rotor()) and _same(case, DropCase()))
+
+    def framing(self):
+        """How the report is written: the paper's study, the user's own bearings, or those with the paper's numbers."""
+        from auxbearing.report.model import OWN_STUDY, OWN_WITH_PAPER, PAPER_STUDY
+
+        if not self.own_bearings:
+            return PAPER_STUDY
+        return OWN_WITH_PAPER if self.paper_comparison else OWN_STUDY
 
     def angle_grid(self) -> np.ndarray:
         """Contact angles of the sweep [deg] (never past the stop)."""
@@ -77,6 +104,8 @@ class StudyConfig:
             "ball_load_N": self.ball_load,
             "contact_angles_deg": list(self.contact_angles_deg),
             "groove_ratios": list(self.groove_ratios),
+            "own_bearings": self.own_bearings,
+            "paper_comparison": self.paper_comparison,
             "four_point_bearing": self.bearing.describe(),
             "angular_contact_bearing": self.comparison.describe(),
             **{name: table for name, table in self.sections.items()},
@@ -123,9 +152,21 @@ def load_study_config(path: str | Path | None, field: str = "file") -> StudyConf
         raise InputError.for_field("study.groove_ratios", study["groove_ratios"], "must start above 0.5")
     sections = {name: data[name] for name in ("rotor", "drop") if name in data}
     _check_drop_tables(sections)
+    paper_comparison = study.get("paper_comparison", False)
+    if not isinstance(paper_comparison, bool):
+        raise InputError.for_field("study.paper_comparison", paper_comparison, "must be true or false")
     return StudyConfig(bearing=bearing, comparison=comparison, title=str(study.get("title", DEFAULT_TITLE)),
                        ball_load=ball_load, contact_angles_deg=angles, groove_ratios=ratios,
-                       sections=sections, source=str(path))
+                       sections=sections, source=str(path), paper_comparison=paper_comparison)
+
+
+def _same(a: object, b: object) -> bool:
+    """Two Rotor or DropCase values alike field by field (a value read with units may differ in the last bit)."""
+    for f in fields(a):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if (x is None) != (y is None) or (x is not None and not math.isclose(x, y, rel_tol=1e-12, abs_tol=0.0)):
+            return False
+    return True
 
 
 def _check_drop_tables(sections: dict) -> None:
