@@ -400,3 +400,75 @@ def overrolling_events(position, stress, n_elements):
     value = np.empty(size)
     _visit(*args, element, ball, value, True)
     return element, ball, value
+
+
+@njit(cache=True)
+def rainflow_turning_points(x):
+    """Rainflow cycles of a history already cut to its turning points (ASTM E1049-85, 5.4.4).
+
+    The three-point rule of the standard with a stack: the newest range X is compared with the one
+    before it, Y; X >= Y closes Y as a full cycle, or as a half cycle when Y holds the history's first
+    point; what is left at the end counts as half cycles. Compiled because a coast-down's over-rolling
+    histories hold some 10^6 cycles, which the pure-Python ``rainflow`` package (the same rule; the
+    tests compare the two) counts in tens of seconds.
+
+    Parameters
+    ----------
+    x : ndarray
+        Turning points: no two neighbours equal, each interior point a peak or a valley.
+
+    Returns
+    -------
+    ranges, means, counts : ndarray
+        Per cycle: |x_a - x_b|, (x_a + x_b)/2 and 1.0 (full) or 0.5 (half).
+    start, end : ndarray of int64
+        Indices into ``x`` of the cycle's two points.
+
+    Examples
+    --------
+    >>> r, m, c, s, e = rainflow_turning_points(np.array([-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0, -2.0]))
+    >>> sorted(zip(r.tolist(), c.tolist()))[:3]
+    [(3.0, 0.5), (4.0, 0.5), (4.0, 1.0)]
+    """
+    n = x.size
+    size = max(n - 1, 0)
+    ranges = np.empty(size)
+    means = np.empty(size)
+    counts = np.empty(size)
+    start = np.empty(size, np.int64)
+    end = np.empty(size, np.int64)
+    stack = np.empty(max(n, 1), np.int64)
+    head = 0  # the stack's bottom moves up as half cycles leave it
+    top = 0
+    m = 0
+    for j in range(n):
+        stack[top] = j
+        top += 1
+        while top - head >= 3:
+            a, b, c = stack[top - 3], stack[top - 2], stack[top - 1]
+            if abs(x[c] - x[b]) < abs(x[b] - x[a]):
+                break
+            if top - head == 3:
+                first, second, weight = stack[head], stack[head + 1], 0.5
+                head += 1
+            else:
+                first, second, weight = a, b, 1.0
+                top -= 3
+                stack[top] = c
+                top += 1
+            ranges[m] = abs(x[first] - x[second])
+            means[m] = 0.5 * (x[first] + x[second])
+            counts[m] = weight
+            start[m] = first
+            end[m] = second
+            m += 1
+    while top - head > 1:
+        first, second = stack[head], stack[head + 1]
+        ranges[m] = abs(x[first] - x[second])
+        means[m] = 0.5 * (x[first] + x[second])
+        counts[m] = 0.5
+        start[m] = first
+        end[m] = second
+        m += 1
+        head += 1
+    return ranges[:m], means[:m], counts[:m], start[:m], end[:m]
