@@ -17,15 +17,16 @@ EXAMPLE = Path(__file__).parents[2] / "examples" / "my_study.toml"
 
 def test_example_config_reads():
     config = load_study_config(EXAMPLE)
-    assert config.bearing.name.startswith("QJ202 with 25")
-    assert config.comparison.name == "7202-40"
+    assert config.bearing.name == "TD15 four-point, 25 deg"
+    assert config.comparison.name == "TD15 angular contact, 40 deg"
     assert config.ball_load == pytest.approx(1000.0)
+    assert config.own_bearings and not config.paper_comparison
 
 
 @pytest.mark.parametrize(
     ("text", "message"),
     [
-        ("[stduy]\n", "stduy = '[...]': unknown section; allowed: study, bearing"),
+        ("[stduy]\n", "[stduy] = 'table': unknown section; allowed: study, bearing"),
         ("[study]\nball_lod = '1 kN'\n", "study.ball_lod = '1 kN': unknown key"),
         ("[study]\nball_load = '1 kg'\n", "study.ball_load = '1 kg': unit kilogram is not a force"),
         ("[study]\ncontact_angles = ['10 deg', '95 deg', '1 deg']\n", "study.contact_angles"),
@@ -91,7 +92,7 @@ def test_output_folder_that_cannot_be_made_is_one_line_exit_2(tmp_path):
     # A parent that is a file: the folder cannot be created; said while the options are read.
     result = CliRunner().invoke(cli, ["study", "--stage", "contact", "--out", str(blocker / "out"), "--quiet"])
     assert result.exit_code == 2
-    assert result.output.startswith(f"error: out = '{blocker / 'out'}': '{blocker}' is a file")
+    assert result.output.startswith(f"error: --out = '{blocker / 'out'}': '{blocker}' is a file")
     assert "Traceback" not in result.output
     # The target itself is a file (the CLI's option type says so first; the API says it too).
     with pytest.raises(InputError, match="exists and is not a folder"):

@@ -59,7 +59,8 @@ def _pick(summary: dict, keys=(*_KEYS, "s0", "impacts", "whirl", "first_impact_m
 
 
 def _change_percent(a: dict, b: dict) -> dict:
-    return {k: 100.0 * (b[k] / a[k] - 1.0) for k in _KEYS}
+    # a run stopped outside the model's range has no peaks (None): no change to report
+    return {k: 100.0 * (b[k] / a[k] - 1.0) if a[k] and b[k] is not None else math.nan for k in _KEYS}
 
 
 #: Swept fields of :func:`drop_compare`: DropCase field -> (sweep key, display scale, display unit).
@@ -81,6 +82,8 @@ def drop_compare(
     progress: Callable[[str, float], None] | None = None,
     sections: dict | None = None,
     phases: tuple[float, ...] = (0.0, 0.5 * math.pi, math.pi, 1.5 * math.pi),
+    paper_kb: bool = True,
+    datasets_out: dict | None = None,
 ) -> dict:
     """Four-point (QJ202) versus angular-contact (7202) drop beside the paper's Sec. II.D numbers.
 
@@ -90,7 +93,9 @@ def drop_compare(
     a 10x tighter tolerance and a 10x smaller slip regularisation. With ``out_dir`` it writes
     NetCDF time series and sweep, Fig. 10-11 style figures and ``drop_compare.json``.
     ``sections`` takes raw ``[rotor]`` / ``[drop]`` TOML tables (values with units), applied
-    over ``rotor`` / ``case``. About 15 s on one core after the first compile.
+    over ``rotor`` / ``case``. ``paper_kb=False`` leaves out the variant with the paper's K_b (a
+    study of other bearings has no use for it); ``datasets_out``, when given, receives the base
+    run's Dataset of each bearing by name. About 15 s on one core after the first compile.
 
     Returns
     -------
@@ -110,7 +115,8 @@ def drop_compare(
     jobs: list[tuple[str, str, DropCase]] = []
     for name in bearings:
         jobs.append((name, "base", base))
-        jobs.append((name, "paper_kb", replace(base, ball_constant=PAPER_BALL_CONSTANT)))
+        if paper_kb:
+            jobs.append((name, "paper_kb", replace(base, ball_constant=PAPER_BALL_CONSTANT)))
         for field, values in axes.items():
             jobs += [(name, f"{field}={v!r}", replace(base, **{field: v})) for v in values if v != getattr(base, field)]
         if checks:
@@ -128,6 +134,8 @@ def drop_compare(
             progress(f"{name} {label}", (i + 1) / len(jobs))
     result = _assemble(bearings, axes, base, summaries, checks)
     result["wall_time_s"] = time.perf_counter() - start
+    if datasets_out is not None:
+        datasets_out.update(datasets)
     if out_dir is not None:
         result["files"] = _write_compare(Path(out_dir), result, datasets, rotor, base)
     return result
@@ -140,7 +148,8 @@ def _assemble(bearings, axes, base, summaries, checks) -> dict:
     for name in bearings:
         b = summaries[(name, "base")]
         results[name] = {**b, "paper": PAPER_DROP.get(name)}
-        paper_kb[name] = _pick(summaries[(name, "paper_kb")])
+        if (name, "paper_kb") in summaries:
+            paper_kb[name] = _pick(summaries[(name, "paper_kb")])
         sweep[name] = {}
         for field, values in axes.items():
             runs = [b if v == getattr(base, field) else summaries[(name, f"{field}={v!r}")] for v in values]
@@ -153,12 +162,13 @@ def _assemble(bearings, axes, base, summaries, checks) -> dict:
     out = {
         "paper": PAPER_DROP,
         "results": results,
-        "paper_ball_constant": {"ball_constant_N_per_m1_5": PAPER_BALL_CONSTANT, **paper_kb},
         "sweep": sweep,
         "checks": conv,
         "unstated_parameters": [{"parameter": p, "ours": v, "note": n} for p, v, n in UNSTATED],
     }
-    if {"QJ202", "7202"} <= set(bearings):
+    if paper_kb:
+        out["paper_ball_constant"] = {"ball_constant_N_per_m1_5": PAPER_BALL_CONSTANT, **paper_kb}
+    if {"QJ202", "7202"} <= set(bearings) and paper_kb:
         four, ang = results["QJ202"], results["7202"]
         p4, pa = PAPER_DROP["QJ202"], PAPER_DROP["7202"]
         out["ratios"] = {

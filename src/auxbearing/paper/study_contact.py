@@ -1,4 +1,9 @@
-"""Contact stage of the study: Fig. 2-4 of the source paper, its claims and design window."""
+"""Contact stage of the study: Fig. 2-4 of the source paper, its claims and design window.
+
+In the paper's study the stage is captioned and judged with the paper's QJ202 numbers; in a study of
+the user's own bearings (:class:`~auxbearing.report.model.Framing`) it reports on those bearings only,
+and shows the paper's claims beside them only when asked to.
+"""
 
 from __future__ import annotations
 
@@ -8,10 +13,11 @@ import numpy as np
 import xarray as xr
 
 from auxbearing.bearing import BearingGeometry
-from auxbearing.contact import PAPER_CONTACT, contact_map, type_comparison
+from auxbearing.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
 from auxbearing.paper.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS, Assumption, Claim, within
 from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
-from auxbearing.report.model import Figure, Section
+from auxbearing.report.model import PAPER_STUDY, Figure, Framing, Section, retitle
+from auxbearing.statics import safety_factor, stress_warning
 
 #: Stress penalty that defines the "design window" of contact angle: the largest angle whose
 #: inner-race max stress under the same radial ball load exceeds the minimum (at the smallest
@@ -46,20 +52,196 @@ def design_window(ds: xr.Dataset, penalty: float = STRESS_PENALTY) -> dict:
     }
 
 
-def run_contact_stage(bearing: BearingGeometry, ball_load: float, angles_deg, ratios) -> Section:
-    """Compute Fig. 2-4, check the paper's Sec. II.B claims, return the report section."""
+def run_contact_stage(bearing: BearingGeometry, ball_load: float, angles_deg, ratios,
+                      comparison: BearingGeometry | None = None, framing: Framing = PAPER_STUDY) -> Section:
+    """Compute the contact sweeps (the paper's Fig. 2-4) for ``bearing`` and return the report section.
+
+    Parameters
+    ----------
+    bearing : BearingGeometry
+        The four-point bearing swept over contact angle and groove ratio.
+    ball_load : float
+        Radial load on one ball [N].
+    angles_deg, ratios : array_like
+        Contact angles [deg] and groove radius coefficients [-] of the sweep.
+    comparison : BearingGeometry, optional
+        The angular-contact bearing of the study, reported beside ``bearing`` in a study of the
+        user's own bearings.
+    framing : Framing
+        The paper's study (default: its captions and Sec. II.B claims) or the user's own.
+    """
     ds = contact_map(bearing, ball_load, angles_deg, ratios)
     comp = type_comparison(bearing, ball_load)
     window = design_window(ds)
-    fig2 = ds.sel(groove_ratio=bearing.inner_groove_ratio)
-    fig3 = ds.sel(contact_angle=math.degrees(bearing.contact_angle))
+    # nearest: the user's grid need not hold the bearing's own angle and groove ratio exactly
+    fig2 = ds.sel(groove_ratio=bearing.inner_groove_ratio, method="nearest")
+    fig3 = ds.sel(contact_angle=math.degrees(bearing.contact_angle), method="nearest")
+    own_rows, key_results, warnings = _own_results(bearing, comparison, ball_load, comp)
+    results = {"fig4": comp, "design_window": window}
+    if not framing.paper:
+        results["fig4"] = {k: v for k, v in comp.items() if not k.startswith("paper")}
+    if comparison is not None:
+        results["comparison_bearing"] = ball_contact(comparison, ball_load)
+    section = Section(
+        key="contact", title="Contact analysis (Sec. II.B, Fig. 2-4)",
+        paper="Hertz point contact of ball and raceway for the Table I bearing under a 1000 N radial ball load; "
+              "sweeps of contact angle (10-75 deg) and groove coefficient (0.505-0.6); four-point versus "
+              "angular contact.",
+        figures=_figures(ds, bearing, ball_load, framing),
+        tables=[_paper_table(comp, ball_load)] if not framing.own else [_own_table(own_rows, bearing, comparison,
+                                                                                  ball_load, comp, framing)],
+        datasets={"contact_map": ds}, results=results, key_results=key_results, warnings=warnings,
+        claims=_claims(ds, fig2, fig3, comp, window) if framing.paper else [],
+        assumptions=_paper_assumptions(ball_load) if not framing.own else _own_assumptions(bearing, comparison,
+                                                                                            ball_load, ds),
+    )
+    if framing.own:
+        section.title = f"Contact analysis: {bearing.name}" + (f" and {comparison.name}" if comparison else "")
+        section.about = (f"Hertz point contact of one ball of {bearing.name} (four-point, α = "
+                         f"{math.degrees(bearing.contact_angle):g} deg, inner groove ratio "
+                         f"{bearing.inner_groove_ratio:g}) under a {ball_load:g} N radial ball load; sweeps of the "
+                         f"contact angle ({float(ds.contact_angle[0]):g}-{float(ds.contact_angle[-1]):g} deg) and of "
+                         f"the groove radius coefficient ({float(ds.groove_ratio[0]):g}-"
+                         f"{float(ds.groove_ratio[-1]):g}); the same geometry as a four-point and as an "
+                         "angular-contact bearing" + (f"; {comparison.name} as it is." if comparison else "."))
+        if not framing.paper:
+            section.paper = ""
+    return section
+
+
+def _own_results(bearing, comparison, ball_load, comp) -> tuple[list, list, list]:
+    """Stresses of the bearings at hand: table rows, summary rows and out-of-range warnings."""
+    own = ball_contact(bearing, ball_load)
+    other = ball_contact(comparison, ball_load) if comparison is not None else None
+    as_angular = comp["angular_contact_max_stress_MPa"]
+    rows, warnings = [], []
+    for race in ("inner", "outer"):
+        rows.append([f"Hertz max stress, {race} race [MPa]", f"{own[race]['max_stress_MPa']:.0f}",
+                     f"{as_angular:.0f}" if race == "inner" else "-",
+                     f"{other[race]['max_stress_MPa']:.0f}" if other else "-"])
+    peak_own = max(own[r]["max_stress_MPa"] for r in ("inner", "outer"))
+    peak_other = max(other[r]["max_stress_MPa"] for r in ("inner", "outer")) if other else None
+    rows.append(["Static safety factor s0 of this contact (ISO 76) [-]",
+                 f"{float(safety_factor(peak_own * 1e6)):.2f}", "-",
+                 f"{float(safety_factor(peak_other * 1e6)):.2f}" if other else "-"])
+    rows.append(["Elastic approach, inner race [µm]", f"{own['inner']['approach_um']:.2f}", "-",
+                 f"{other['inner']['approach_um']:.2f}" if other else "-"])
+    for name, peak in ((bearing.name, peak_own), (comparison.name if comparison else "", peak_other)):
+        sentence = stress_warning(peak * 1e6) if peak is not None else None
+        if sentence:
+            warnings.append(f"{name} at {ball_load:g} N radial ball load: {sentence}.")
+    key_results = [[f"Hertz max contact stress at {ball_load:g} N ball load [MPa]", f"{peak_own:.0f}",
+                    f"{peak_other:.0f}" if peak_other is not None else "-"]]
+    return rows, key_results, warnings
+
+
+def _own_table(rows, bearing, comparison, ball_load, comp, framing: Framing) -> dict:
+    columns = ["", f"{bearing.name} (four-point)", f"{bearing.name} geometry as angular contact",
+               f"{comparison.name} ({comparison.type.replace('_', ' ')})" if comparison else "comparison bearing"]
+    rows = list(rows)
+    if framing.paper:
+        rows.append([f"{framing.paper_label}, theory, inner race [MPa]",
+                     f"{PAPER_CONTACT['theory_four_point_MPa']:g}", "-", "-"])
+        rows.append([f"{framing.paper_label}, finite elements [MPa]", f"{PAPER_CONTACT['fe_four_point_MPa']}",
+                     f"{PAPER_CONTACT['fe_angular_contact_MPa']}", "-"])
+    return {"columns": columns, "rows": rows,
+            "caption": f"Contact of one ball under a {ball_load:g} N radial ball load (zero clearance); "
+                       f"as a four-point bearing, {bearing.name}'s inner-race stress is "
+                       f"{comp['reduction_percent']:.1f} % below that of the same geometry in angular contact"}
+
+
+def _paper_table(comp: dict, ball_load: float) -> dict:
+    s4, sa = comp["four_point_max_stress_MPa"], comp["angular_contact_max_stress_MPa"]
+    return {
+        "columns": ["", "four-point (QJ202)", "angular contact (7202)"],
+        "rows": [
+            ["Hertz max stress, ours [MPa]", f"{s4:.1f}", f"{sa:.1f}"],
+            ["Paper, theory [MPa]", f"{PAPER_CONTACT['theory_four_point_MPa']:g}", "-"],
+            ["Paper, finite elements [MPa]", f"{PAPER_CONTACT['fe_four_point_MPa']}",
+             f"{PAPER_CONTACT['fe_angular_contact_MPa']}"],
+        ],
+        "caption": f"Fig. 4: max stress at {ball_load:g} N radial ball load",
+    }
+
+
+def _figures(ds: xr.Dataset, bearing: BearingGeometry, ball_load: float, framing: Framing) -> list[Figure]:
+    alpha, f_i = math.degrees(bearing.contact_angle), bearing.inner_groove_ratio
+    sweep_a = plot_contact_angle_sweep(ds, f_i)
+    sweep_f = plot_groove_ratio_sweep(ds, alpha)
+    cmap = plot_contact_map(ds)
+    if not framing.own:
+        return [
+            Figure("fig2_contact_angle", "Fig. 2: elastic approach (a) and max stress (b) against contact angle",
+                   sweep_a, "Approach and stress rise with the angle, faster and faster; inner stress above outer."),
+            Figure("fig3_groove_ratio", "Fig. 3: elastic approach (a) and max stress (b) against groove ratio",
+                   sweep_f, "Both rise with the groove radius coefficient, the increase slowing down."),
+            Figure("contact_map", "Beyond the paper: inner-race max stress over contact angle and groove ratio",
+                   cmap, "The dashed box is the paper's recommended window (15-45 deg, 0.51-0.52)."),
+        ]
+    f_shown = float(ds.groove_ratio.sel(groove_ratio=f_i, method="nearest"))
+    a_shown = float(ds.contact_angle.sel(contact_angle=alpha, method="nearest"))
+    load = f"{ball_load:g} N radial ball load"
+    angle_caption = f"{bearing.name}: elastic approach (a) and max stress (b) against contact angle, f = {f_shown:.3f}"
+    ratio_caption = f"{bearing.name}: elastic approach (a) and max stress (b) against groove ratio, α = {a_shown:g} deg"
+    map_caption = f"{bearing.name}: inner-race max stress over contact angle and groove ratio, {load}"
+    ax = cmap.axes[0]
+    if not framing.paper:
+        for patch in list(ax.patches):  # the paper's recommended window
+            patch.remove()
+    ax.plot([f_i], [alpha], marker="o", color="white", markeredgecolor="black", linestyle="none")
+    ax.set_title("")
+    says = {"angle": "", "ratio": "", "map": "The white dot is the bearing's own contact angle and groove ratio."}
+    if framing.paper:
+        says = {"angle": "Approach and stress rise with the angle, faster and faster; inner stress above outer.",
+                "ratio": "Both rise with the groove radius coefficient, the increase slowing down.",
+                "map": "The dashed box is the paper's recommended window (15-45 deg, 0.51-0.52); the white dot is "
+                       "this bearing."}
+    return [
+        Figure("contact_angle_sweep", angle_caption, retitle(sweep_a, f"{angle_caption}, {load}"), says["angle"]),
+        Figure("groove_ratio_sweep", ratio_caption, retitle(sweep_f, f"{ratio_caption}, {load}"), says["ratio"]),
+        Figure("contact_map", map_caption, retitle(cmap, map_caption), says["map"]),
+    ]
+
+
+def _paper_assumptions(ball_load: float) -> list[Assumption]:
+    return [
+        Assumption("Load of the contact study", f"{ball_load:g} N radial load on one ball, split Q/(2 cos α) "
+                   "per contact (four-point), Q/cos α (angular)",
+                   "docs/paper_notes.md reading of Sec. II.B; reproduces 2616 MPa within 0.3 %."),
+        Assumption("Ellipticity", "exact elliptic integrals (AGM), solved to machine precision",
+                   "The paper's a*, b* come from charts; Hamrock-Brewe fits err by up to 3.8 % in κ."),
+        Assumption("Materials", "GCr15 balls, 42CrMo rings, both E = 207 GPa, ν = 0.3", "Paper Sec. II.B."),
+    ]
+
+
+def _own_assumptions(bearing, comparison, ball_load, ds) -> list[Assumption]:
+    bearings = [b for b in (bearing, comparison) if b is not None]
+    materials = "; ".join(f"{b.name}: balls {b.describe()['ball_material']}, rings {b.describe()['ring_material']}"
+                          for b in bearings)
+    return [
+        Assumption("Contact load", f"{ball_load:g} N radial load on one ball ([study] ball_load), split "
+                   "Q/(2 cos α) over the two contacts of a four-point ball, Q/cos α on an angular-contact ball",
+                   "Both loaded contacts of a four-point ball share the radial ball load."),
+        Assumption("Ellipticity and elliptic integrals", "exact (AGM), solved to machine precision",
+                   "Closed-form fits (Hamrock-Brewe) err by up to 3.8 % in the ellipticity."),
+        Assumption("Materials", materials, "From the bearing tables."),
+        Assumption("Internal clearance in the contact comparison", "0",
+                   "A single ball under a given load; the clearance enters the load distribution, not this stage."),
+        Assumption("Sweep grid", f"{ds.sizes['contact_angle']} contact angles x {ds.sizes['groove_ratio']} groove "
+                   "ratios, both races' groove ratio set to the swept value",
+                   "[study] contact_angles and groove_ratios."),
+    ]
+
+
+def _claims(ds, fig2, fig3, comp, window) -> list[Claim]:
+    """The paper's Sec. II.B and IV contact claims, judged on the swept map."""
     s4, sa = comp["four_point_max_stress_MPa"], comp["angular_contact_max_stress_MPa"]
     inner_over_outer = bool((ds.max_stress.sel(race="inner") > ds.max_stress.sel(race="outer")).all())
     approach_gap = float(abs(fig2.approach.sel(race="inner") / fig2.approach.sel(race="outer") - 1).max())
     # slopes, not raw differences: the grids need not be uniform
     d_angle = np.diff(fig2.max_stress.sel(race="inner").values) / np.diff(ds.contact_angle.values)
     d_ratio = np.diff(fig3.max_stress.sel(race="inner").values) / np.diff(ds.groove_ratio.values)
-    claims = [
+    return [
         Claim("II.B", "Max stress of the four-point bearing at 1000 N radial ball load (theory)",
               f"{PAPER_CONTACT['theory_four_point_MPa']:g} MPa", f"{s4:.1f} MPa",
               within(s4, PAPER_CONTACT["theory_four_point_MPa"], 0.01),
@@ -107,39 +289,3 @@ def run_contact_stage(bearing: BearingGeometry, ball_load: float, angles_deg, ra
               "Stress falls monotonically toward f = 0.5, so contact stress alone says 'as small as possible'; "
               "the lower bound reflects friction and heat of close conformity, which the paper does not model."),
     ]
-    assumptions = [
-        Assumption("Load of the contact study", f"{ball_load:g} N radial load on one ball, split Q/(2 cos α) "
-                   "per contact (four-point), Q/cos α (angular)",
-                   "docs/paper_notes.md reading of Sec. II.B; reproduces 2616 MPa within 0.3 %."),
-        Assumption("Ellipticity", "exact elliptic integrals (AGM), solved to machine precision",
-                   "The paper's a*, b* come from charts; Hamrock-Brewe fits err by up to 3.8 % in κ."),
-        Assumption("Materials", "GCr15 balls, 42CrMo rings, both E = 207 GPa, ν = 0.3", "Paper Sec. II.B."),
-    ]
-    figures = [
-        Figure("fig2_contact_angle", "Fig. 2: elastic approach (a) and max stress (b) against contact angle",
-               plot_contact_angle_sweep(ds, bearing.inner_groove_ratio),
-               "Approach and stress rise with the angle, faster and faster; inner stress above outer."),
-        Figure("fig3_groove_ratio", "Fig. 3: elastic approach (a) and max stress (b) against groove ratio",
-               plot_groove_ratio_sweep(ds, math.degrees(bearing.contact_angle)),
-               "Both rise with the groove radius coefficient, the increase slowing down."),
-        Figure("contact_map", "Beyond the paper: inner-race max stress over contact angle and groove ratio",
-               plot_contact_map(ds), "The dashed box is the paper's recommended window (15-45 deg, 0.51-0.52)."),
-    ]
-    table = {
-        "columns": ["", "four-point (QJ202)", "angular contact (7202)"],
-        "rows": [
-            ["Hertz max stress, ours [MPa]", f"{s4:.1f}", f"{sa:.1f}"],
-            ["Paper, theory [MPa]", f"{PAPER_CONTACT['theory_four_point_MPa']:g}", "-"],
-            ["Paper, finite elements [MPa]", f"{PAPER_CONTACT['fe_four_point_MPa']}",
-             f"{PAPER_CONTACT['fe_angular_contact_MPa']}"],
-        ],
-        "caption": f"Fig. 4: max stress at {ball_load:g} N radial ball load",
-    }
-    return Section(
-        key="contact", title="Contact analysis (Sec. II.B, Fig. 2-4)",
-        paper="Hertz point contact of ball and raceway for the Table I bearing under a 1000 N radial ball load; "
-              "sweeps of contact angle (10-75 deg) and groove coefficient (0.505-0.6); four-point versus "
-              "angular contact.",
-        figures=figures, tables=[table], datasets={"contact_map": ds}, claims=claims, assumptions=assumptions,
-        results={"fig4": comp, "design_window": window},
-    )
