@@ -29,6 +29,7 @@ from auxbearing.errors import InputError
               help="Write coastdown.nc (the coast-down, reduced stretches marked), drop.nc, coastdown_summary.json "
                    "and the figures into this folder.")
 @click.option("--max-ball-contacts", default=MAX_BALL_CONTACTS, show_default=True, type=click.IntRange(min=1),
+              metavar="N",
               help="Budget: most ball contact pairs (balls x pairs) per touchdown plane; every step evaluates each.")
 @json_option()
 @click.option("--quiet", is_flag=True, help="No progress output.")

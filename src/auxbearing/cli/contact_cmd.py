@@ -96,7 +96,7 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
               metavar="START STOP STEP", help="Contact angles [deg] (Fig. 2: 10-75 deg).")
 @click.option("--ratio-range", nargs=3, type=float, default=(0.505, 0.6, 0.0025), show_default=True,
               metavar="START STOP STEP", help="Groove radius coefficients [-] (Fig. 3: 0.505-0.6).")
-@click.option("--max-points", default=MAX_SWEEP_POINTS, show_default=True, type=click.IntRange(min=1),
+@click.option("--max-points", default=MAX_SWEEP_POINTS, show_default=True, type=click.IntRange(min=1), metavar="N",
               help="Budget: most grid points (angles x ratios) a sweep may have.")
 @out_option("out/contact")
 @json_option()

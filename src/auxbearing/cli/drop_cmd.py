@@ -182,6 +182,7 @@ def _fmt(fmt: str, value) -> str:
 @config_option()
 @parameter_options
 @click.option("--max-ball-contacts", default=MAX_BALL_CONTACTS, show_default=True, type=click.IntRange(min=1),
+              metavar="N",
               help="Budget: most ball contact pairs (balls x pairs) per touchdown plane; every step evaluates each.")
 @click.option("--max-wall-time", default=None, metavar="TIME",
               help="Wall-time budget of the run (plain numbers in s) [default: the machine's drop.max_wall_time, "

@@ -169,7 +169,7 @@ MAX_CASES = 200_000
               metavar="FILE.csv", help="Load cases, one per row, units in the header: 'axial [N], radial [kN], "
                                        "moment [N*m]' or the 5-DOF 'axial, force_x, force_y, moment_x, moment_y'.")
 @_condition_options
-@click.option("--max-cases", default=MAX_CASES, show_default=True, type=click.IntRange(min=1),
+@click.option("--max-cases", default=MAX_CASES, show_default=True, type=click.IntRange(min=1), metavar="N",
               help="Budget: most load cases (rows) a file may hold.")
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
               callback=checked_out_dir, help="Write static_cases.nc, static_cases.csv and static_cases.json here.")
