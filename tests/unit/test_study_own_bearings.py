@@ -108,7 +108,7 @@ def test_own_study_report_has_nothing_of_the_paper(tmp_path):
 def test_own_study_leaves_out_the_experiment_on_the_papers_synthetic_drops(tmp_path):
     out = tmp_path / "out"
     results = run_study(_config(tmp_path), out, stages=["experiment"])
-    assert "SYNTHETIC drop records of a QJ202" in results["skipped_stages"]["experiment"]
+    assert "SYNTHETIC drop records made for the source paper's" in results["skipped_stages"]["experiment"]
     assert results["results"] == {}
     assert "Stage <code>experiment</code> not run" in (out / "report.html").read_text()
 

@@ -28,8 +28,9 @@ from auxbearing.report.html import render_report
 from auxbearing.report.model import Section
 
 #: Why the experiment stage is left out of a study of the user's own bearings.
-EXPERIMENT_SKIPPED = ("it runs the shipped SYNTHETIC drop records of a QJ202 and a 7202-40, not of the bearings of "
-                      "this study; analyse a measured drop of your own with `auxbearing experiment --measured FILE`")
+EXPERIMENT_SKIPPED = ("it analyses the shipped SYNTHETIC drop records made for the source paper's bearings, not "
+                      "drops of the bearings of this study; analyse a measured drop of your own with "
+                      "`auxbearing experiment --measured FILE`")
 
 
 def _contact(config: StudyConfig) -> Section:
