@@ -247,6 +247,8 @@ def _file_size_limit(limit: int):
 def test_a_full_disk_is_one_line_and_leaves_nothing(tmp_path):
     # issue: a full disk under --out was a 55-line NetCDF/HDF traceback; a file-size limit fails writes alike
     _loads_csv(tmp_path / "l.csv", 2000)
+    # the same solve once without the limit, so the compiled kernels are on disk and the limited run only loads them
+    _run(tmp_path, "static-cases --loads l.csv --json", {"l.csv": (tmp_path / "l.csv").read_text()})
     proc = _subprocess(["static-cases", "--loads", "l.csv", "--out", "o"], tmp_path,
                        preexec_fn=_file_size_limit(100_000))
     _, err = proc.communicate(timeout=300)

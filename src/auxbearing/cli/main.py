@@ -86,8 +86,8 @@ class _Group(click.Group):
                            f"{err.start}); save it as UTF-8", EXIT_USER_ERROR)
             except OSError as err:
                 # A full disk or a read-only folder is the machine's state, not a bug: one line.
-                where = f" '{err.filename}'" if err.filename else ""
-                _fail(ctx, f"file{where}: {err.strerror or err}", EXIT_USER_ERROR)
+                what = f"file '{err.filename}'" if err.filename else "a file could not be written or read"
+                _fail(ctx, f"{what}: {err.strerror or err}", EXIT_USER_ERROR)
             except MemoryError:
                 _fail(ctx, "out of memory; shorten the run or coarsen its output (drop.max_output_points)",
                       EXIT_USER_ERROR)
