@@ -131,8 +131,8 @@ class _Session:
         self.e0 = run.model.energy0
         self.window = whirl_window(machine)
         self.watch = run.watch
-        self.base_clearance = self.core.planes.clearance.copy()
-        self.base_radius = self.core.planes.journal_radius.copy()
+        self.base_clearance = np.array(self.core.planes.clearance)
+        self.base_radius = np.array(self.core.planes.journal_radius)
         self.base_internal = self.core.ballset_clearance.copy()
 
     def energy_error(self) -> float:
@@ -142,8 +142,8 @@ class _Session:
     def set_clearances(self, radial_change: np.ndarray, internal_change: np.ndarray, journal_growth: np.ndarray):
         """New clearances from thermal growth; the elastic energy this adds at the current state is work in."""
         before = sum(cm.energy(self.y, self.core))
-        planes = self.core.planes._replace(clearance=self.base_clearance + radial_change,
-                                           journal_radius=self.base_radius + journal_growth)
+        planes = self.core.planes._replace(clearance=tuple(map(float, self.base_clearance + radial_change)),
+                                           journal_radius=tuple(map(float, self.base_radius + journal_growth)))
         self.core = self.core._replace(planes=planes, ballset_clearance=self.base_internal + internal_change)
         self.y[cm.W_IN] += sum(cm.energy(self.y, self.core)) - before
 

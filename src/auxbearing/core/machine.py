@@ -105,56 +105,60 @@ class Rotor(NamedTuple):
 
 
 class Planes(NamedTuple):
-    """Touchdown-plane parameters, each an array over :data:`MAX_PLANES` (SI)."""
+    """Touchdown-plane parameters, each a tuple of :data:`MAX_PLANES` floats (SI).
 
-    active: np.ndarray  #: 1.0 for a plane in use
-    position: np.ndarray  #: axial position a of the plane from G [m]
-    clearance: np.ndarray  #: radial clearance s between journal and race bore [m]
-    journal_radius: np.ndarray  #: r [m]
-    line_stiffness: np.ndarray  #: K_l [N/m^(10/9)] (Eq. 19)
-    line_damping: np.ndarray  #: C_l [N s/m]
-    sliding_friction: np.ndarray  #: mu_1 [-]
-    rolling_friction: np.ndarray  #: mu_2 [-] (Eq. 24)
-    slip_velocity: np.ndarray  #: v_eps of the friction regularisation [m/s]
-    race_mass: np.ndarray  #: [kg]
-    race_inertia: np.ndarray  #: polar [kg m^2]
-    raceway_radius: np.ndarray  #: inner raceway radius R_i, where the balls touch the race [m]
-    ball_damping: np.ndarray  #: C_b [N s/m] (Eq. 23), on the race velocity relative to the ring
-    race_axial_free: np.ndarray  #: 1.0 when the race moves axially (the plane catches axially)
-    ring_free: np.ndarray  #: 1.0 when the outer ring sits in a compliant mount
-    ring_mass: np.ndarray  #: mass moving with the outer ring in the mount [kg]
-    mount_stiffness: np.ndarray  #: [N/m]
-    mount_damping: np.ndarray  #: [N s/m]
-    mount_deadband: np.ndarray  #: radial travel before the mount spring engages [m]
-    stop_gap: np.ndarray  #: radial travel to the hard stop [m] (inf: none)
-    stop_stiffness: np.ndarray  #: [N/m]
-    stop_damping: np.ndarray  #: [N s/m]
-    centre_x: np.ndarray  #: bearing centre (misalignment) [m]
-    centre_y: np.ndarray
-    axial_clearance: np.ndarray  #: collar-to-race-face clearance [m] (inf: no axial touchdown)
-    face_plus: np.ndarray  #: 1.0 when the rotor can push the race towards +z
-    face_minus: np.ndarray  #: 1.0 when the rotor can push the race towards -z
-    face_stiffness: np.ndarray  #: [N/m]
-    face_damping: np.ndarray  #: [N s/m]
-    face_friction: np.ndarray  #: [-]
-    face_radius: np.ndarray  #: mean radius of the contact annulus on the race face [m]
-    pitch_diameter: np.ndarray  #: d_m of the bearing [m]
-    lubricant_viscosity: np.ndarray  #: kinematic viscosity of the bearing's oil [m^2/s]
-    viscous_factor: np.ndarray  #: Palmgren's f_0 of the bearing's load-free torque [-] (0: none)
+    Tuples, not arrays: compiled code passes them by value, while each array of a struct costs a
+    reference-count update wherever the struct is used (34 of them made half the right-hand side).
+    """
+
+    active: tuple  #: 1.0 for a plane in use
+    position: tuple  #: axial position a of the plane from G [m]
+    clearance: tuple  #: radial clearance s between journal and race bore [m]
+    journal_radius: tuple  #: r [m]
+    line_stiffness: tuple  #: K_l [N/m^(10/9)] (Eq. 19)
+    line_damping: tuple  #: C_l [N s/m]
+    sliding_friction: tuple  #: mu_1 [-]
+    rolling_friction: tuple  #: mu_2 [-] (Eq. 24)
+    slip_velocity: tuple  #: v_eps of the friction regularisation [m/s]
+    race_mass: tuple  #: [kg]
+    race_inertia: tuple  #: polar [kg m^2]
+    raceway_radius: tuple  #: inner raceway radius R_i, where the balls touch the race [m]
+    ball_damping: tuple  #: C_b [N s/m] (Eq. 23), on the race velocity relative to the ring
+    race_axial_free: tuple  #: 1.0 when the race moves axially (the plane catches axially)
+    ring_free: tuple  #: 1.0 when the outer ring sits in a compliant mount
+    ring_mass: tuple  #: mass moving with the outer ring in the mount [kg]
+    mount_stiffness: tuple  #: [N/m]
+    mount_damping: tuple  #: [N s/m]
+    mount_deadband: tuple  #: radial travel before the mount spring engages [m]
+    stop_gap: tuple  #: radial travel to the hard stop [m] (inf: none)
+    stop_stiffness: tuple  #: [N/m]
+    stop_damping: tuple  #: [N s/m]
+    centre_x: tuple  #: bearing centre (misalignment) [m]
+    centre_y: tuple
+    axial_clearance: tuple  #: collar-to-race-face clearance [m] (inf: no axial touchdown)
+    face_plus: tuple  #: 1.0 when the rotor can push the race towards +z
+    face_minus: tuple  #: 1.0 when the rotor can push the race towards -z
+    face_stiffness: tuple  #: [N/m]
+    face_damping: tuple  #: [N s/m]
+    face_friction: tuple  #: [-]
+    face_radius: tuple  #: mean radius of the contact annulus on the race face [m]
+    pitch_diameter: tuple  #: d_m of the bearing [m]
+    lubricant_viscosity: tuple  #: kinematic viscosity of the bearing's oil [m^2/s]
+    viscous_factor: tuple  #: Palmgren's f_0 of the bearing's load-free torque [-] (0: none)
 
 
 class Limits(NamedTuple):
-    """Range limits of the model (:mod:`auxbearing.core.watch` stops a run that crosses one), SI."""
+    """Range limits of the model (:mod:`auxbearing.core.watch` stops a run that crosses one), SI; (2,) are tuples."""
 
-    line_force_per_length: np.ndarray  #: (2,) journal/race contact force per unit length [N/m]
-    line_length: np.ndarray  #: (2,) contact length of the journal on the race [m]
+    line_force_per_length: tuple  #: (2,) journal/race contact force per unit length [N/m]
+    line_length: tuple  #: (2,) contact length of the journal on the race [m]
     ball_stress: float  #: largest Hertz stress the elastic ball contact may mean [Pa]
-    shoulder_angle_inner: np.ndarray  #: (2,) groove arc from the bottom to the shoulder [rad]
-    shoulder_angle_outer: np.ndarray  #: (2,)
-    groove_radius_inner: np.ndarray  #: (2,) f_i D [m]
-    groove_radius_outer: np.ndarray  #: (2,)
-    mount_travel: np.ndarray  #: (2,) largest radial travel of the outer ring [m]
-    race_axial_travel: np.ndarray  #: (2,) largest axial travel of the race [m]
+    shoulder_angle_inner: tuple  #: (2,) groove arc from the bottom to the shoulder [rad]
+    shoulder_angle_outer: tuple  #: (2,)
+    groove_radius_inner: tuple  #: (2,) f_i D [m]
+    groove_radius_outer: tuple  #: (2,)
+    mount_travel: tuple  #: (2,) largest radial travel of the outer ring [m]
+    race_axial_travel: tuple  #: (2,) largest axial travel of the race [m]
     energy_tolerance: float  #: energy gain, relative to the energy brought in, that counts as a run-away
 
 

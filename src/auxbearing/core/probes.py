@@ -36,11 +36,19 @@ from auxbearing.core.machine import (
 @njit(cache=True)
 def plane_diagnostics(y, m, k):
     """:data:`~auxbearing.core.machine.DIAG_FIELDS` of plane k at state ``y``."""
-    out = np.zeros(y.size)
-    q = np.zeros(6)
     diag = np.empty(len(DIAG_FIELDS))
-    plane_forces_once(k, y, m, rotor_kinematics(y, m.rotor), q, out, diag)
+    _diagnostics_into(y, m, k, np.zeros(y.size), np.zeros(6), diag)
     return diag
+
+
+@njit(cache=True, inline="always")
+def _diagnostics_into(y, m, k, out, q, diag):
+    """:func:`plane_diagnostics` into ``diag``, with ``out`` (n,) and ``q`` (6,) as working memory."""
+    for i in range(out.size):
+        out[i] = 0.0
+    for i in range(q.size):
+        q[i] = 0.0
+    plane_forces_once(k, y, m, rotor_kinematics(y, m.rotor), q, out, diag)
 
 
 @njit(cache=True)
@@ -103,11 +111,15 @@ def series(grid, m, with_stress):
     """
     n = grid.shape[0]
     out = np.zeros((n, MAX_PLANES, len(DIAG_FIELDS) + 1))
+    work = np.zeros(grid.shape[1])
+    q = np.zeros(6)
+    diag = np.zeros(len(DIAG_FIELDS))
     for i in range(n):
         for k in range(MAX_PLANES):
             if m.planes.active[k] <= 0.0:
                 continue
-            out[i, k, :len(DIAG_FIELDS)] = plane_diagnostics(grid[i], m, k)
+            _diagnostics_into(grid[i], m, k, work, q, diag)
+            out[i, k, :len(DIAG_FIELDS)] = diag
             if with_stress:
                 out[i, k, len(DIAG_FIELDS)] = ball_extremes(grid[i], m, k)[0]
     return out
