@@ -125,8 +125,10 @@ def drop_compare(
     summaries: dict[tuple[str, str], dict] = {}
     datasets: dict[str, xr.Dataset] = {}
     start = time.perf_counter()
+    # a clearance variant keeps the race bore: the journal radius follows it (r = bore/2 - s)
+    swept_rotor = replace(rotor, radius=None)
     for i, (name, label, c) in enumerate(jobs):
-        ds, summary = run_drop(geometry[name], rotor, c)
+        ds, summary = run_drop(geometry[name], swept_rotor if label.startswith("clearance=") else rotor, c)
         summaries[(name, label)] = summary
         if label == "base":
             datasets[name] = ds

@@ -255,6 +255,9 @@ def _own_assumptions(sections, r4, ra, four_point, angular) -> list[Assumption]:
         Assumption("Rolling-resistance arm", "inner raceway radius (dm - D)/2", "Model choice."),
         Assumption("Ball-set damping", "isotropic on the race velocity", "Model choice."),
         Assumption("Integration", "DOPRI5, adaptive, tolerances as above", "Checked by 10x tighter tolerances."),
+        Assumption("Clearance sweep", f"{', '.join(f'{k:g}' for k in OWN_CLEARANCE_FACTORS)} x the clearance; the "
+                   "journal radius follows (r = bore/2 - s)", "The race bore is the bearing's; the journal is what "
+                   "one would change."),
     ]
     return rows
 
