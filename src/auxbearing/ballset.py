@@ -127,11 +127,12 @@ class BallSetState(NamedTuple):
     contact_angle: np.ndarray  #: loaded contact angle [rad], (..., Z, P)
     stress_inner: np.ndarray  #: Hertz max stress at the inner race [Pa], (..., Z, P)
     stress_outer: np.ndarray  #: Hertz max stress at the outer race [Pa], (..., Z, P)
-    force: np.ndarray  #: (Fa, Fx, Fy, Mx, My) ON the inner ring [N, N m], (..., 5)
-    jacobian: np.ndarray  #: d force / d displacement, (..., 5, 5)
+    force: np.ndarray | None  #: (Fa, Fx, Fy, Mx, My) ON the inner ring [N, N m], (..., 5); None unless asked
+    jacobian: np.ndarray | None  #: d force / d displacement, (..., 5, 5); None unless asked
 
 
-def ballset_state(displacement, params: BallSet, clearance: float | None = None) -> BallSetState:
+def ballset_state(displacement, params: BallSet, clearance: float | None = None,
+                  resultant: bool = True) -> BallSetState:
     """Ball-set model over many 5-DOF displacement states (source paper Eq. 10-16).
 
     Parameters
@@ -142,6 +143,8 @@ def ballset_state(displacement, params: BallSet, clearance: float | None = None)
         :func:`ballset_params`.
     clearance : float, optional
         Diametral clearance [m]; default the bearing's.
+    resultant : bool
+        Also the resultant on the inner ring and its Jacobian (``force``, ``jac``); False leaves them None.
 
     Examples
     --------
@@ -155,12 +158,13 @@ def ballset_state(displacement, params: BallSet, clearance: float | None = None)
     flat = np.ascontiguousarray(u.reshape(-1, 5))
     n, z, p = flat.shape[0], params.cos_azimuth.size, params.signs.size
     per_pair = [np.empty((n, z, p)) for _ in range(6)]
-    force = np.empty((n, 5))
-    jac = np.empty((n, 5, 5))
+    force = np.empty((n if resultant else 0, 5))
+    jac = np.empty((n if resultant else 0, 5, 5))
     pd = params.clearance if clearance is None else float(clearance)
     load, angle, compression, distance, s_i, s_o = per_pair
-    kernel.pair_states(flat, params, pd, load, angle, compression, distance, s_i, s_o, force, jac)
+    kernel.pair_states(flat, params, pd, load, angle, compression, distance, s_i, s_o, force, jac, resultant)
     shape = (*lead, z, p)
     return BallSetState(distance.reshape(shape), compression.reshape(shape), load.reshape(shape),
                         angle.reshape(shape), s_i.reshape(shape), s_o.reshape(shape),
-                        force.reshape(*lead, 5), jac.reshape(*lead, 5, 5))
+                        force.reshape(*lead, 5) if resultant else None,
+                        jac.reshape(*lead, 5, 5) if resultant else None)

@@ -286,7 +286,7 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
             disp[:, 0] = grid[:, b + cm.RZ]
         disp[:, 1] = grid[:, b + cm.RX] - grid[:, b + cm.OX]
         disp[:, 2] = grid[:, b + cm.RY] - grid[:, b + cm.OY]
-        states[k] = ballset_state(disp, bs, model.machine.ballset_clearance[k])
+        states[k] = ballset_state(disp, bs, model.machine.ballset_clearance[k], resultant=False)
     diag = probes.series(grid, model.machine, not lean and len(states) < n_planes)[:, :n_planes]
     for i, name in enumerate(cm.DIAG_FIELDS):
         unit, long_name = _DIAG_SERIES[name]

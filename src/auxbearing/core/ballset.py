@@ -264,12 +264,14 @@ def accumulate(disp, bs, pd, force, jac, with_jac, with_stress):
 
 
 @njit(cache=True)
-def pair_states(disp, bs, pd, load, angle, compression, distance, stress_inner, stress_outer, force, jac):
+def pair_states(disp, bs, pd, load, angle, compression, distance, stress_inner, stress_outer, force, jac,
+                with_resultant=True):
     """Per-ball, per-pair state over many displacements: the array face of :func:`pair`.
 
     ``disp`` is (n, 5); the per-pair outputs are (n, Z, P), ``force`` (n, 5), ``jac`` (n, 5, 5),
-    all overwritten. Every number comes from :func:`pair`, :func:`pair_stress` and
-    :func:`accumulate`, so the arrays agree with the solvers to the last bit.
+    all overwritten (``force`` and ``jac`` only ``with_resultant``: the Jacobian is most of the cost).
+    Every number comes from :func:`pair`, :func:`pair_stress` and :func:`accumulate`, so the arrays
+    agree with the solvers to the last bit.
     """
     ric = bs.moment_arm
     for i in range(disp.shape[0]):
@@ -284,6 +286,7 @@ def pair_states(disp, bs, pd, load, angle, compression, distance, stress_inner, 
                 compression[i, j, k] = delta
                 distance[i, j, k] = s_len
                 stress_inner[i, j, k], stress_outer[i, j, k] = pair_stress(q, alpha, bs)
-        force[i, :] = 0.0
-        jac[i, :, :] = 0.0
-        accumulate(u, bs, pd, force[i], jac[i], True, False)
+        if with_resultant:
+            force[i, :] = 0.0
+            jac[i, :, :] = 0.0
+            accumulate(u, bs, pd, force[i], jac[i], True, False)
