@@ -8,6 +8,7 @@ import html
 import json
 import re
 from dataclasses import replace
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -42,6 +43,17 @@ speed = "12000 rpm"
 clearance = "0.25 mm"
 duration = "{duration}"
 """
+
+
+@pytest.fixture
+def no_figure_files(monkeypatch):
+    """Figure files as empty placeholders: the quick tests read the report, whose figures are embedded anyway."""
+    import auxbearing.paper.study as study
+
+    def touch(fig, stem, formats=("png",)):
+        return [Path(f"{stem}.{fmt}").touch() for fmt in formats]
+
+    monkeypatch.setattr(study, "save_figure", touch)
 
 
 def _config(tmp_path, extra: str = "", duration: str = "20 ms"):
@@ -88,7 +100,7 @@ def test_paper_comparison_must_be_a_boolean(tmp_path):
         load_study_config(path)
 
 
-def test_own_study_report_has_nothing_of_the_paper(tmp_path):
+def test_own_study_report_has_nothing_of_the_paper(tmp_path, no_figure_files):
     out = tmp_path / "out"
     results = run_study(_config(tmp_path), out, stages=["contact", "static"])
     text = _text(out)
@@ -105,7 +117,7 @@ def test_own_study_report_has_nothing_of_the_paper(tmp_path):
     assert not [p.name for p in out.iterdir() if p.name.startswith("fig")]
 
 
-def test_own_study_leaves_out_the_experiment_on_the_papers_synthetic_drops(tmp_path):
+def test_own_study_leaves_out_the_experiment_on_the_papers_synthetic_drops(tmp_path, no_figure_files):
     out = tmp_path / "out"
     results = run_study(_config(tmp_path), out, stages=["experiment"])
     assert "SYNTHETIC drop records made for the source paper's" in results["skipped_stages"]["experiment"]
@@ -113,7 +125,7 @@ def test_own_study_leaves_out_the_experiment_on_the_papers_synthetic_drops(tmp_p
     assert "Stage <code>experiment</code> not run" in (out / "report.html").read_text()
 
 
-def test_paper_comparison_sets_the_papers_claims_beside_labelled(tmp_path):
+def test_paper_comparison_sets_the_papers_claims_beside_labelled(tmp_path, no_figure_files):
     out = tmp_path / "out"
     results = run_study(_config(tmp_path, extra="paper_comparison = true"), out, stages=["contact", "static"])
     text = _text(out)
@@ -125,7 +137,7 @@ def test_paper_comparison_sets_the_papers_claims_beside_labelled(tmp_path):
     assert "Paper (its QJ202/7202), theory, inner race [MPa]" in text
 
 
-def test_paper_comparison_flag_on_the_command_line(tmp_path):
+def test_paper_comparison_flag_on_the_command_line(tmp_path, no_figure_files):
     path = tmp_path / "own.toml"
     path.write_text(OWN.format(extra="", duration="20 ms"))
     args = ["study", "--config", str(path), "--stage", "contact", "--quiet", "--json"]
@@ -136,7 +148,7 @@ def test_paper_comparison_flag_on_the_command_line(tmp_path):
     assert json.loads(asked.output)["claims_total"] == 9
 
 
-def test_stress_beyond_iso76_is_a_warning_box_at_the_top(tmp_path):
+def test_stress_beyond_iso76_is_a_warning_box_at_the_top(tmp_path, no_figure_files):
     out = tmp_path / "out"
     config = replace(_config(tmp_path), ball_load=40000.0)
     results = run_study(config, out, stages=["contact"])
@@ -147,7 +159,7 @@ def test_stress_beyond_iso76_is_a_warning_box_at_the_top(tmp_path):
     assert any("7208 at 40000 N" in w for w in results["warnings"])
 
 
-def test_paper_study_has_no_warning_box_for_its_contact_stage(tmp_path):
+def test_paper_study_has_no_warning_box_for_its_contact_stage(tmp_path, no_figure_files):
     out = tmp_path / "out"
     run_study(replace(default_config(), contact_angles_deg=(10.0, 70.0, 10.0), groove_ratios=(0.505, 0.6, 0.015)),
               out, stages=["contact"])
@@ -171,8 +183,6 @@ def test_own_study_with_the_drop_names_the_users_rotor_and_nothing_of_the_paper(
 
 @pytest.mark.slow
 def test_own_study_of_the_example_file_has_no_paper_caption(tmp_path):
-    from pathlib import Path
-
     example = Path(__file__).parents[2] / "examples" / "my_study.toml"
     config = replace(load_study_config(example), contact_angles_deg=(10.0, 70.0, 10.0),
                      groove_ratios=(0.505, 0.6, 0.015))
