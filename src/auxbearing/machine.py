@@ -574,7 +574,7 @@ def _bearing(spec: str, path: Path, where: str) -> BearingGeometry:
     from auxbearing.bearing import get_bearing
 
     if spec.lower().endswith(".toml") or path.is_file():
-        table = read_toml(path)
+        table = read_toml(path, where + "bearing")
         if "bearing" not in table:
             raise InputError.for_field(where + "bearing", spec, "this file has no [bearing] table")
         return bearing_from_mapping(table["bearing"], name=path.stem)
@@ -607,7 +607,7 @@ def machine_table(spec: str | Path) -> tuple[dict, str, Path | None]:
     if not path.is_file():
         raise InputError.for_field("machine", text, "neither a file nor a catalogue machine ("
                                    + ", ".join(machine_names()) + ")")
-    return read_toml(path), path.stem, path.parent
+    return read_toml(path, "--machine"), path.stem, path.parent
 
 
 def read_machine(spec: str | Path) -> Machine:

@@ -319,10 +319,7 @@ def test_ids_are_unique():
 
 #: Cases that fail in modules this suite's author may not change, with where the fix belongs (strict: once the
 #: module is fixed the mark must go).
-KNOWN = {
-    "verify-candidates-unknown": "verify_cmd.py names the candidate 'candidate ...: touchdown.0.bearing', "
-                                 "not --candidates",
-}
+KNOWN: dict[str, str] = {}
 
 
 @pytest.mark.parametrize("c", [pytest.param(c, marks=pytest.mark.xfail(reason=KNOWN[c.id], strict=True))

@@ -45,6 +45,7 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
             bearing, label = str(spec).strip(), str(spec).strip()
             if not bearing:
                 raise InputError.for_field("--candidates", spec, "an empty name in the list")
+            _check_bearing_name(bearing, "--candidates")
         tables = copy.deepcopy(data)
         for plane in tables["touchdown"]:
             plane["bearing"] = bearing
@@ -52,6 +53,16 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
                 plane.pop(derived, None)  # follow the new bearing
         out.append((label, tables))
     return out
+
+
+def _check_bearing_name(spec: str, field: str) -> None:
+    """Refuse a candidate that is neither a catalogue bearing nor a bearing TOML file, naming ``field``."""
+    from auxbearing.bearing import bearing_names
+
+    if spec.lower() in (n.lower() for n in bearing_names()) or spec.lower().endswith(".toml") or Path(spec).is_file():
+        return
+    raise InputError.for_field(field, spec, "neither a catalogue bearing (" + ", ".join(bearing_names())
+                               + ") nor a bearing TOML file")
 
 
 def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
