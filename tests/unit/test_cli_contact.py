@@ -50,17 +50,21 @@ def test_toml_bearing_and_readable_table():
     ("args", "message"),
     [
         (["--ball-load", "6 kg"], "error: --ball-load = '6 kg': unit kilogram is not a force"),
-        (["--ball-load", "-5"], "error: ball_load = -5.0: must be >= 0 N"),
-        (["--bearing", "nope"], "error: bearing = 'nope': unknown"),
-        (["--groove-ratio", "0.4"], "error: inner_groove_ratio = 0.4: must be > 0.5"),
-        (["--contact-angle", "95"], "error: contact_angle = 95.0: must lie in [0, 90) deg"),
+        (["--ball-load", "-5"], "error: --ball-load = '-5': must be >= 0 N"),
+        (["--ball-load", "-5 kN"], "error: --ball-load = '-5 kN': must be >= 0 N"),
+        (["--bearing", "nope"], "error: --bearing = 'nope': unknown; catalogue names are QJ202"),
+        (["--groove-ratio", "0.4"],
+         "error: --groove-ratio = '0.4': must be > 0.5 (groove radius larger than ball radius) (bearing QJ202)"),
+        (["--contact-angle", "95"], "error: --contact-angle = '95': must lie in [0, 90) deg (bearing QJ202)"),
+        (["--contact-angle", "95 deg"], "error: --contact-angle = '95 deg': must lie in [0, 90) deg (bearing QJ202)"),
     ],
 )
 def test_user_mistakes_print_one_line_and_exit_2(args, message):
     result = run("contact", *args)
     assert result.exit_code == 2
-    assert result.output.strip().startswith(message)
-    assert len(result.output.strip().splitlines()) == 1
+    assert result.stdout == ""
+    assert result.stderr.strip().startswith(message), result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
     assert "Traceback" not in result.output
 
 
@@ -101,8 +105,13 @@ def test_bad_sweep_range_leaves_no_output(tmp_path):
 
 
 def test_stress_above_iso76_warns_on_stderr_only():
+    # 5 kN on a QJ202 ball: both ellipses reach past the groove shoulder, then the stress passes ISO 76.
     result = CliRunner().invoke(cli, ["contact", "--bearing", "QJ202", "--ball-load", "5 kN", "--json"])
     assert result.exit_code == 0
     assert json.loads(result.stdout)["inner"]["max_stress_MPa"] > 4200
-    assert result.stderr.startswith("warning: max contact stress") and "ISO 76" in result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 3, result.stderr
+    for line, race in zip(lines[:2], ("inner", "outer"), strict=True):
+        assert line.startswith(f"warning: --ball-load 5 kN: the {race} contact ellipse runs over the groove shoulder")
+    assert lines[2].startswith("warning: max contact stress") and "ISO 76" in lines[2]
     assert CliRunner().invoke(cli, ["contact", "--ball-load", "1 kN", "--json"]).stderr == ""

@@ -48,18 +48,21 @@ def test_drop_out_writes_netcdf_figures_and_summary(tmp_path):
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (["--friction", "1.5"], "--friction = 1.5: must lie in [0, 1]"),
-    (["--clearance", "-1mm"], "--clearance = '-1 mm': must be > 0"),
-    (["--clearance", "2kg"], "--clearance = '2kg': unit kilogram is not a length"),
-    (["--rotor-radius", "7.4mm"], "must equal the race bore radius 7.5 mm"),
-    (["--rotor-mass", "0"], "--rotor-mass = '0 kg': must be > 0"),
-    (["--bearing", "QJ999"], "bearing = 'QJ999': unknown"),
+    (["--friction", "1.5"], ("error: --friction = '1.5': must lie in [0, 1]",)),
+    (["--clearance", "-1mm"], ("error: --clearance = '-1mm': must be > 0",)),
+    (["--clearance", "2kg"], ("error: --clearance = '2kg': unit kilogram is not a length",)),
+    (["--rotor-radius", "7.4mm"], ("error: --rotor-radius = '7.4mm': ", "must equal the race bore radius 7.5 mm")),
+    (["--rotor-mass", "0"], ("error: --rotor-mass = '0': must be > 0",)),
+    (["--bearing", "QJ999"], ("error: --bearing = 'QJ999': unknown; catalogue names are QJ202",)),
 ])
-def test_user_errors_are_one_line_and_exit_2(args, message):
-    r = CliRunner().invoke(cli, ["drop", "--quiet", *args])
+def test_user_errors_are_one_line_and_exit_2(tmp_path, args, message):
+    out = tmp_path / "run"
+    r = CliRunner().invoke(cli, ["drop", "--quiet", "--out", str(out), *args])
     assert r.exit_code == 2
-    lines = [ln for ln in r.output.splitlines() if ln.strip()]
-    assert len(lines) == 1 and message in lines[0], r.output
+    assert r.stdout == "" and not out.exists()
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith(message[0]), r.stderr
+    assert all(part in lines[0] for part in message[1:]), r.stderr
 
 
 def test_config_file_and_options_override_it(tmp_path):
@@ -71,7 +74,8 @@ def test_config_file_and_options_override_it(tmp_path):
     assert b["clearance_mm"] == pytest.approx(0.15)
     cfg.write_text('[drop]\nsliding_friction = 2\n')
     r = CliRunner().invoke(cli, ["drop", "--config", str(cfg), "--quiet"])
-    assert r.exit_code == 2 and "drop.sliding_friction = 2.0: must lie in [0, 1]" in r.output
+    assert r.exit_code == 2 and r.stdout == ""
+    assert r.stderr == "error: drop.sliding_friction = 2: must lie in [0, 1]\n"
 
 
 @pytest.mark.slow
@@ -93,9 +97,11 @@ def test_drop_compare_writes_the_comparison(tmp_path):
     assert saved["unstated_parameters"] and "provenance" in saved
 
 
-def test_drop_compare_rejects_bad_sweep_values():
-    r = CliRunner().invoke(cli, ["drop-compare", "--quiet", "--frictions", "0.1,2"])
-    assert r.exit_code == 2 and "--frictions = 2.0: must lie in [0, 1]" in r.output
+def test_drop_compare_rejects_bad_sweep_values(tmp_path):
+    out = tmp_path / "cmp"
+    r = CliRunner().invoke(cli, ["drop-compare", "--quiet", "--out", str(out), "--frictions", "0.1,2"])
+    assert r.exit_code == 2 and r.stdout == "" and not out.exists()
+    assert r.stderr == "error: --frictions = '0.1,2': must lie in [0, 1]\n"
 
 
 def test_help_lists_every_parameter_with_default_and_unit():

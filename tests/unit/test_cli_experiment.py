@@ -77,7 +77,7 @@ def test_short_synthetic_drop_with_fit_and_table(tmp_path):
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (("--measured", "nope.csv"), "measured file = 'nope.csv': not found"),
+    (("--measured", "nope.csv"), "error: --measured = 'nope.csv': not found"),
     (("--offset", "left"), "--offset = 'left'"),
     (("--cutoff", "8 kg"), "--cutoff = '8 kg'"),
     (("--unit", "x"), "--unit = 'x'"),
@@ -88,7 +88,9 @@ def test_user_mistakes_are_one_line(tmp_path, args, message):
     base = ["experiment", "--measured", str(path), "--no-fit", "--out", str(tmp_path / "o")]
     result = run(*base, *args)
     assert result.exit_code == 2
-    assert message in result.output
+    assert result.stdout == "" and not (tmp_path / "o").exists()
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert message in result.stderr
     assert "Traceback" not in result.output
 
 
