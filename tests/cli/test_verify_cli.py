@@ -1,7 +1,7 @@
 """auxbearing verify (issue 15): a machine file in, criteria, margins, candidates, a recommendation out.
 
-One quick verification of the blower with every criterion given (air gap, seal) and a candidate in the
-same seats is run once for the module; the undersized design is the heavy fast rotor of issue 12,
+One quick verification of the blower (its file gives every criterion's input: air gap, seal) with a
+candidate in the same seats is run once for the module; the undersized design is the heavy fast rotor of issue 12,
 whose drop at the maximum speed overloads the touchdown contact.
 """
 
@@ -15,17 +15,6 @@ from click.testing import CliRunner
 from auxbearing.cli.main import cli
 from tests.browser import needs_chromium, probe_report
 
-CRITERIA_AND_CANDIDATE = """
-[criteria]
-min_s0 = 1.5
-amb_air_gap = "0.5 mm"
-seal_clearance = "0.4 mm"
-
-[[candidate]]
-name = "angular contact 7208"
-bearing = "7208"
-"""
-
 
 def _run(*args):
     return CliRunner().invoke(cli, [str(a) for a in args])
@@ -33,12 +22,10 @@ def _run(*args):
 
 @pytest.fixture(scope="module")
 def blower_verified(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("verify")
-    text = resources.files("auxbearing.catalog").joinpath("machines/blower.toml").read_text()
-    machine = folder / "blower.toml"
-    machine.write_text(text + CRITERIA_AND_CANDIDATE)
-    out = folder / "report"
-    result = _run("verify", "--machine", machine, "--out", out, "--quick", "--campaign-samples", 4, "--quiet")
+    # the blower's file gives every criterion's input (air gap, seal); one candidate from the command line
+    out = tmp_path_factory.mktemp("verify") / "report"
+    result = _run("verify", "--machine", "blower", "--out", out, "--quick", "--campaign-samples", 4,
+                  "--candidates", "7208", "--quiet")
     assert result.exit_code == 0, result.output
     return out, result.output
 
@@ -61,7 +48,7 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
     # every input given, so every criterion is checked
     assert all(c["pass"] is not None for c in data["criteria"])
     assert data["verdict"] == ("pass" if all(c["pass"] for c in data["criteria"]) else "fail")
-    assert [c["bearing"] for c in data["candidates"]] == ["angular contact 7208"]
+    assert [c["bearing"] for c in data["candidates"]] == ["7208"]
     assert len(data["ranking"]) == 2
     rec = data["recommendation"]
     assert rec["worst_margin"] >= rec["as_is"] - 1e-12  # the search keeps the design if nothing beats it
@@ -119,7 +106,8 @@ def test_undersized_design_fails_on_the_model_range_with_the_reason_on_top(tmp_p
 def test_bad_criteria_key_is_one_line_and_nothing_is_written(tmp_path):
     machine = tmp_path / "m.toml"
     text = resources.files("auxbearing.catalog").joinpath("machines/blower.toml").read_text()
-    machine.write_text(text + '\n[criteria]\nmin_so = 2\n')
+    assert "\nmin_s0 = " in text
+    machine.write_text(text.replace("\nmin_s0 = ", "\nmin_so = "))
     out = tmp_path / "report"
     result = _run("verify", "--machine", machine, "--out", out, "--quick")
     assert result.exit_code == 2
