@@ -327,10 +327,11 @@ def solve_loads(
         if np.any(needs):
             i = int(np.flatnonzero(needs)[0])
             raise InputError.for_field(
-                "axial" + where[i], float(loads[i, 0]),
+                "axial" + where[i], f"{float(loads[i, 0]):g} N",
                 f"a single {bearing.label} bearing with a free ring needs an axial load > 0 N pressing the balls "
                 "into their contact side to carry a radial load or moment; give one, or hold the ring "
-                "axially (axial_condition 'located', --axial-condition located) to get the axial reaction",
+                "axially (axial_condition='located'; on the command line --axial-condition located) to get the "
+                "axial reaction",
             )
     try:
         sol = solve_cases(loads, params, free=free, tol=tol)

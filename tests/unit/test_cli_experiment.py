@@ -79,7 +79,7 @@ def test_short_synthetic_drop_with_fit_and_table(tmp_path):
 @pytest.mark.parametrize(("args", "message"), [
     (("--measured", "nope.csv"), "error: --measured = 'nope.csv': not found"),
     (("--offset", "left"), "--offset = 'left'"),
-    (("--cutoff", "8 kg"), "--cutoff = '8 kg'"),
+    (("--cutoff", "8 kg"), "--cutoff = '8 kg': unit kilogram is not a frequency"),
     (("--unit", "x"), "--unit = 'x'"),
     (("--bearing", "QJ999"), "bearing = 'QJ999'"),
 ])

@@ -64,9 +64,9 @@ def test_angular_contact_located_reports_reaction():
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        # --axial not typed: only the option and the rule are pinned (its value is shown as a float, see below)
+        # --axial not typed: its default, 0 N, is named with its unit
         (["--bearing", "7202", "--radial", "1000"],
-         ("error: --axial = ", "a single angular contact bearing with a free ring needs an axial load > 0 N",
+         ("error: --axial = '0 N': a single angular contact bearing with a free ring needs an axial load > 0 N",
           "--axial-condition located")),
         (["--radial", "5 kg"], ("error: --radial = '5 kg': unit kilogram is not a force",)),
         (["--moment", "3 N"], ("error: --moment = '3 N': unit newton is not a moment",)),

@@ -105,8 +105,8 @@ def test_safety_factor_follows_stress_cubed():
 @pytest.mark.parametrize(
     ("kwargs", "message"),
     [
-        ({"radial": 1000}, "axial = 0.0: a single angular contact bearing with a free ring needs an axial load"),
-        ({"radial": 1000, "axial": -100}, "axial = -100.0"),
+        ({"radial": 1000}, "axial = '0 N': a single angular contact bearing with a free ring needs an axial load"),
+        ({"radial": 1000, "axial": -100}, "axial = '-100 N'"),
         ({"axial": 100, "moment": 5}, "loads = [100.0, 0.0, 0.0, 0.0, -5.0]: no equilibrium on the contact side"),
         ({"radial": 1000, "axial_condition": "sideways"}, "axial_condition = 'sideways': must be one of free"),
         ({"radial": 1000, "axial": 100, "tilt": "wobbly"}, "tilt = 'wobbly'"),

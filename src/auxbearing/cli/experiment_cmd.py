@@ -167,6 +167,9 @@ def _frequency(text: str) -> float:
         q = ureg.Quantity(text.strip())
         value = float(q.to("Hz").magnitude) if isinstance(q, pint.Quantity) and not q.dimensionless else float(
             getattr(q, "magnitude", q))
+    except pint.DimensionalityError as err:  # a TypeError too: caught before the generic branch
+        raise InputError.for_field("--cutoff", text, f"unit {err.units1} is not a frequency (use e.g. Hz, kHz)"
+                                   ) from None
     except (OverflowError, ValueError, TypeError):
         raise InputError.for_field("--cutoff", text, "is not a finite number") from None
     except Exception:  # pint raises several unrelated types for malformed text
