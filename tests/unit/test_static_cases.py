@@ -68,7 +68,7 @@ def test_bad_tables_are_one_line_errors(tmp_path, text, message):
 
 
 def test_solver_errors_name_the_file_line(tmp_path):
-    with pytest.raises(InputError, match=r"axial \(loads.csv: line 3\) = 0.0: a single angular contact"):
+    with pytest.raises(InputError, match=r"axial \(loads.csv: line 3\) = '0 N': a single angular contact"):
         load_cases("7202", write(tmp_path, "axial [N], radial [N]\n100, 100\n0, 100\n"))
 
 
