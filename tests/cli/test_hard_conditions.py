@@ -49,6 +49,7 @@ def _scratch(folder: Path, name: str) -> list[Path]:
 
 
 # ----------------------------------------------------------------------------- the issue's hangs
+@pytest.mark.slow
 def test_tiny_race_mass_ends_at_the_wall_time_budget(tmp_path):
     # issue: `drop --race-mass 1e-9` never finished (killed at 300 s): the race is so light the steps shrink
     (tmp_path / "work").mkdir()
@@ -106,6 +107,7 @@ def test_a_ball_constant_of_1_is_refused_before_the_race_sinks(tmp_path):
     assert "sink" in _error_line(o)
 
 
+@pytest.mark.slow
 def test_a_bearing_of_6000_balls_is_refused_by_the_contact_budget(tmp_path):
     # issue: a bearing TOML with 6000 balls never finished (each step evaluates every ball contact)
     bearing = ('[bearing]\ntype = "four_point"\nball_diameter = "6 mm"\npitch_diameter = "12 m"\nball_count = 6000\n'
@@ -128,6 +130,7 @@ def _loads_csv(path: Path, rows: int) -> None:
                    delimiter=",", fmt="%.2f")
 
 
+@pytest.mark.slow
 def test_a_million_load_cases_are_refused_by_the_case_budget(tmp_path):
     # issue: `static-cases` with 10^6 rows never finished (the per-row post-processing took ~1 ms a row)
     start = time.monotonic()
@@ -192,6 +195,7 @@ def _wait_for(predicate, seconds: float) -> bool:
     return False
 
 
+@pytest.mark.slow
 def test_a_killed_run_leaves_scratch_that_the_next_run_removes(tmp_path):
     _loads_csv(tmp_path / "l.csv", 200_000)
     proc = _subprocess(["static-cases", "--loads", "l.csv", "--out", "o"], tmp_path)
@@ -224,6 +228,7 @@ def test_scratch_of_a_live_run_is_kept_and_of_a_dead_one_removed(tmp_path):
     assert live.exists() and foreign.exists() and not dead.exists()  # no marker: not ours, left alone
 
 
+@pytest.mark.slow
 def test_ctrl_c_leaves_no_folder_and_no_traceback(tmp_path):
     proc = _subprocess(["drop", "--duration", "1", "--out", "o", "--quiet"], tmp_path)
     try:
@@ -244,6 +249,7 @@ def _file_size_limit(limit: int):
     return apply
 
 
+@pytest.mark.slow
 def test_a_full_disk_is_one_line_and_leaves_nothing(tmp_path):
     # issue: a full disk under --out was a 55-line NetCDF/HDF traceback; a file-size limit fails writes alike
     _loads_csv(tmp_path / "l.csv", 2000)

@@ -1,7 +1,7 @@
 """A study of the user's own bearings reports on those bearings, not on the paper (issue 10, item 6).
 
-The quick tests run the contact and static stages on coarse grids (the drop stage, a few seconds even
-on short drops, is in the slow ones); the paper's own study keeps its 18/3/6 claims (slow).
+The quick tests check the config and the captions; every test that runs a study stage (contact and static
+on coarse grids, the drop on short runs) is marked slow; the paper's own study keeps its 18/3/6 claims.
 """
 
 import html
@@ -100,6 +100,7 @@ def test_paper_comparison_must_be_a_boolean(tmp_path):
         load_study_config(path)
 
 
+@pytest.mark.slow
 def test_own_study_report_has_nothing_of_the_paper(tmp_path, no_figure_files):
     out = tmp_path / "out"
     results = run_study(_config(tmp_path), out, stages=["contact", "static"])
@@ -125,6 +126,7 @@ def test_own_study_leaves_out_the_experiment_on_the_papers_synthetic_drops(tmp_p
     assert "Stage <code>experiment</code> not run" in (out / "report.html").read_text()
 
 
+@pytest.mark.slow
 def test_paper_comparison_sets_the_papers_claims_beside_labelled(tmp_path, no_figure_files):
     out = tmp_path / "out"
     results = run_study(_config(tmp_path, extra="paper_comparison = true"), out, stages=["contact", "static"])
@@ -137,6 +139,7 @@ def test_paper_comparison_sets_the_papers_claims_beside_labelled(tmp_path, no_fi
     assert "Paper (its QJ202/7202), theory, inner race [MPa]" in text
 
 
+@pytest.mark.slow
 def test_paper_comparison_flag_on_the_command_line(tmp_path, no_figure_files):
     path = tmp_path / "own.toml"
     path.write_text(OWN.format(extra="", duration="20 ms"))
@@ -148,6 +151,7 @@ def test_paper_comparison_flag_on_the_command_line(tmp_path, no_figure_files):
     assert json.loads(asked.output)["claims_total"] == 9
 
 
+@pytest.mark.slow
 def test_stress_beyond_iso76_is_a_warning_box_at_the_top(tmp_path, no_figure_files):
     out = tmp_path / "out"
     config = replace(_config(tmp_path), ball_load=40000.0)
@@ -159,6 +163,7 @@ def test_stress_beyond_iso76_is_a_warning_box_at_the_top(tmp_path, no_figure_fil
     assert any("7208 at 40000 N" in w for w in results["warnings"])
 
 
+@pytest.mark.slow
 def test_paper_study_has_no_warning_box_for_its_contact_stage(tmp_path, no_figure_files):
     out = tmp_path / "out"
     run_study(replace(default_config(), contact_angles_deg=(10.0, 70.0, 10.0), groove_ratios=(0.505, 0.6, 0.015)),
