@@ -549,6 +549,11 @@ def _json(obj) -> str:
     return json.dumps(to_jsonable(obj))
 
 
+#: Per-plane summary keys that come from the drop's stress history (withheld when the drop did not finish).
+_LIFE_KEYS = ("damage_per_drop", "drop_damage", "coastdown_damage", "drops_to_failure", "drops_to_dent_limit",
+              "dent_depth_per_drop_um", "governing", "allowed_drops", "drops_margin")
+
+
 def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at, full_time, reduced_time, counts,
              wall, until_stop) -> dict:
     planes = []
@@ -569,6 +574,14 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
             "peak_ball_stress_MPa": drop.summary["planes"][k]["peak_ball_stress_MPa"],
             "whirl_in_drop": drop.summary["planes"][k]["whirl"],
         })
+    if drop.summary["verdict"] != "ok":
+        # the drop's stress history stops where the run left the model's range (or its budget): damage
+        # counted from it would be a number from outside the model, so no life is reported
+        note = f"not computed: the drop ended with verdict {drop.summary['verdict']}"
+        for plane in planes:
+            for key in _LIFE_KEYS:
+                plane[key] = None
+            plane["life_note"] = note
     return {
         "machine": machine.name, "verdict": verdict, "reason": reason,
         "coastdown_time_s": stopped_at, "reached_standstill": stopped_at is not None, "until_stop": until_stop,

@@ -46,6 +46,17 @@ def test_heavy_fast_rotor_prints_its_failure_not_a_result():
     assert "warning: verdict line_contact_overload" in result.stderr
 
 
+def test_coastdown_of_a_drop_out_of_range_reports_no_life():
+    result = _run("coastdown", "--machine", "heavy_fast_rotor", "--until-stop", "--json")
+    assert result.exit_code == 0
+    summary = json.loads(result.stdout)
+    assert summary["verdict"] == "line_contact_overload" and summary["reached_standstill"] is False
+    plane = summary["planes"][0]
+    for key in ("damage_per_drop", "drops_to_failure", "drops_to_dent_limit", "governing", "allowed_drops"):
+        assert plane[key] is None, key
+    assert plane["life_note"] == "not computed: the drop ended with verdict line_contact_overload"
+
+
 def test_paper_options_with_a_machine_are_refused_in_one_line():
     result = _run("drop", "--machine", "blower", "--friction", "0.3")
     assert result.exit_code == 2

@@ -107,6 +107,8 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     row("Drops to the ISO 76 dent limit", "-", "{:.3g}", "drops_to_dent_limit")
     row("Governing", "", "{}", "governing")
     console.print(table)
+    if summary["planes"] and summary["planes"][0].get("life_note"):
+        console.print(f"Drops to failure {summary['planes'][0]['life_note']}", highlight=False)
     stop = summary["coastdown_time_s"]
     console.print(f"{'standstill after ' + format(stop, '.1f') + ' s' if stop is not None else 'not at standstill'}"
                   f"; simulated {summary['simulated_s']:.1f} s in {summary['wall_time_s']:.1f} s "

@@ -77,12 +77,17 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
                                f"{worst_pre[1]}: smallest internal clearance {worst_pre[2] * 1e6:.2f} um "
                                "(stress at rest of the preload it makes)"))
         required = criteria["required_drops"] or cases.machine.life.required_drops
-        allowed = min((p["allowed_drops"], p["name"], p["governing"]) for p in coast["planes"])
         source = origin("required_drops", criteria) if criteria["required_drops"] else (
             "the machine file's life.required_drops" if "life" in cases.tables else
             "an assumption of auxbearing (life.required_drops = 10), not a standard's clause")
-        out.append(lower_bound("drops to failure (fatigue or dent)", allowed[0], required, "drops", source,
-                               f"{allowed[1]}: {allowed[2]} governs"))
+        lives = [(p["allowed_drops"], p["name"], p["governing"]) for p in coast["planes"]
+                 if p["allowed_drops"] is not None]
+        if lives:
+            allowed = min(lives)
+            out.append(lower_bound("drops to failure (fatigue or dent)", allowed[0], required, "drops", source,
+                                   f"{allowed[1]}: {allowed[2]} governs"))
+        else:
+            out.append(not_checked("drops to failure (fatigue or dent)", coast["planes"][0].get("life_note", ""), ""))
     else:
         why = "; ".join(n for n in cases.notes if "coast-down was not run" in n) or "no coast-down was run"
         for name in ("peak bearing temperature", "preload of a closing internal clearance",

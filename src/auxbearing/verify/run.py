@@ -42,8 +42,9 @@ def _coastdown_rows(cases: Cases) -> list[list]:
     if cases.coastdown is None:
         return []
     return [[p["name"], f"{max(p['max_temperature_C'].values()):.1f}", f"{p['min_radial_clearance_um']:.1f}",
-             f"{p['min_internal_clearance_um']:.2f}", f"{p['damage_per_drop']:.3g}", f"{p['drops_to_failure']:.3g}",
-             f"{p['drops_to_dent_limit']:.3g}", p["governing"]] for p in cases.coastdown.summary["planes"]]
+             f"{p['min_internal_clearance_um']:.2f}", _n(p["damage_per_drop"], "{:.3g}"),
+             _n(p["drops_to_failure"], "{:.3g}"), _n(p["drops_to_dent_limit"], "{:.3g}"), p["governing"] or "-"]
+            for p in cases.coastdown.summary["planes"]]
 
 
 def _campaign_rows(stats: dict | None) -> tuple[list[list], list[list]]:
