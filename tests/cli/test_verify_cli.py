@@ -86,7 +86,7 @@ def test_verify_report_loads_every_figure_and_shows_no_paper_number(blower_verif
 @pytest.mark.slow
 def test_undersized_design_fails_on_the_model_range_with_the_reason_on_top(tmp_path):
     out = tmp_path / "report"
-    result = _run("verify", "--machine", "heavy_fast_rotor", "--out", out, "--campaign-samples", 0,
+    result = _run("verify", "--machine", "heavy_fast_rotor", "--out", out, "--campaign-samples", 4,
                   "--no-recommendation", "--json")
     assert result.exit_code == 0, result.output
     data = json.loads(result.output)
@@ -98,6 +98,9 @@ def test_undersized_design_fails_on_the_model_range_with_the_reason_on_top(tmp_p
     # what depends on the coast-down is not checked (never passed) when the drop it starts from failed
     unchecked = {c["name"] for c in data["criteria"] if c["pass"] is None}
     assert "peak bearing temperature" in unchecked and "drops to failure (fatigue or dent)" in unchecked
+    # a campaign whose drops all leave the range gives no probability of whirl: not checked, never a failure
+    whirl = next(c for c in data["criteria"] if c["name"].startswith("probability of backward whirl"))
+    assert whirl["pass"] is None and "none of the campaign's 4 drops" in whirl["evidence"]
     html = (out / "report.html").read_text(encoding="utf-8")
     banner = html[html.index("Verdict:"):html.index("<h2>")]
     assert "FAIL" in banner and "line" in banner

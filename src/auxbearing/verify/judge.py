@@ -56,7 +56,8 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
               if p["backward_whirl_onset_ms"] is not None or p["whirl"] in BACKWARD]
     out.append(yes_no("no sustained backward whirl or dry whip", "none in any drop",
                       "none" if not whirls else "; ".join(
-                          f"{c}, {n}: {w} (onset {o:.0f} ms)" if o is not None else f"{c}, {n}: {w}"
+                          f"{c}, {n}: backward whirl sustained from {o:.0f} ms, {w} at the end" if o is not None
+                          else f"{c}, {n}: {w} at the end"
                           for c, n, o, w in whirls), not whirls,
                       "Jiang & Ulbrich 2005 and Jiang 2007: backward whirl and dry whip destroy touchdown bearings",
                       "whirl judged window by window (auxbearing.whirl)"))
@@ -113,7 +114,11 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     else:
         out.append(not_checked("journal excursion against the seal clearance", "give criteria.seal_clearance to "
                                "check it", "user input"))
-    if cases.campaign is not None:
+    if cases.campaign is not None and not cases.campaign["ok"]:
+        out.append(not_checked("probability of backward whirl over the drop conditions",
+                               f"none of the campaign's {cases.campaign.get('samples', 0)} drops ended inside the "
+                               "model's range", origin("max_backward_whirl_probability", criteria)))
+    elif cases.campaign is not None:
         p = cases.campaign["p_backward_whirl"]
         out.append(upper_bound("probability of backward whirl over the drop conditions", p["value"],
                                criteria["max_backward_whirl_probability"], "-",
