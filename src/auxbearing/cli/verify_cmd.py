@@ -94,10 +94,13 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         console.print("Candidates ranked by worst margin: " + ", ".join(result["ranking"]), highlight=False)
     if result["recommendation"]:
         rec = result["recommendation"]
-        console.print(f"Recommended {rec['family'].replace('_', ' ')} geometry: contact angle "
-                      f"{rec['contact_angle_deg']:.1f} deg, groove ratios {rec['inner_groove_ratio']:.3f}/"
-                      f"{rec['outer_groove_ratio']:.3f}, clearance x{rec['clearance_factor']:.2f}; binds: "
-                      f"{rec['binding_criterion']}", highlight=False)
+        if not rec["passes"]:
+            console.print(f"No recommendation: {rec['note']}", highlight=False)
+        else:
+            console.print(f"Recommended {rec['family'].replace('_', ' ')} geometry: contact angle "
+                          f"{rec['contact_angle_deg']:.1f} deg, groove ratios {rec['inner_groove_ratio']:.3f}/"
+                          f"{rec['outer_groove_ratio']:.3f}, clearance x{rec['clearance_factor']:.2f}; binds: "
+                          f"{rec['binding_criterion']}", highlight=False)
     click.echo(f"Report: {out_dir / 'report.html'} ({result['wall_time_s']:.0f} s)")
 
 

@@ -131,7 +131,11 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                      f"{rec['bounds']['inner_groove_ratio'][1]:.3f} and {rec['bounds']['clearance_factor'][0]:.2f}-"
                      f"{rec['bounds']['clearance_factor'][1]:.2f} times the radial clearance "
                      f"({rec['evaluations']} drops at the maximum speed):</p>")
-        parts.append(_table(["quantity", "recommended", "as the file has it"], result["recommendation_rows"]))
+        if not rec["passes"]:
+            parts.append(f"<p class='fail'><b>No recommendation:</b> {_e(rec['note'])}. The table shows the least "
+                         "bad point found, not a design to build.</p>")
+        parts.append(_table(["quantity", "recommended" if rec["passes"] else "least bad (fails)",
+                             "as the file has it"], result["recommendation_rows"]))
         binds = rec["binding_criterion"] + (
             f"; at the bound of {', '.join(rec['variables_at_bounds'])}" if rec["variables_at_bounds"] else "")
         parts.append(f"<p><b>What binds:</b> {_e(binds)}. Worst margin {_margin(rec['worst_margin'])} against "

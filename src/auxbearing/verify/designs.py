@@ -151,7 +151,16 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
                                                         strict=True)
                 if hi > lo and (abs(value - lo) < 1e-3 * (hi - lo) or abs(value - hi) < 1e-3 * (hi - lo))]
     offset = first.outer_groove_ratio - first.inner_groove_ratio
+    passes = best["worst"] >= 0.0
+    failing = sorted({p["binding"] for p in evaluated})
+    # when no point passes, the best one is only the least bad (often a tie at -100 %): say so instead of
+    # recommending it
+    note = None if passes else (
+        f"no {first.type.replace('_', ' ')} geometry within these ranges passes the drop criteria: all "
+        f"{len(evaluated)} points fail ({', '.join(failing)}); the lever is outside the bearing's geometry "
+        "(mount stiffness and damping, the clearance beyond this range, the rotor or the speed)")
     return {
+        "passes": passes, "note": note,
         "family": first.type, "contact_angle_deg": math.degrees(x[0]), "inner_groove_ratio": float(x[1]),
         "outer_groove_ratio": float(x[1] + offset), "radial_clearance_mm": [p.radial_clearance * x[2] * 1e3
                                                                              for p in machine.planes],

@@ -1,0 +1,37 @@
+"""The recommendation of verify (issue 15): a search in which no geometry passes recommends nothing.
+
+The drops are replaced by a stand-in that always reports sustained backward whirl, as the vertical example
+does at every point of its search, so the test needs no integration.
+"""
+
+from types import SimpleNamespace
+
+import auxbearing.drop
+from auxbearing.machine import machine_table
+from auxbearing.verify.criteria import read_criteria
+from auxbearing.verify.designs import recommend
+
+
+def _whirling_drop(machine, lean=False, **_):
+    planes = [{"s0": 5.0, "backward_whirl_onset_ms": 30.0, "shoulder_use": 0.5} for _ in machine.planes]
+    return SimpleNamespace(summary={"verdict": "ok", "planes": planes})
+
+
+def test_no_passing_geometry_is_no_recommendation(monkeypatch):
+    monkeypatch.setattr(auxbearing.drop, "run_machine", _whirling_drop)
+    data, name, base = machine_table("paper_rig")
+    rec = recommend(data, name, base, read_criteria(None), quick=True)
+    assert rec["passes"] is False and rec["worst_margin"] == -1.0
+    assert rec["note"].startswith("no four point geometry within these ranges passes the drop criteria")
+    assert "backward whirl" in rec["note"] and f"all {rec['evaluations']} points fail" in rec["note"]
+
+
+def test_a_passing_geometry_is_recommended_without_a_note(monkeypatch):
+    def calm_drop(machine, lean=False, **_):
+        planes = [{"s0": 5.0, "backward_whirl_onset_ms": None, "shoulder_use": 0.5} for _ in machine.planes]
+        return SimpleNamespace(summary={"verdict": "ok", "planes": planes})
+
+    monkeypatch.setattr(auxbearing.drop, "run_machine", calm_drop)
+    data, name, base = machine_table("paper_rig")
+    rec = recommend(data, name, base, read_criteria(None), quick=True)
+    assert rec["passes"] is True and rec["note"] is None and rec["worst_margin"] > 0.0
