@@ -57,6 +57,23 @@ def test_coastdown_of_a_drop_out_of_range_reports_no_life():
     assert plane["life_note"] == "not computed: the drop ended with verdict line_contact_overload"
 
 
+@pytest.mark.parametrize("polar, rule", [
+    ("1.5 kg*m^2", "no rigid body has a polar moment above twice its transverse moment"),  # J_t is 0.2 kg m^2
+    ("15 g*cm^2", "radius of gyration of 0.3873 mm against a journal radius of 19.85 mm"),  # a unit slip
+])
+def test_a_rotor_inertia_no_body_can_have_is_warned_of(tmp_path, polar, rule):
+    from importlib import resources
+
+    text = resources.files("auxbearing.catalog").joinpath("machines/blower.toml").read_text()
+    assert 'polar_inertia = "0.015 kg*m^2"' in text
+    machine = tmp_path / "m.toml"
+    machine.write_text(text.replace('polar_inertia = "0.015 kg*m^2"', f'polar_inertia = "{polar}"'))
+    result = _run("drop", "--machine", str(machine), "--duration", "1 ms", "--json")
+    assert result.exit_code == 0, result.output
+    warning = next(line for line in result.stderr.splitlines() if "rotor.polar_inertia" in line)
+    assert warning.startswith(f"warning: {machine}: rotor.polar_inertia: ") and rule in warning
+
+
 def test_paper_options_with_a_machine_are_refused_in_one_line():
     result = _run("drop", "--machine", "blower", "--friction", "0.3")
     assert result.exit_code == 2

@@ -9,6 +9,8 @@ budget (:func:`budgeted`). After it: a race that sank further than an elastic co
 
 from __future__ import annotations
 
+import math
+
 from auxbearing.cli.common import BudgetExceeded
 from auxbearing.errors import InputError
 
@@ -72,9 +74,48 @@ def plausibility(machine, typed: dict) -> list[str]:
             notes.append(f"{typed['line_stiffness']}: K_l = {plane.line_stiffness:.4g} N/m**(10/9) is {ratio:.3g} "
                          f"times Palmgren's constant of a steel line contact as long as the race ({length * 1e3:g} mm: "
                          f"{steel:.4g}); no journal and race material is that far from steel")
+    notes += inertia_notes(rotor, machine.planes, typed["polar_inertia"])
     return notes
 
 
+def machine_input_names(spec: str) -> dict:
+    """How :func:`plausibility` names the inputs of a machine file or example given as ``spec``."""
+    return {"unbalance": f"{spec}: rotor.unbalance", "clearance": f"{spec}: radial_clearance",
+            "line_stiffness": f"{spec}: line_stiffness", "polar_inertia": f"{spec}: rotor.polar_inertia"}
+
+
+def inertia_notes(rotor, planes, typed: str) -> list[str]:
+    """Warnings for rotor inertias no body of that mass and journal radius has.
+
+    The principal moments of any rigid body obey I_1 <= I_2 + I_3 (they are sums of two of the three second
+    moments of the mass), so for a rotor symmetric about its spin axis J_p <= 2 J_t, equal for a flat disc.
+    The polar radius of gyration sqrt(J_p / m) is compared with the journal radius r_j: a solid shaft of
+    that radius has r_j / sqrt(2); below r_j / 4 or above 50 r_j an inertia is more likely in the wrong
+    unit than a rotor. ``typed`` names the polar inertia as the user gave it.
+
+    >>> from types import SimpleNamespace as S
+    >>> inertia_notes(S(mass=10.0, polar_inertia=0.5, transverse_inertia=0.2), [S(journal_radius=0.02)], "J_p")[0][:31]
+    'J_p: 0.5 kg*m**2 is 2.5 times t'
+    """
+    notes = []
+    jp, jt, m = rotor.polar_inertia, rotor.transverse_inertia, rotor.mass
+    if jt is not None and jp > 2.0 * jt * (1.0 + 1e-9):
+        notes.append(f"{typed}: {jp:.4g} kg*m**2 is {jp / jt:.3g} times the transverse inertia "
+                     f"{jt:.4g} kg*m**2; no rigid body has a polar moment above twice its "
+                     "transverse moment (principal moments obey I1 <= I2 + I3; a flat disc has exactly 2)")
+    r_j = min(p.journal_radius for p in planes)
+    k = math.sqrt(jp / m)
+    if not JOURNAL_GYRATION_SPAN[0] * r_j <= k <= JOURNAL_GYRATION_SPAN[1] * r_j:
+        notes.append(f"{typed}: {jp:.4g} kg*m**2 with {m:.4g} kg is a radius of gyration of "
+                     f"{k * 1e3:.4g} mm against a journal radius of {r_j * 1e3:.4g} mm (a solid shaft of that radius: "
+                     f"{r_j / math.sqrt(2.0) * 1e3:.4g} mm); check the unit (kg*m**2)")
+    return notes
+
+
+#: Band of the polar radius of gyration, in journal radii, outside which the inertia is flagged (see
+#: :func:`inertia_notes`): a rotor that carries its journals has most of its mass at no less than a
+#: quarter of their radius, and 50 journal radii is a flywheel beyond any touchdown-bearing machine.
+JOURNAL_GYRATION_SPAN = (0.25, 50.0)
 #: Largest radial clearance, as a fraction of the journal radius, for which the journal/race line contact is
 #: the conformal contact of a shaft in a bore: the law takes the relative radius r (r + s) / s as r^2 / s
 #: (machine model, Johnson 1985 Eq. 4.43), an error of s / r, so 5 %.

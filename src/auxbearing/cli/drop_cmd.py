@@ -34,6 +34,7 @@ from auxbearing.cli.drop_checks import (
     check_budget,
     decimation_note,
     impact_rate_warning,
+    machine_input_names,
     plausibility,
     race_sink_warning,
     sink_check,
@@ -228,7 +229,7 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_conta
 def _typed_names(params: dict) -> dict:
     """How the paper drop's plausibility warnings name each input: the option as typed, else the default."""
     names = {"unbalance": ("rotor", "eccentricity"), "clearance": ("drop", "clearance"),
-             "line_stiffness": ("drop", "line_stiffness")}
+             "line_stiffness": ("drop", "line_stiffness"), "polar_inertia": ("rotor", "polar_inertia")}
     out = {}
     for name, key in names.items():
         param = next(p for p in PARAMETERS if (p.section, p.key) == key)
@@ -331,8 +332,7 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
                  f"--duration = {duration!r}" if duration is not None else f"--machine = {spec!r}: drop.duration",
                  "raise drop.max_steps in the machine file")
     check_ball_contacts(machine, max_contacts, f"--machine = {spec!r}")
-    warn(*plausibility(machine, {"unbalance": f"{spec}: rotor.unbalance", "clearance": f"{spec}: radial_clearance",
-                                 "line_stiffness": f"{spec}: line_stiffness"}))
+    warn(*plausibility(machine, machine_input_names(spec)))
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
         with ProgressReporter(f"drop of {machine.name}", quiet) as progress:
             run = run_machine(machine, seconds, progress=progress)
