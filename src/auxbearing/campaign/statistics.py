@@ -30,13 +30,10 @@ QUANTILES = (0.5, 0.95, 0.99)
 
 
 def wilson_interval(successes: int, trials: int, confidence: float = CONFIDENCE) -> tuple[float, float, float]:
-    """Proportion and its Wilson score interval.
+    """Proportion and its Wilson score interval, through ``scipy.stats.binomtest``.
 
-    Wilson, JASA 22 (1927) 209-212; Newcombe, Stat. Med. 17 (1998) 857-872, method 3.
-
-    p = k/n and the bounds (k + z^2/2 -+ z sqrt(k (n - k)/n + z^2/4)) / (n + z^2), z the standard normal
-    quantile of (1 + confidence)/2: the p whose score test does not reject at that level. With no
-    trials the interval is the whole [0, 1].
+    Wilson, JASA 22 (1927) 209-212; Newcombe, Stat. Med. 17 (1998) 857-872, method 3: the p whose
+    score test does not reject at that level. With no trials the interval is the whole [0, 1].
 
     Parameters
     ----------
@@ -59,16 +56,12 @@ def wilson_interval(successes: int, trials: int, confidence: float = CONFIDENCE)
     >>> [round(v, 4) for v in wilson_interval(0, 20)]
     [0.0, 0.0, 0.1611]
     """
-    from scipy.stats import norm
+    from scipy.stats import binomtest
 
     if trials <= 0:
         return math.nan, 0.0, 1.0
-    z = float(norm.ppf(0.5 * (1.0 + confidence)))
-    k, n = float(successes), float(trials)
-    centre = k + 0.5 * z * z
-    half = z * math.sqrt(k * (n - k) / n + 0.25 * z * z)
-    denominator = n + z * z
-    return k / n, max(0.0, (centre - half) / denominator), min(1.0, (centre + half) / denominator)
+    interval = binomtest(int(successes), int(trials)).proportion_ci(confidence, method="wilson")
+    return successes / trials, float(interval.low), float(interval.high)
 
 
 def bootstrap_quantiles(values, probabilities=QUANTILES, confidence: float = CONFIDENCE,
