@@ -153,15 +153,15 @@ def test_bad_campaign_files_give_one_line(data, message):
     assert message in text and "\n" not in text
 
 
-def test_coastdown_needs_its_module():
-    try:
-        from auxbearing.coastdown import run_coastdown  # noqa: F401
-    except ImportError:
-        pass
-    else:
-        pytest.skip("auxbearing.coastdown.run_coastdown exists: the coastdown branch is live")
-    with pytest.raises(InputError, match=r"campaign\.analysis = 'coastdown'"):
-        campaign_from_mapping(base(analysis="coastdown"))
+def test_coastdown_analysis_adds_its_outputs():
+    from auxbearing.campaign.evaluate import output_variables
+
+    c = campaign_from_mapping(base(analysis="coastdown"))
+    assert c.analysis == "coastdown"
+    sample, plane = output_variables(c.analysis)
+    assert "coastdown_time" in sample and {"max_temperature", "allowed_drops", "drops_to_failure"} <= set(plane)
+    drop_sample, drop_plane = output_variables("drop")
+    assert "coastdown_time" not in drop_sample and "allowed_drops" not in drop_plane
 
 
 def test_normal_reaching_outside_the_rule_is_noted():

@@ -336,12 +336,6 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     analysis = str(head.get("analysis", "drop")).strip().lower()
     if analysis not in ANALYSES:
         raise InputError.for_field("campaign.analysis", head.get("analysis"), "use one of " + ", ".join(ANALYSES))
-    if analysis == "coastdown":
-        try:
-            from auxbearing.coastdown import run_coastdown  # noqa: F401
-        except ImportError:
-            raise InputError.for_field("campaign.analysis", "coastdown", "the coast-down model (auxbearing.coastdown) "
-                                       "is not in this version yet; use analysis = 'drop'") from None
     second_order = head.get("second_order", False)
     if not isinstance(second_order, bool):
         raise InputError.for_field("campaign.second_order", second_order, "must be true or false")
