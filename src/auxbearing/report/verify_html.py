@@ -144,7 +144,7 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                      "the model's range, backward whirl, the contact ellipse against the shoulder); the coast-down "
                      "criteria and the campaign are not part of it (each point would need a whole coast-down).</p>")
         unaddressed = [c.name for c in main["criteria"] if c.passed is False and c.name in COASTDOWN_CRITERIA]
-        if unaddressed:
+        if unaddressed and rec["passes"]:
             parts.append(f"<p><b>Not addressed by this recommendation:</b> {_e(', '.join(unaddressed))} "
                          "(check it with a verification of the recommended geometry).</p>")
         parts += [_figure(f, c) for f, c in figures.get("recommendation", [])]
