@@ -81,7 +81,7 @@ class CoastdownRun(NamedTuple):
     drop: MachineRun  #: the drop window (full dynamics, with the per-ball stress histories)
     history: xr.Dataset  #: the coast-down at every window and stretch end (units in attrs)
     summary: dict  #: verdict, times, energy audit, per plane temperatures, clearances and life
-    life: list  #: per plane: the fatigue and dent results (:mod:`auxbearing.life`)
+    life: list  #: per plane: the fatigue and dent results (:mod:`auxbearing.life`); None when the drop did not finish
 
 
 # ----------------------------------------------------------------------------- the thermal side
@@ -495,6 +495,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     summary = _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at, full_time, reduced_time,
                        counts, time.perf_counter() - wall_start, until_stop)
     history_ds.attrs["summary"] = _json(summary)
+    if drop.summary["verdict"] != "ok":  # withheld with the summary's life figures (see _summary)
+        lives = [None] * len(lives)
     return CoastdownRun(drop, history_ds, summary, lives)
 
 

@@ -46,8 +46,9 @@ def test_heavy_fast_rotor_prints_its_failure_not_a_result():
     assert "warning: verdict line_contact_overload" in result.stderr
 
 
-def test_coastdown_of_a_drop_out_of_range_reports_no_life():
-    result = _run("coastdown", "--machine", "heavy_fast_rotor", "--until-stop", "--json")
+def test_coastdown_of_a_drop_out_of_range_reports_no_life(tmp_path):
+    out = tmp_path / "cd"
+    result = _run("coastdown", "--machine", "heavy_fast_rotor", "--until-stop", "--json", "--out", str(out))
     assert result.exit_code == 0
     summary = json.loads(result.stdout)
     assert summary["verdict"] == "line_contact_overload" and summary["reached_standstill"] is False
@@ -55,6 +56,8 @@ def test_coastdown_of_a_drop_out_of_range_reports_no_life():
     for key in ("damage_per_drop", "drops_to_failure", "drops_to_dent_limit", "governing", "allowed_drops"):
         assert plane[key] is None, key
     assert plane["life_note"] == "not computed: the drop ended with verdict line_contact_overload"
+    files = {p.name for p in out.iterdir()}  # no stress cycles of a history cut at the range exit
+    assert "coastdown_summary.json" in files and not any(name.startswith("stress_cycles") for name in files)
 
 
 @pytest.mark.parametrize("polar, rule", [

@@ -77,7 +77,8 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
             save_figure(plot_speeds(run.history), tmp / "coastdown_speeds")
             for k in range(len(machine.planes)):
                 save_figure(plot_temperatures(run.history, k), tmp / f"coastdown_temperatures_{k}")
-                save_figure(plot_stress_cycles(cycles_of_worst_contact(run.life[k])), tmp / f"stress_cycles_{k}")
+                if run.life[k] is not None:
+                    save_figure(plot_stress_cycles(cycles_of_worst_contact(run.life[k])), tmp / f"stress_cycles_{k}")
             save_figure(plot_clearances(run.history), tmp / "coastdown_clearances")
             write_json(summary, tmp / "coastdown_summary.json", inputs)
     if out_dir is not None:

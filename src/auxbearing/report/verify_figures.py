@@ -35,6 +35,8 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
                          f"{cases.machine.planes[k].name}: temperatures of the plane's thermal network"))
         figs.append((pc.plot_clearances(coast.history), "Clearances with thermal growth"))
         for k, life in enumerate(coast.life):
+            if life is None:  # the drop left the model's range: its stress history is not a life's
+                continue
             figs.append((pc.plot_stress_cycles(cycles_of_worst_contact(life)),
                          f"{cases.machine.planes[k].name}: stress cycles of the drop's most damaged contact"))
         out["coastdown"] = figs
