@@ -43,11 +43,16 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
             assert math.isclose(c["margin"], c["found"] / c["required"] - 1.0)
         elif c["kind"] == "upper":
             assert math.isclose(c["margin"], 1.0 - c["found"] / c["required"])
-        if c["margin"] is not None:
+        if c["margin"] is not None and c["pass"] is not None:
             assert c["pass"] == (c["margin"] >= 0.0)
-    # every input given, so every criterion is checked
-    assert all(c["pass"] is not None for c in data["criteria"])
-    assert data["verdict"] == ("pass" if all(c["pass"] for c in data["criteria"]) else "fail")
+    # every input is given: what is left unchecked is what the quick run's short coast-down passed, which
+    # is no pass (the rest of the coast-down could still fail it)
+    unchecked = [c for c in data["criteria"] if c["pass"] is None]
+    assert {c["name"] for c in unchecked} <= {"peak bearing temperature", "preload of a closing internal clearance",
+                                             "drops to failure (fatigue or dent)",
+                                             "touchdown clearance against the magnetic air gap"}
+    assert all("(--quick)" in c["evidence"] and c["margin"] >= 0.0 for c in unchecked)
+    assert data["verdict"] == ("fail" if any(c["pass"] is False for c in data["criteria"]) else "pass")
     assert [c["bearing"] for c in data["candidates"]] == ["7208"]
     assert len(data["ranking"]) == 2
     rec = data["recommendation"]

@@ -58,6 +58,7 @@ class Cases:
     campaign_store: str | None = None
     notes: list[str] = field(default_factory=list)
     tables: tuple[str, ...] = ()  #: the tables the machine file gives (to say where a value came from)
+    partial_coastdown: bool = False  #: the coast-down stopped short of standstill on purpose (--quick)
 
 
 def verify_settings(data: dict) -> dict:
@@ -111,6 +112,7 @@ def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, sam
                                         duration=min(QUICK_COASTDOWN, machine.coastdown.max_time))
         cases.notes.append(f"--quick: the coast-down ran for its first {QUICK_COASTDOWN:g} s only; temperatures, "
                            "clearances and life cover that part")
+        cases.partial_coastdown = cases.coastdown.summary["coastdown_time_s"] is None
     else:
         say("coast-down with heat")
         cases.coastdown = run_coastdown(cases.machine)
