@@ -30,14 +30,17 @@ LOW_SPEED_FRACTION = 0.25
 #: ``--quick``: the drops last at most this long [s], the coast-down is run for this long [s] and the
 #: campaign has this many samples.
 QUICK_DROP, QUICK_COASTDOWN, QUICK_SAMPLES = 0.05, 5.0, 8
-#: Samples of the verification's campaign unless ``verify.campaign_samples`` says otherwise.
-CAMPAIGN_SAMPLES = 32
+#: Samples of the verification's campaign unless ``verify.campaign_samples`` says otherwise: a power of two
+#: (Sobol' balance) whose whirl-free outcome shows P(backward whirl) within the default 5 % at 95 % confidence
+#: (Wilson's bound for no events, 1.96^2 / (n + 1.96^2), is 0.029 at 128 and 0.057 at 64).
+CAMPAIGN_SAMPLES = 128
 
 VERIFY: tuple[Param, ...] = (
     Param("verify", "low_speed", "angular_speed", None, "rpm", "optional_positive",
           "Speed of the low-speed drop; default a quarter of rotor.speed", "ours"),
     Param("verify", "campaign_samples", "dimensionless", float(CAMPAIGN_SAMPLES), "", "count",
-          "Samples of the verification's campaign", "ours: enough for a first probability, not a tight one"),
+          "Samples of the verification's campaign",
+          "ours: 128 whirl-free drops show P(backward whirl) <= 0.05 at 95 %"),
     Param("verify", "friction_spread", "dimensionless", 0.05, "", "unit_interval",
           "Half-width of the campaign's uniform spread of sliding friction about each plane's value",
           "ours: the literature spans 0.1-0.3"),

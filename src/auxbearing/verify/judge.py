@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from auxbearing.verify.cases import Cases
@@ -116,17 +118,8 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
                                "check it", "user input"))
     if cases.partial_coastdown:
         out = [_unsettled(c) if c.name in PARTIAL_COASTDOWN_CRITERIA else c for c in out]
-    if cases.campaign is not None and not cases.campaign["ok"]:
-        out.append(not_checked("probability of backward whirl over the drop conditions",
-                               f"none of the campaign's {cases.campaign.get('samples', 0)} drops ended inside the "
-                               "model's range", origin("max_backward_whirl_probability", criteria)))
-    elif cases.campaign is not None:
-        p = cases.campaign["p_backward_whirl"]
-        out.append(upper_bound("probability of backward whirl over the drop conditions", p["value"],
-                               criteria["max_backward_whirl_probability"], "-",
-                               origin("max_backward_whirl_probability", criteria),
-                               f"campaign of {cases.campaign['ok']} drops that ended ok; 95 % interval "
-                               f"{p['low']:.3f}-{p['high']:.3f}"))
+    if cases.campaign is not None:
+        out.append(_whirl_probability(cases.campaign, criteria))
     return out
 
 
@@ -134,6 +127,36 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
 #: go on changing, and the over-rolling of the rest of the run adds damage.
 PARTIAL_COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing internal clearance",
                               "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap")
+
+
+#: Name of the campaign's criterion: judged by the upper end of its 95 % interval, not by the estimate.
+WHIRL_PROBABILITY = "probability of backward whirl over the drop conditions (95 % upper bound)"
+
+
+def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
+    """P(backward whirl) against its limit, by the Wilson upper bound of the campaign's estimate.
+
+    A campaign passes only when the upper end of its 95 % interval is within the limit; an estimate above the
+    limit fails; between the two the campaign is too small to tell, and the criterion is not checked (with
+    the number of whirl-free drops that would show it: Wilson's upper bound for no events is
+    z^2 / (n + z^2)).
+    """
+    limit = criteria["max_backward_whirl_probability"]
+    source = origin("max_backward_whirl_probability", criteria)
+    if not campaign["ok"]:
+        return not_checked(WHIRL_PROBABILITY, f"none of the campaign's {campaign.get('samples', 0)} drops ended "
+                           "inside the model's range", source)
+    p = campaign["p_backward_whirl"]
+    evidence = (f"campaign of {campaign['ok']} drops that ended ok: estimate {p['value']:.3f}, 95 % interval "
+                f"{p['low']:.3f}-{p['high']:.3f}")
+    c = upper_bound(WHIRL_PROBABILITY, p["high"], limit, "-", source, evidence)
+    if c.passed is False and p["value"] <= limit:
+        z2 = 1.959963984540054 ** 2
+        need = math.ceil(z2 * (1.0 / limit - 1.0)) if limit > 0.0 else None
+        more = f"; {need} or more drops without whirl would show it (verify.campaign_samples)" if need else ""
+        c = c._replace(passed=None, kind="not checked",
+                       evidence=f"{evidence}: too few drops to show the probability is within {limit:g}{more}")
+    return c
 
 
 def _unsettled(c: Criterion) -> Criterion:
