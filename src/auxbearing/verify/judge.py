@@ -151,7 +151,11 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
                 f"{p['low']:.3f}-{p['high']:.3f}")
     c = upper_bound(WHIRL_PROBABILITY, p["high"], limit, "-", source, evidence)
     if c.passed is False and p["value"] <= limit:
-        z2 = 1.959963984540054 ** 2
+        from scipy.stats import norm
+
+        from auxbearing.campaign.statistics import CONFIDENCE
+
+        z2 = float(norm.ppf(0.5 * (1.0 + CONFIDENCE))) ** 2
         need = math.ceil(z2 * (1.0 / limit - 1.0)) if limit > 0.0 else None
         more = f"; {need} or more drops without whirl would show it (verify.campaign_samples)" if need else ""
         c = c._replace(passed=None, kind="not checked",
