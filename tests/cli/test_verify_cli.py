@@ -49,7 +49,7 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
     # is no pass (the rest of the coast-down could still fail it), and a whirl probability whose 95 % bound
     # the quick campaign's 8 drops cannot bring under 5 %
     unchecked = {c["name"]: c for c in data["criteria"] if c["pass"] is None}
-    whirl = unchecked.pop("probability of backward whirl over the drop conditions (95 % upper bound)")
+    whirl = unchecked.pop("probability of backward whirl over the drop conditions, 95 % bound")
     assert whirl["found"] > whirl["required"] and "too few drops" in whirl["evidence"]
     assert "73 or more drops without whirl" in whirl["evidence"]
     assert set(unchecked) <= {"peak bearing temperature", "preload of a closing internal clearance",

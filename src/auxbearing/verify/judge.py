@@ -130,7 +130,7 @@ PARTIAL_COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing 
 
 
 #: Name of the campaign's criterion: judged by the upper end of its 95 % interval, not by the estimate.
-WHIRL_PROBABILITY = "probability of backward whirl over the drop conditions (95 % upper bound)"
+WHIRL_PROBABILITY = "probability of backward whirl over the drop conditions, 95 % bound"
 
 
 def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
@@ -151,16 +151,41 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
                 f"{p['low']:.3f}-{p['high']:.3f}")
     c = upper_bound(WHIRL_PROBABILITY, p["high"], limit, "-", source, evidence)
     if c.passed is False and p["value"] <= limit:
-        from scipy.stats import norm
-
-        from auxbearing.campaign.statistics import CONFIDENCE
-
-        z2 = float(norm.ppf(0.5 * (1.0 + CONFIDENCE))) ** 2
-        need = math.ceil(z2 * (1.0 / limit - 1.0)) if limit > 0.0 else None
-        more = f"; {need} or more drops without whirl would show it (verify.campaign_samples)" if need else ""
+        need = _drops_to_show(p["value"], limit)
+        more = "" if need is None else (
+            f"; {need} or more drops without whirl would show it" if p["value"] == 0.0 else
+            f"; at the estimated rate about {need} drops would show it") + " (verify.campaign_samples)"
         c = c._replace(passed=None, kind="not checked",
                        evidence=f"{evidence}: too few drops to show the probability is within {limit:g}{more}")
     return c
+
+
+def _drops_to_show(rate: float, limit: float) -> int | None:
+    """Smallest campaign whose Wilson upper bound at this observed rate is within the limit (None: none is).
+
+    The bound (p + z^2/2n + z sqrt(p (1 - p)/n + z^2/4n^2)) / (1 + z^2/n) falls with n towards p, so a rate
+    below the limit reaches it; bisection on n. For p = 0 it is z^2 (1/limit - 1).
+    """
+    from scipy.stats import norm
+
+    from auxbearing.campaign.statistics import CONFIDENCE
+
+    if not 0.0 <= rate < limit:
+        return None
+    z = float(norm.ppf(0.5 * (1.0 + CONFIDENCE)))
+
+    def bound(n: float) -> float:
+        return (rate + z * z / (2 * n) + z * math.sqrt(rate * (1 - rate) / n + z * z / (4 * n * n))) / (1 + z * z / n)
+
+    low, high = 1, 2
+    while bound(high) > limit:
+        low, high = high, 2 * high
+        if high > 10**9:
+            return None
+    while high - low > 1:
+        mid = (low + high) // 2
+        low, high = (mid, high) if bound(mid) > limit else (low, mid)
+    return high
 
 
 def _unsettled(c: Criterion) -> Criterion:
