@@ -35,6 +35,7 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
     out, _ = blower_verified
     data = json.loads((out / "verify.json").read_text())
     assert data["verdict"] in ("pass", "fail")
+    assert data["reason"].startswith("every checked criterion holds" if data["verdict"] == "pass" else "fails on")
     names = [c["name"] for c in data["criteria"]]
     assert len(names) == 9 and len(set(names)) == 9
     for c in data["criteria"]:

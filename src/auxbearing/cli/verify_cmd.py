@@ -67,6 +67,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
 
             result = verify(machine_spec, tmp, specs, quick=quick, samples=campaign_samples, workers=workers,
                             scheduler=scheduler, with_recommendation=not no_recommendation, progress=say)
+        result["reason"] = verdict_reason(result["design"]["criteria"])
         cases = result["design"]["cases"]
         for i, run in enumerate(cases.drops.values()):
             save_dataset(run.dataset, tmp / f"drop_{i}.nc", {"machine": cases.machine.describe()})
@@ -77,7 +78,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         public = {k: v for k, v in result.items() if k not in ("design", "candidate_rows", "recommendation_rows")}
         write_json(public, tmp / "verify.json", result["inputs"])
     if as_json:
-        echo_json({k: v for k, v in result.items() if k in ("verdict", "machine", "criteria", "worst_margin",
+        echo_json({k: v for k, v in result.items() if k in ("verdict", "reason", "machine", "criteria", "worst_margin",
                                                             "candidates", "ranking", "recommendation",
                                                             "wall_time_s")} | {"out": str(out_dir)})
         return
@@ -88,7 +89,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     for row in rows:
         table.add_row(*[str(v) for v in row])
     console = Console()
-    console.print(f"{result['verdict'].upper()}: {verdict_reason(result['design']['criteria'])}", highlight=False)
+    console.print(f"{result['verdict'].upper()}: {result['reason']}", highlight=False)
     console.print(table)
     if result["candidates"]:
         console.print("Candidates ranked by worst margin: " + ", ".join(result["ranking"]), highlight=False)
