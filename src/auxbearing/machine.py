@@ -3,7 +3,8 @@
 Read from a machine TOML file (:func:`read_machine`, keys and units in
 :mod:`auxbearing.machine_params`) or a catalogue name (:func:`machine_names`), or built from the
 source paper's planar inputs (:func:`planar_machine`). :meth:`Machine.kernel` packs it into the
-NamedTuples of :mod:`auxbearing.core.machine` with the initial state and tolerances.
+NamedTuples of :mod:`auxbearing.core.machine` with the initial state and tolerances
+(:mod:`auxbearing.machine_kernel`).
 """
 
 from __future__ import annotations
@@ -13,13 +14,9 @@ from dataclasses import dataclass, field, replace
 from functools import cache
 from importlib import resources
 from pathlib import Path
-from typing import NamedTuple
+from typing import TYPE_CHECKING
 
-import numpy as np
-
-from auxbearing.ballset import ballset_params
 from auxbearing.bearing import BearingGeometry, bearing_from_mapping, read_toml
-from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core.hertz import line_contact_constant
 from auxbearing.errors import InputError
@@ -36,6 +33,9 @@ from auxbearing.machine_params import (
     steel_column_stiffness,
 )
 from auxbearing.params import accept, read_table
+
+if TYPE_CHECKING:
+    from auxbearing.machine_kernel import KernelModel
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
 JOURNAL_COMPLIANCE = (1.0 - 0.3**2) / 207e9
@@ -186,15 +186,6 @@ class Life:
             object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
 
 
-class KernelModel(NamedTuple):
-    """A machine packed for the compiled kernels."""
-
-    machine: cm.Machine
-    y0: np.ndarray
-    settings: ig.Settings
-    energy0: float  #: mechanical energy at the start [J]
-
-
 @dataclass(frozen=True)
 class Machine:
     """A machine: rotor, one or two touchdown planes, orientation and run settings."""
@@ -240,8 +231,10 @@ class Machine:
         return replace(self, simulation=replace(self.simulation, **changes))
 
     def kernel(self) -> KernelModel:
-        """Pack for :mod:`auxbearing.core.machine` (see the module docstring there)."""
-        return _pack(self)
+        """Pack for :mod:`auxbearing.core.machine` (:func:`auxbearing.machine_kernel.pack`)."""
+        from auxbearing.machine_kernel import pack
+
+        return pack(self)
 
     def describe(self) -> dict:
         """Inputs with units in the keys, for files and reports."""
@@ -384,132 +377,6 @@ def make_plane(bearing: BearingGeometry, values: dict, name: str, index: int) ->
         defaults=tuple(dict.fromkeys(filled)), **face)
 
 
-# ----------------------------------------------------------------------------- packing
-def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
-    n = cm.MAX_PLANES
-
-    def arr(get, fill=0.0):
-        # tuples of floats, not arrays: the compiled code passes them by value, while every use of a
-        # struct of arrays there costs a reference-count update per array (about 0.5 us a call with 34)
-        out = [fill] * n
-        for k, p in enumerate(planes):
-            out[k] = float(get(p))
-        return tuple(out)
-
-    def mount(get, fill=0.0):
-        return arr(lambda p: get(p.mount) if p.mount is not None else fill, fill)
-
-    return cm.Planes(
-        active=arr(lambda p: 1.0), position=arr(lambda p: p.position), clearance=arr(lambda p: p.radial_clearance, 1.0),
-        journal_radius=arr(lambda p: p.journal_radius, 1.0), line_stiffness=arr(lambda p: p.line_stiffness),
-        line_damping=arr(lambda p: p.line_damping), sliding_friction=arr(lambda p: p.sliding_friction),
-        rolling_friction=arr(lambda p: p.rolling_friction), slip_velocity=arr(lambda p: p.slip_velocity, 1.0),
-        race_mass=arr(lambda p: p.race_mass, 1.0), race_inertia=arr(lambda p: p.race_inertia, 1.0),
-        raceway_radius=arr(lambda p: 0.5 * p.bearing.inner_raceway_diameter, 1.0),
-        ball_damping=arr(lambda p: p.ball_damping), race_axial_free=arr(lambda p: float(p.catches_axially)),
-        ring_free=arr(lambda p: float(p.mount is not None)), ring_mass=mount(lambda m: m.mass, 1.0),
-        mount_stiffness=mount(lambda m: m.stiffness), mount_damping=mount(lambda m: m.damping),
-        mount_deadband=mount(lambda m: m.deadband),
-        stop_gap=mount(lambda m: m.stop if m.stop is not None else np.inf, np.inf),
-        stop_stiffness=mount(lambda m: m.stop_stiffness or 0.0), stop_damping=mount(lambda m: m.stop_damping),
-        centre_x=arr(lambda p: p.misalignment[0]), centre_y=arr(lambda p: p.misalignment[1]),
-        axial_clearance=arr(lambda p: p.axial_clearance if p.catches_axially else np.inf, np.inf),
-        face_plus=arr(lambda p: float(p.catches_axially and p.axial_direction in ("both", "+z"))),
-        face_minus=arr(lambda p: float(p.catches_axially and p.axial_direction in ("both", "-z"))),
-        face_stiffness=arr(lambda p: p.face_stiffness), face_damping=arr(lambda p: p.face_damping),
-        face_friction=arr(lambda p: p.face_friction), face_radius=arr(lambda p: p.face_radius, 1.0),
-        pitch_diameter=arr(lambda p: p.bearing.pitch_diameter, 1.0),
-        lubricant_viscosity=arr(lambda p: p.lubricant_viscosity), viscous_factor=arr(lambda p: p.viscous_factor),
-    )
-
-
-def _limits(machine: Machine) -> cm.Limits:
-    sim = machine.simulation
-    n = cm.MAX_PLANES
-    force_per_length = np.full(n, np.inf)
-    length = np.ones(n)
-    shoulder_i, shoulder_o = np.full(n, np.pi), np.full(n, np.pi)
-    groove_i, groove_o = np.ones(n), np.ones(n)
-    travel, axial = np.full(n, np.inf), np.full(n, np.inf)
-    for k, p in enumerate(machine.planes):
-        b = p.bearing
-        # Hertz half-width of a journal in a bore: b/r = sqrt(4 F' / (pi E* s)) (Johnson 1985, Eq. 4.43 with
-        # the conformal radius r (r + s)/s ~ r^2/s), so b/r <= lam means F' <= lam^2 pi E* s / 4
-        e_star = 1.0 / (b.ring_material.compliance + JOURNAL_COMPLIANCE)
-        force_per_length[k] = sim.line_contact_limit**2 * math.pi * e_star * p.radial_clearance / 4.0
-        length[k] = b.width if b.width is not None else 2.0 * b.ball_diameter
-        for ratio, angle_out, groove_out in ((b.inner_groove_ratio, shoulder_i, groove_i),
-                                              (b.outer_groove_ratio, shoulder_o, groove_o)):
-            groove = ratio * b.ball_diameter
-            groove_out[k] = groove
-            angle_out[k] = math.acos(max(-1.0, 1.0 - p.shoulder_height / groove))
-        if p.mount is not None:
-            travel[k] = p.mount.travel
-        axial[k] = b.curvature_centre_distance
-    def floats(a):
-        return tuple(float(v) for v in a)
-
-    return cm.Limits(floats(force_per_length), floats(length), sim.ball_stress_limit, floats(shoulder_i),
-                     floats(shoulder_o), floats(groove_i), floats(groove_o), floats(travel), floats(axial),
-                     sim.energy_tolerance)
-
-
-def _pack(machine: Machine) -> KernelModel:
-    r = machine.rotor
-    sim = machine.simulation
-    g = sim.gravity
-    gravity = (0.0, -g, 0.0) if machine.orientation == "horizontal" else (0.0, 0.0, -g)
-    planes = machine.planes
-    lever = max((abs(p.position) for p in planes), default=0.0)
-    rotor = cm.Rotor(
-        mass=r.mass, polar_inertia=r.polar_inertia, transverse_inertia=r.transverse_inertia or 1.0,
-        unbalance=r.unbalance, unbalance_phase=r.unbalance_phase, couple_unbalance=r.couple_unbalance,
-        couple_phase=r.unbalance_phase + r.couple_unbalance_phase, gravity_x=gravity[0], gravity_y=gravity[1],
-        gravity_z=gravity[2], force_x=r.side_force_x, force_y=r.side_force_y, force_z=r.axial_force,
-        process_torque=machine.coastdown.process_torque, drag_constant=machine.coastdown.drag_torque,
-        drag_viscous=machine.coastdown.viscous_drag, drag_windage=machine.coastdown.windage_drag,
-        drag_speed_scale=DRAG_SPEED_SCALE,
-        tilt_free=machine.tilt_free, axial_free=machine.axial_free)
-    ballsets = [ballset_params(p.bearing, p.ball_constant) for p in planes]
-    while len(ballsets) < cm.MAX_PLANES:
-        ballsets.append(ballsets[0])
-    clearance = np.zeros(cm.MAX_PLANES)
-    for k, p in enumerate(planes):
-        clearance[k] = p.bearing.diametral_clearance
-    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine), *cm.new_scratch())
-    y0 = np.zeros(cm.N_STATE)
-    y0[cm.OMEGA] = r.speed
-    y0[cm.X], y0[cm.Y] = r.start_x, r.start_y
-    for k, p in enumerate(planes):
-        b = cm.N_ROTOR + k * cm.N_PLANE
-        y0[b + cm.OX], y0[b + cm.OY] = p.misalignment
-    # error scales: clearance for positions, the speed of a fall through it for velocities
-    s = min(p.radial_clearance for p in planes)
-    v = max(math.sqrt(2.0 * g * s), 1e-3)
-    w = max(abs(r.speed), 1.0)
-    length = max(lever, 1e-3)
-    rotor_scale = (s, s, s, s / length, s / length, 1.0, v, v, v, v / length, v / length, w)
-    free = (True, True, machine.axial_free, machine.tilt_free, machine.tilt_free, True,
-            True, True, machine.axial_free, machine.tilt_free, machine.tilt_free, True)
-    atol = np.full(cm.N_STATE, np.inf)
-    for i in range(cm.N_ROTOR):
-        if free[i]:
-            atol[i] = sim.atol * rotor_scale[i]
-    for k, p in enumerate(planes):
-        b = cm.N_ROTOR + k * cm.N_PLANE
-        for i, sc in ((cm.RX, s), (cm.RY, s), (cm.RPSI, 1.0), (cm.RVX, v), (cm.RVY, v), (cm.ROMEGA, w)):
-            atol[b + i] = sim.atol * sc
-        if p.catches_axially:
-            atol[b + cm.RZ] = sim.atol * s
-            atol[b + cm.RVZ] = sim.atol * v
-        if p.mount is not None:
-            for i, sc in ((cm.OX, s), (cm.OY, s), (cm.OVX, v), (cm.OVY, v)):
-                atol[b + i] = sim.atol * sc
-    settings = ig.Settings(sim.rtol, atol, sim.max_step, 1e-14, 20000, sim.output_step)
-    kinetic, potential = cm.energy(y0, core)
-    return KernelModel(core, y0, settings, kinetic + potential)
-
-
 # ----------------------------------------------------------------------------- reading files
 def _text(table: dict, key: str, where: str, fallback: str) -> str:
     value = table.get(key, fallback)
@@ -649,6 +516,6 @@ def paper_rig() -> Machine:
     return planar_machine(get_bearing("QJ202"), Rotor(), DropCase())
 
 
-__all__ = ["G0", "Coastdown", "KernelModel", "Life", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
+__all__ = ["G0", "Coastdown", "Life", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
            "machine_from_mapping", "machine_names", "machine_table", "make_plane", "paper_rig", "planar_machine",
            "read_machine"]
