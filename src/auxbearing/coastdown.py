@@ -56,6 +56,7 @@ from auxbearing.drop import (
     whirl_window,
 )
 from auxbearing.errors import InputError
+from auxbearing.life import dynamic_load_rating
 from auxbearing.machine import DRAG_SPEED_SCALE, Machine
 from auxbearing.statics import ISO76_BALL_STRESS
 from auxbearing.thermal import HOUSING, JOURNAL, NODE_NAMES, build_network
@@ -490,13 +491,14 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     if verdict == OK and until_stop and stopped_at is None and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
         stopped_at = session.t
     history_ds = _history(machine, history)
-    lives = [plane_life(machine, k, drop.dataset, drop.summary["planes"][k], overrolling[k])
+    # a drop that did not finish leaves a stress history cut at its range exit or budget: damage counted
+    # from it would be a number from outside the model, so no life is computed
+    finished = drop.summary["verdict"] == "ok"
+    lives = [plane_life(machine, k, drop.dataset, drop.summary["planes"][k], overrolling[k]) if finished else None
              for k in range(len(machine.planes))]
     summary = _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at, full_time, reduced_time,
                        counts, time.perf_counter() - wall_start, until_stop)
     history_ds.attrs["summary"] = _json(summary)
-    if drop.summary["verdict"] != "ok":  # withheld with the summary's life figures (see _summary)
-        lives = [None] * len(lives)
     return CoastdownRun(drop, history_ds, summary, lives)
 
 
@@ -551,7 +553,7 @@ def _json(obj) -> str:
     return json.dumps(to_jsonable(obj))
 
 
-#: Per-plane summary keys that come from the drop's stress history (withheld when the drop did not finish).
+#: Per-plane summary keys that come from the drop's stress history (null when the drop did not finish).
 _LIFE_KEYS = ("damage_per_drop", "drop_damage", "coastdown_damage", "drops_to_failure", "drops_to_dent_limit",
               "dent_depth_per_drop_um", "governing", "allowed_drops", "drops_margin")
 
@@ -561,29 +563,27 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
     planes = []
     for k, plane in enumerate(machine.planes):
         life = lives[k]
+        if life is None:  # the drop did not finish (run_coastdown)
+            figures = dict.fromkeys(_LIFE_KEYS)
+            figures["life_note"] = f"not computed: the drop ended with verdict {drop.summary['verdict']}"
+        else:
+            figures = {
+                "damage_per_drop": life["damage_per_drop"], "drop_damage": life["drop_damage"],
+                "coastdown_damage": life["coastdown_damage"], "drops_to_failure": life["drops_to_failure"],
+                "drops_to_dent_limit": life["drops_to_dent_limit"], "dent_depth_per_drop_um": life["dent_depth_um"],
+                "governing": life["governing"]["limit"], "allowed_drops": life["governing"]["allowed_drops"],
+                "drops_margin": life["governing"].get("margin")}
         planes.append({
             "name": plane.name, "bearing": plane.bearing.name,
             "max_temperature_C": {name: float(limits.max_temps[k][i] - 273.15) for i, name in enumerate(NODE_NAMES)},
             "min_radial_clearance_um": limits.min_radial[k] * 1e6,
             "min_internal_clearance_um": limits.min_internal[k] * 1e6,
-            "damage_per_drop": life["damage_per_drop"], "drop_damage": life["drop_damage"],
-            "coastdown_damage": life["coastdown_damage"], "drops_to_failure": life["drops_to_failure"],
-            "drops_to_dent_limit": life["drops_to_dent_limit"], "dent_depth_per_drop_um": life["dent_depth_um"],
-            "governing": life["governing"]["limit"], "allowed_drops": life["governing"]["allowed_drops"],
-            "required_drops": machine.life.required_drops, "drops_margin": life["governing"].get("margin"),
-            "dynamic_load_rating_N": life["dynamic_load_rating_N"],
+            **figures, "required_drops": machine.life.required_drops,
+            "dynamic_load_rating_N": dynamic_load_rating(plane.bearing),
             "peak_contact_force_N": drop.summary["planes"][k]["peak_contact_force_N"],
             "peak_ball_stress_MPa": drop.summary["planes"][k]["peak_ball_stress_MPa"],
             "whirl_in_drop": drop.summary["planes"][k]["whirl"],
         })
-    if drop.summary["verdict"] != "ok":
-        # the drop's stress history stops where the run left the model's range (or its budget): damage
-        # counted from it would be a number from outside the model, so no life is reported
-        note = f"not computed: the drop ended with verdict {drop.summary['verdict']}"
-        for plane in planes:
-            for key in _LIFE_KEYS:
-                plane[key] = None
-            plane["life_note"] = note
     return {
         "machine": machine.name, "verdict": verdict, "reason": reason,
         "coastdown_time_s": stopped_at, "reached_standstill": stopped_at is not None, "until_stop": until_stop,
