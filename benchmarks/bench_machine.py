@@ -38,8 +38,7 @@ from scipy.integrate import solve_ivp
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
-from auxbearing.core import watch as cw
-from auxbearing.drop import integrate_machine, run_machine, whirl_window
+from auxbearing.drop import integrate_machine, run_machine, start_driver
 from auxbearing.machine import read_machine
 from numpy_machine import make_rhs, normal_forces
 
@@ -92,16 +91,7 @@ def bare_advance(machine, model, duration: float) -> tuple[float, int]:
 
     Returns the wall time of the driver calls [s] and the RHS evaluations.
     """
-    sim = machine.simulation
-    n_out = math.floor(duration / sim.output_step + 1e-9) + 1
-    grid = np.empty((n_out, cm.N_STATE))
-    grid[0] = model.y0
-    y = model.y0.copy()
-    memory = ig.new_memory(0.0, min(1e-6, sim.max_step), y.size)
-    memory.next_output[0] = 1
-    window = whirl_window(machine)
-    watch = cw.new_watch(y.size, window, math.ceil(duration / window) + 1, model.energy0)
-    settings = model.settings._replace(output_step=sim.output_step)
+    settings, grid, y, memory, watch = start_driver(machine, model, duration, machine.simulation.output_step)
     wall = 0.0
     status = ig.PAUSED
     while status == ig.PAUSED:  # the step budget of one call ends a slice, as in integrate_machine

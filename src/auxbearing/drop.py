@@ -108,6 +108,29 @@ class Integration(NamedTuple):
     decimated: bool
 
 
+class DriverState(NamedTuple):
+    """What :func:`auxbearing.core.drive.advance` works on, fresh at the drop."""
+
+    settings: ig.Settings
+    grid: np.ndarray  #: output rows, the first one the state at the drop
+    y: np.ndarray
+    memory: ig.Memory
+    watch: cw.Watch
+
+
+def start_driver(machine: Machine, model, duration: float, out_step: float) -> DriverState:
+    """The driver's arrays for a run of ``duration`` with output every ``out_step`` (``model``: machine.kernel())."""
+    n_out = math.floor(duration / out_step + 1e-9) + 1
+    grid = np.empty((n_out, cm.N_STATE))
+    grid[0] = model.y0
+    y = model.y0.copy()
+    memory = ig.new_memory(0.0, min(1e-6, machine.simulation.max_step), y.size)
+    memory.next_output[0] = 1
+    window = whirl_window(machine)
+    watch = cw.new_watch(y.size, window, math.ceil(duration / window) + 1, model.energy0)
+    return DriverState(model.settings._replace(output_step=out_step), grid, y, memory, watch)
+
+
 def integrate_machine(machine: Machine, duration: float, output_step: float | None,
                       progress: Callable[[float, str], None] | None) -> Integration:
     """Run the compiled driver from the drop in slices of the step budget, checking the budgets between slices."""
@@ -118,15 +141,7 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
         out_step, decimated = _output_step(machine, duration)
     else:
         out_step, decimated = output_step, False
-    settings = model.settings._replace(output_step=out_step)
-    n_out = math.floor(duration / out_step + 1e-9) + 1
-    grid = np.empty((n_out, cm.N_STATE))
-    grid[0] = model.y0
-    y = model.y0.copy()
-    memory = ig.new_memory(0.0, min(1e-6, sim.max_step), y.size)
-    memory.next_output[0] = 1
-    window = whirl_window(machine)
-    watch = cw.new_watch(y.size, window, math.ceil(duration / window) + 1, model.energy0)
+    settings, grid, y, memory, watch = start_driver(machine, model, duration, out_step)
     verdict = OK
     wall = 0.0
     while True:

@@ -97,13 +97,19 @@ def _checked_text(text: str, encoding: str) -> str:
     return text
 
 
-def read_text(path: str | Path, field: str = "file") -> str:
-    """A text file's content; one-line errors naming ``field`` and a warning when the encoding was assumed."""
+def existing_file(path: str | Path, field: str = "file") -> Path:
+    """``path`` as a Path when it is a file; otherwise a one-line error naming ``field``."""
     path = Path(path)
     if path.is_dir():
         raise InputError.for_field(field, str(path), "is a folder, not a file")
     if not path.is_file():
         raise InputError.for_field(field, str(path), "not found")
+    return path
+
+
+def read_text(path: str | Path, field: str = "file") -> str:
+    """A text file's content; one-line errors naming ``field`` and a warning when the encoding was assumed."""
+    path = existing_file(path, field)
     try:
         text, encoding, assumed = decode_text(path.read_bytes())
     except ValueError as err:

@@ -25,6 +25,7 @@ import numpy as np
 import xarray as xr
 
 from auxbearing.errors import InputError
+from auxbearing.io import existing_file
 from auxbearing.unit_csv import Column, read_unit_csv, unit_scale
 
 #: Dimension of each channel (keys of :data:`auxbearing.units.SI_UNITS`), required or not.
@@ -99,11 +100,7 @@ def read_netcdf(path: str | Path, units: dict[str, str] | None = None, field: st
 
     Returns and raises as :func:`read_csv`; rows are named by their index along ``time``.
     """
-    path = Path(path)
-    if path.is_dir():
-        raise InputError.for_field(field, str(path), "is a folder, not a file")
-    if not path.is_file():
-        raise InputError.for_field(field, str(path), "not found")
+    path = existing_file(path, field)
     try:
         raw = xr.load_dataset(path, decode_times=False)
     except Exception as err:  # netCDF4/h5py raise several unrelated types for a bad file
