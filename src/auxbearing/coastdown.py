@@ -7,14 +7,15 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   with the clearances of the moment. Each window measures what the motion dissipates, by where the
   heat is made (journal/race and face contacts, inside each bearing, in each mount damper, drag), from
   the energy ledger of the state;
-* **a reduced model** once a window shows the motion has settled (no contact onset, contact either
-  continuous or absent, no whirl, each race rolling with the journal within :data:`ROLL_SLIP`): only the
-  slow quantities move: the spin energy E = J_eff Omega^2 / 2 (J_eff = J_p + sum J_race (w_race / Omega)^2,
-  the races rolling at the ratio the last window measured) falls by the losses the window measured, as
-  torques that hold over the stretch, plus the drag law T0 + c1 Omega + c2 Omega^2 and the process torque;
-  the temperatures follow their networks. A stretch ends when the speed has fallen by
-  ``coastdown.speed_step`` or a clearance has moved by :data:`CLEARANCE_STEP`, and full dynamics checks
-  again (impacts, whirl onset and a closing clearance are seen there).
+* **a reduced model** (:mod:`auxbearing.core.spin`) on the stretches whose state it can represent, as
+  :mod:`auxbearing.coastdown_phases` decides from the window: every race rolling on its journal (in
+  contact or in a steady backward rolling whirl) or free of it, no dry whip, and a whirl or a rattle only
+  when two windows agree. A race that still slides stays in full dynamics until it rolls. Only the slow
+  quantities move there: the rotor's and the free races' spin speeds under the losses the window measured
+  (the bearings' viscous torque as Palmgren's law of the speed, the rest as torques), the drag law
+  T0 + c1 Omega + c2 Omega^2 and the process torque; the temperatures follow their networks. A stretch ends
+  when the speed has fallen by ``coastdown.speed_step`` or a clearance has moved by :data:`CLEARANCE_STEP`,
+  and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there).
 
 Heat goes into one lumped network per plane (:mod:`auxbearing.thermal`; journal, inner race, balls,
 outer race, housing, ambient): contact heat split between journal and race by Charron's partition,
@@ -42,6 +43,7 @@ import xarray as xr
 from auxbearing import __version__
 from auxbearing.ballset import ballset_state
 from auxbearing.coastdown_life import plane_life
+from auxbearing.coastdown_phases import integrate_stretch, plane_window, settled, spin_model
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
@@ -57,14 +59,10 @@ from auxbearing.drop import (
 )
 from auxbearing.errors import InputError
 from auxbearing.life import dynamic_load_rating
-from auxbearing.machine import DRAG_SPEED_SCALE, Machine
+from auxbearing.machine import Machine
 from auxbearing.statics import ISO76_BALL_STRESS
 from auxbearing.thermal import HOUSING, JOURNAL, NODE_NAMES, build_network
 
-#: A race rolls with the journal when its surface speed is within this fraction of the journal's.
-ROLL_SLIP = 0.02
-#: Two windows whose loss torques agree within this fraction show a stationary rattle.
-STATIONARY = 0.3
 #: A reduced stretch ends when a clearance has moved this much since full dynamics last looked [m].
 CLEARANCE_STEP = 1e-6
 #: Longest reduced stretch between two full-dynamics checks [s].
@@ -168,12 +166,11 @@ class _Session:
         self.t = float(self.memory.t[0])
         return status, watch, ledger
 
-    def scale_spin(self, omega: float) -> None:
-        """Set the rotor's spin to ``omega``, the races in proportion (they roll with it)."""
-        ratio = omega / self.y[cm.OMEGA] if self.y[cm.OMEGA] != 0.0 else 0.0
+    def set_speeds(self, omega: float, race_speeds) -> None:
+        """Set the rotor's and the races' spin speeds (the end of a reduced stretch)."""
         self.y[cm.OMEGA] = omega
         for k in range(len(self.machine.planes)):
-            self.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA] *= ratio
+            self.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA] = race_speeds[k]
         self.memory.evaluations[0] = 0  # the first-stage derivative must be recomputed
 
 
@@ -194,119 +191,38 @@ def _window_powers(machine: Machine, y, ledger, length: float) -> dict:
     return out
 
 
-def _window_stats(machine: Machine, session: _Session, watch, powers: dict) -> list[dict]:
-    """Per plane: onsets, contact fraction, mean contact force, whirl classes, race slip, loss power of a window."""
-    from auxbearing.whirl import classify_window
-
+def _window_planes(machine: Machine, watch, powers: dict) -> list:
+    """Each plane's state over the window just run (:func:`auxbearing.coastdown_phases.plane_window`)."""
     n = int(watch.window_count[0])
-    y = session.y
-    stats = []
-    for k, plane in enumerate(machine.planes):
-        records = watch.whirl[:n, k]
-        journal = abs(y[cm.OMEGA]) * plane.journal_radius
-        race = abs(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) * (plane.journal_radius + plane.radial_clearance)
-        stats.append({
-            "onsets": int(watch.onsets[k]),
-            "contact": float(records[:, 2].mean()) if n else 0.0,
-            "force": float(records[:, 6].mean()) if n else 0.0,
-            "classes": {classify_window(r, plane.radial_clearance, plane.journal_radius, 0.0) for r in records},
-            "slip": (race - journal) / journal if journal > 0.0 else 0.0,
-            "torque": float(sum(powers[k])) / max(abs(y[cm.OMEGA]), 1e-300),
-        })
-    return stats
+    return [plane_window(machine, k, watch.whirl[:n, k], int(watch.onsets[k]), powers[k])
+            for k in range(len(machine.planes))]
 
 
-def _settled(now: list[dict], before: list[dict] | None) -> str | None:
-    """How the motion has settled, or None (module docstring).
+def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_end: float):
+    """Advance the slow quantities on the reduced model (:mod:`auxbearing.core.spin`).
 
-    ``"steady"``: per plane no contact onset, contact continuous or absent, no whirl but a forward one, and
-    a race in continuous contact rolling with the journal within :data:`ROLL_SLIP`. ``"stationary"``: the
-    motion still has impacts but this window and the last one (before a stretch, if one came between)
-    agree (loss torque within :data:`STATIONARY`, no backward whirl in either; the contact fraction of a
-    rattle scatters from window to window and does not enter the reduced model): the
-    losses the reduced model carries are then those of a statistically steady rattle, re-measured at every
-    check.
+    The temperatures take one exact step with the stretch's mean heat input (the input changes by at most
+    the speed step within a stretch); the stretch is halved until no clearance moves more than
+    :data:`CLEARANCE_STEP`. Returns the stretch (:class:`auxbearing.coastdown_phases.Stretch`) and the new
+    temperatures.
     """
-    if all(s["onsets"] == 0 and (s["contact"] >= 0.99 or s["contact"] <= 0.01) and s["classes"] <= {"none", "forward"}
-           and (s["contact"] <= 0.01 or abs(s["slip"]) <= ROLL_SLIP) for s in now):
-        return "steady"
-    if before is None:
-        return None
-    for s, b in zip(now, before, strict=True):
-        if not s["classes"] <= {"none", "forward"} or not b["classes"] <= {"none", "forward"}:
-            return None
-        if abs(s["torque"] - b["torque"]) > STATIONARY * max(abs(s["torque"]), abs(b["torque"]), 1e-12):
-            return None
-    return "stationary"
-
-
-# ----------------------------------------------------------------------------- the reduced model
-def _growth_coefficients(network) -> tuple[np.ndarray, np.ndarray]:
-    """d(radial clearance)/dT and d(diametral clearance)/dT per node [m/K] (the growth relations are linear)."""
-    ta = network.ambient_temperature
-    base = np.full(len(NODE_NAMES), ta)
-    radial, diametral = np.zeros(len(NODE_NAMES)), np.zeros(len(NODE_NAMES))
-    for i in range(len(NODE_NAMES)):
-        rise = base.copy()
-        rise[i] += 1.0
-        radial[i], diametral[i] = network.clearance_changes(rise)
-    return radial, diametral
-
-
-def _stretch(machine: Machine, session: _Session, networks, temps, torques, t_end: float):
-    """Advance the slow quantities while the losses hold as torques (module docstring).
-
-    ``torques`` per plane: (contact, bearing, mount) loss torques [N m] measured on the rotor speed. The
-    spin is integrated with the drag law (scipy's RK45 on the speed and the work integrals, events at the
-    speed step and at standstill); the temperatures take one exact step with the stretch's mean heat input
-    (the input changes by at most the speed step within a stretch), halved until no clearance moves more
-    than :data:`CLEARANCE_STEP`. Returns (duration, new speed, new temperatures, heat per plane and source
-    [J], drag loss [J], process work [J], race revolutions per plane).
-    """
-    from scipy.integrate import solve_ivp
-
     coast = machine.coastdown
     y = session.y
     omega0 = float(y[cm.OMEGA])
-    n = len(machine.planes)
-    ratios = [abs(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA] / omega0) for k in range(n)]
-    j_eff = machine.rotor.polar_inertia + sum(p.race_inertia * r**2
-                                              for p, r in zip(machine.planes, ratios, strict=True))
-    loss = sum(sum(torques[k]) for k in range(n))
-
-    def drag(omega):
-        return (coast.drag_torque * math.tanh(omega / DRAG_SPEED_SCALE) + coast.viscous_drag * omega
-                + coast.windage_drag * omega * abs(omega))
-
-    def rates(_, s):
-        omega = s[0]
-        return [-(loss * math.tanh(omega / DRAG_SPEED_SCALE) + drag(omega) - coast.process_torque) / j_eff,
-                abs(omega), drag(omega) * omega, coast.process_torque * omega]
-
-    def slowed(_, s):
-        return abs(s[0]) - abs(omega0) * (1.0 - coast.speed_step)
-
-    def standstill(_, s):
-        return abs(s[0]) - coast.stop_speed
-
-    slowed.terminal = standstill.terminal = True
-    slowed.direction = standstill.direction = -1.0
+    races = [float(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) for k in range(len(machine.planes))]
+    floor = max(abs(omega0) * (1.0 - coast.speed_step), coast.stop_speed)
+    model = spin_model(machine, windows, omega0, races, floor)
     span = min(t_end - session.t, MAX_STRETCH)
     while True:
-        sol = solve_ivp(rates, (0.0, span), [omega0, 0.0, 0.0, 0.0], rtol=1e-10, atol=1e-12 * max(1.0, abs(omega0)),
-                        events=(slowed, standstill))
-        duration = float(sol.t[-1])
-        omega, turned, drag_loss, work = sol.y[:, -1]
-        heat = [np.array(torques[k]) * turned for k in range(n)]
-        new_temps = [net.step(temps[k], _heat_per_node(net, *(heat[k] / max(duration, 1e-300))), duration)
-                     for k, net in enumerate(networks)]
+        result = integrate_stretch(model, omega0, races, span)
+        duration = result.duration
+        new_temps = [net.step(temps[k], _heat_per_node(net, *(np.array(result.heat[k]) / max(duration, 1e-300))),
+                              duration) for k, net in enumerate(networks)]
         moved = max(max(abs(a - b) for a, b in zip(net.clearance_changes(nt), net.clearance_changes(t0), strict=True))
                     for net, nt, t0 in zip(networks, new_temps, temps, strict=True))
         if moved <= CLEARANCE_STEP or duration <= coast.check_window:
-            break
+            return result, new_temps
         span = 0.5 * duration
-    revolutions = [r * turned / (2.0 * math.pi) for r in ratios]
-    return duration, float(omega), new_temps, heat, float(drag_loss), float(work), revolutions
 
 
 # ----------------------------------------------------------------------------- the run
@@ -405,7 +321,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     verdict, reason = drop.summary["verdict"], drop.summary["reason"]
     full_time = session.t
     reduced_time = 0.0
-    counts = {"windows": 0, "stretches": 0, "steady": 0, "stationary": 0}
+    counts = {"windows": 0, "stretches": 0, "states": {}}
     previous = None
     stopped_at = None
 
@@ -430,12 +346,20 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         if until_stop and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
             stopped_at = session.t
             break
-        if time.perf_counter() - wall_start > machine.simulation.max_wall_time:
+        attempts = int(session.memory.steps[0] + session.memory.rejected[0])
+        if attempts >= coast.max_steps:
+            verdict = "step_budget"
+            reason = (f"the step budget coastdown.max_steps = {coast.max_steps:.3g} was used up at "
+                      f"t = {session.t:.2f} s of the coast-down (the motion stayed that long in states only full "
+                      "dynamics carries); raise it to go on")
+            break
+        if time.perf_counter() - wall_start > machine.simulation.max_wall_time:  # interactive use only
             verdict = "wall_time_budget"
-            reason = (f"the wall-time budget drop.max_wall_time = {machine.simulation.max_wall_time:g} s was used up "
+            reason = (f"the wall-time guard drop.max_wall_time = {machine.simulation.max_wall_time:g} s was reached "
                       f"at t = {session.t:.2f} s of the coast-down; raise it to go on")
             break
-        length = min(coast.check_window, t_end - session.t)
+        # a window holds at least one closed whirl window, which its states are judged on
+        length = min(max(coast.check_window, session.window), t_end - session.t)
         omega_start = float(session.y[cm.OMEGA])
         status, watch, ledger = session.full(length)
         counts["windows"] += 1
@@ -452,42 +376,42 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         powers = _window_powers(machine, session.y, ledger, length)
         temps = [net.step(limits.temps[k], _heat_per_node(net, *powers[k]), length) for k, net in enumerate(networks)]
         omega_mean = 0.5 * (omega_start + float(session.y[cm.OMEGA]))
-        for k in range(len(networks)):
-            revs = abs(omega_mean) * abs(session.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) / max(
-                abs(session.y[cm.OMEGA]), 1e-300) * length / (2.0 * math.pi)
-            overrolling[k].append((revs, _window_load(machine, session, watch, k)))
+        windows = _window_planes(machine, watch, powers)
+        for k, w in enumerate(windows):
+            revs = abs(w.race_speed) * length / (2.0 * math.pi)
+            overrolling[k].append((revs, _window_load(machine, k, w)))
         verdict, reason = limits.update(temps, session.t)
         record(0)
         if progress is not None:
             rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
             progress(min(1.0, session.t / t_end), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
-        stats = _window_stats(machine, session, watch, powers)
-        settled = _settled(stats, previous)
-        previous = stats
-        if verdict != OK or mode == "full" or settled is None:
+        carried = settled(windows, previous)
+        previous = windows
+        if verdict != OK or mode == "full" or carried is None:
             continue
-        counts[settled] += 1
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
             continue  # at standstill: the loop's top ends the run
-        torques = [tuple(p / abs(omega_mean) for p in powers[k]) for k in range(len(networks))]
-        loads = [_window_load(machine, session, watch, k) for k in range(len(networks))]
-        span, omega, temps, heat, drag_loss, work, revs = _stretch(machine, session, networks, limits.temps,
-                                                                    torques, t_end)
-        session.scale_spin(omega)
+        for w in carried:
+            counts["states"][w.state] = counts["states"].get(w.state, 0) + 1
+        loads = [_window_load(machine, k, w) for k, w in enumerate(carried)]
+        stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end)
+        session.set_speeds(stretch.rotor_speed, stretch.race_speeds)
         for k in range(len(networks)):
             for j in range(3):
-                session.y[cm.HEAT_AT + 3 * k + j] += heat[k][j]
-            overrolling[k].append((revs[k], loads[k]))
-        session.y[cm.DRAG_LOSS] += drag_loss
-        session.y[cm.W_IN] += work
-        session.t += span
+                session.y[cm.HEAT_AT + 3 * k + j] += stretch.heat[k][j]
+            overrolling[k].append((stretch.race_revolutions[k], loads[k]))
+        session.y[cm.DRAG_LOSS] += stretch.drag_loss
+        session.y[cm.W_IN] += stretch.work
+        session.t += stretch.duration
         session.memory.t[0] = session.t
-        reduced_time += span
+        reduced_time += stretch.duration
         counts["stretches"] += 1
+        previous = None  # the next window starts from a new state: it is judged on its own
         verdict, reason = limits.update(temps, session.t)
         record(1)
         if progress is not None:
-            progress(min(1.0, session.t / t_end), f"t = {session.t:.2f} s, {abs(omega) * 30 / math.pi:.0f} rpm")
+            progress(min(1.0, session.t / t_end),
+                     f"t = {session.t:.2f} s, {abs(stretch.rotor_speed) * 30 / math.pi:.0f} rpm")
     if verdict == OK and until_stop and stopped_at is None and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
         stopped_at = session.t
     history_ds = _history(machine, history)
@@ -502,19 +426,15 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     return CoastdownRun(drop, history_ds, summary, lives)
 
 
-def _window_load(machine: Machine, session: _Session, watch, k: int) -> float:
+def _window_load(machine: Machine, k: int, window) -> float:
     """ISO 281 equivalent load on plane k's bearing over a window [N].
 
-    Radial: the window's mean contact force plus the race's weight; axial: the face force at its end.
+    Radial: the window's mean journal contact force plus the race's weight; axial: its mean face force.
     """
     from auxbearing.coastdown_life import equivalent_load
-    from auxbearing.core.probes import plane_diagnostics
 
-    n = int(watch.window_count[0])
-    radial = float(np.mean(watch.whirl[:n, k, 6])) if n else 0.0
-    radial += machine.planes[k].race_mass * machine.simulation.gravity
-    axial = float(plane_diagnostics(session.y, session.core, k)[cm.D_FA])
-    return equivalent_load(machine.planes[k].bearing, radial, axial)
+    radial = window.force + machine.planes[k].race_mass * machine.simulation.gravity
+    return equivalent_load(machine.planes[k].bearing, radial, window.axial_force)
 
 
 def _history(machine: Machine, rows: list[dict]) -> xr.Dataset:
@@ -588,8 +508,9 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
         "machine": machine.name, "verdict": verdict, "reason": reason,
         "coastdown_time_s": stopped_at, "reached_standstill": stopped_at is not None, "until_stop": until_stop,
         "simulated_s": session.t, "full_dynamics_s": full_time, "reduced_model_s": reduced_time,
+        "full_dynamics_steps": int(session.memory.steps[0] + session.memory.rejected[0]),
         "windows": counts["windows"], "reduced_stretches": counts["stretches"],
-        "stretches_from_steady_motion": counts["steady"], "stretches_from_stationary_rattle": counts["stationary"],
+        "reduced_plane_states": counts["states"],
         "final_rotor_speed_rpm": float(session.y[cm.OMEGA]) * 30.0 / math.pi,
         "energy_balance_error": float(session.energy_error()), "wall_time_s": wall,
         "required_drops": machine.life.required_drops,

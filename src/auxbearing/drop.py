@@ -33,6 +33,7 @@ from auxbearing.drop_params import PARAMETERS, DropCase, Param, Rotor, convert, 
 from auxbearing.errors import ConvergenceError
 from auxbearing.io import to_jsonable
 from auxbearing.machine import Machine, planar_machine
+from auxbearing.machine_kernel import journal_pressure
 from auxbearing.statics import ISO76_BALL_STRESS, safety_factor
 from auxbearing.whirl import natural_frequency, timeline
 
@@ -379,6 +380,7 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
     else:
         reason = f"the integration could not go on at t = {t_end * 1e3:.4g} ms (step size underflow)"
     valid = verdict == OK
+    seen = verdict != INTEGRATION_FAILED
     planes = []
     n_windows = int(watch.window_count[0])
     for k, plane in enumerate(machine.planes):
@@ -398,13 +400,18 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
         spin = machine.rotor.speed
         rolling = (np.abs(rotor_surface) > 0) & (race_surface * np.sign(spin) >= 0.95 * np.abs(rotor_surface))
         spun = np.nonzero(rolling)[0]
+        angle, pressure = journal_pressure(plane, float(watch.peak[0, k]))
         planes.append({
             "name": plane.name, "bearing": plane.bearing.name, "type": plane.bearing.type,
-            "peak_contact_force_N": float(watch.peak[0, k]) if valid else None,
-            "peak_ball_stress_MPa": peak_stress / 1e6 if valid else None,
-            "s0": static_safety_factor(peak_stress) if valid else None,
+            # peaks up to the end of the run, also of one that stopped at a limit or a budget: they are what the
+            # model saw inside its range (the verdict says whether the run finished); a failed integration has none
+            "peak_contact_force_N": float(watch.peak[0, k]) if seen else None,
+            "peak_ball_stress_MPa": peak_stress / 1e6 if seen else None,
+            "s0": static_safety_factor(peak_stress) if seen else None,
+            "peak_journal_pressure_MPa": pressure / 1e6 if seen else None,
+            "journal_contact_half_angle_deg": math.degrees(angle) if seen else None,
             "final_contact_force_N": float(sel.normal_force.values[-1]),
-            "peak_axial_force_N": float(watch.peak[2, k]) if valid else None,
+            "peak_axial_force_N": float(watch.peak[2, k]) if seen else None,
             "final_axial_force_N": float(sel.axial_force.values[-1]),
             "whirl": whirl["whirl"], "backward_whirl_onset_ms": whirl["backward_whirl_onset_ms"],
             "backward_whirl_at_end": whirl["backward_at_end"], "whirl_frequency_Hz": whirl["whirl_frequency_Hz"],
@@ -414,8 +421,9 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
             "contact_fraction": float(np.mean(pen[after] > 0.0)) if after.any() else 0.0,
             "race_spin_up_ms": float(ds.time.values[spun[0]] * 1e3) if spun.size else None,
             "final_race_speed_rad_s": float(sel.race_speed.values[-1]),
-            "peak_ball_load_N": float(watch.peak_load[k]) if valid else None,
-            "shoulder_use": float(watch.shoulder_use[k]),
+            "peak_ball_load_N": float(watch.peak_load[k]) if seen else None,
+            "shoulder_use": float(watch.shoulder_use[k]), "peaks_cover": "the whole run" if valid else
+            f"the run up to its stop at {t_end * 1e3:.2f} ms",
             "peak_force_time_ms": float(watch.peak_time[0, k]) * 1e3,
             "peak_stress_time_ms": float(watch.peak_time[1, k]) * 1e3,
             "max_mount_deflection_um": float(np.max(sel.mount_deflection.values)) * 1e6,
@@ -438,10 +446,13 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
 
 def _stop_sentence(verdict: str, where: str, t: float, value: float, machine: Machine, k: int) -> str:
     when = f"at t = {t * 1e3:.3f} ms"
-    if verdict == "line_contact_overload":
-        return (f"{where}: the journal/race contact force reached {value:.4g} N {when}, beyond the range of the "
-                f"line-contact law (Hertz half-width above {machine.simulation.line_contact_limit:g} of the journal "
-                "radius): the design fails by overload of the touchdown contact")
+    if verdict == "journal_contact_overstress":
+        plane = machine.planes[k]
+        angle, pressure = journal_pressure(plane, value)
+        return (f"{where}: the journal/race contact force reached {value:.4g} N {when}, a peak contact pressure of "
+                f"{pressure / 1e6:.0f} MPa (contact half-angle {math.degrees(angle):.0f} deg), beyond the "
+                f"{plane.journal_pressure_limit / 1e6:.0f} MPa the journal and race surfaces carry without permanent "
+                "set (touchdown.journal_pressure_limit): the touchdown contact is overloaded")
     if verdict == "ball_stress_beyond_elastic":
         return (f"{where}: a ball contact reached {value / 1e6:.0f} MPa {when}, beyond "
                 f"{machine.simulation.ball_stress_limit / 1e6:.0f} MPa where elastic Hertz values stop meaning "

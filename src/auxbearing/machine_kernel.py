@@ -14,6 +14,7 @@ import numpy as np
 from auxbearing.ballset import ballset_params
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
+from auxbearing.core.hertz import journal_contact, journal_force_at_pressure
 from auxbearing.machine import DRAG_SPEED_SCALE, JOURNAL_COMPLIANCE, Machine, TouchdownPlane
 
 
@@ -65,21 +66,35 @@ def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
     )
 
 
+def journal_contact_length(plane: TouchdownPlane) -> float:
+    """Length of the journal/race contact [m]: the bearing's width (two ball diameters when it gives none)."""
+    b = plane.bearing
+    return b.width if b.width is not None else 2.0 * b.ball_diameter
+
+
+def journal_pressure(plane: TouchdownPlane, force: float) -> tuple[float, float]:
+    """Contact half-angle [rad] and peak pressure [Pa] of the journal in its race at ``force`` [N].
+
+    The conformal contact of :func:`auxbearing.core.hertz.journal_contact` (Persson's pin in a hole), the force
+    spread over :func:`journal_contact_length`.
+    """
+    return journal_contact(float(force), journal_contact_length(plane),
+                           plane.bearing.ring_material.compliance + JOURNAL_COMPLIANCE, plane.radial_clearance,
+                           plane.journal_radius)
+
+
 def _limits(machine: Machine) -> cm.Limits:
     sim = machine.simulation
     n = cm.MAX_PLANES
-    force_per_length = np.full(n, np.inf)
-    length = np.ones(n)
+    journal_force = np.full(n, np.inf)
     shoulder_i, shoulder_o = np.full(n, np.pi), np.full(n, np.pi)
     groove_i, groove_o = np.ones(n), np.ones(n)
     travel, axial = np.full(n, np.inf), np.full(n, np.inf)
     for k, p in enumerate(machine.planes):
         b = p.bearing
-        # Hertz half-width of a journal in a bore: b/r = sqrt(4 F' / (pi E* s)) (Johnson 1985, Eq. 4.43 with
-        # the conformal radius r (r + s)/s ~ r^2/s), so b/r <= lam means F' <= lam^2 pi E* s / 4
-        e_star = 1.0 / (b.ring_material.compliance + JOURNAL_COMPLIANCE)
-        force_per_length[k] = sim.line_contact_limit**2 * math.pi * e_star * p.radial_clearance / 4.0
-        length[k] = b.width if b.width is not None else 2.0 * b.ball_diameter
+        journal_force[k] = journal_force_at_pressure(p.journal_pressure_limit, journal_contact_length(p),
+                                                     b.ring_material.compliance + JOURNAL_COMPLIANCE,
+                                                     p.radial_clearance, p.journal_radius)
         for ratio, angle_out, groove_out in ((b.inner_groove_ratio, shoulder_i, groove_i),
                                               (b.outer_groove_ratio, shoulder_o, groove_o)):
             groove = ratio * b.ball_diameter
@@ -91,7 +106,7 @@ def _limits(machine: Machine) -> cm.Limits:
     def floats(a):
         return tuple(float(v) for v in a)
 
-    return cm.Limits(floats(force_per_length), floats(length), sim.ball_stress_limit, floats(shoulder_i),
+    return cm.Limits(floats(journal_force), sim.ball_stress_limit, floats(shoulder_i),
                      floats(shoulder_o), floats(groove_i), floats(groove_o), floats(travel), floats(axial),
                      sim.energy_tolerance)
 

@@ -41,9 +41,9 @@ def test_heavy_fast_rotor_prints_its_failure_not_a_result():
     result = _run("drop", "--machine", "heavy_fast_rotor", "--json")
     assert result.exit_code == 0
     summary = json.loads(result.stdout)
-    assert summary["verdict"] == "line_contact_overload"
-    assert summary["planes"][0]["peak_contact_force_N"] is None
-    assert "warning: verdict line_contact_overload" in result.stderr
+    assert summary["verdict"] == "contact_ellipse_over_shoulder"
+    assert summary["planes"][0]["peaks_cover"].startswith("the run up to its stop")
+    assert "warning: verdict contact_ellipse_over_shoulder" in result.stderr
 
 
 def test_coastdown_of_a_drop_out_of_range_reports_no_life(tmp_path):
@@ -51,11 +51,11 @@ def test_coastdown_of_a_drop_out_of_range_reports_no_life(tmp_path):
     result = _run("coastdown", "--machine", "heavy_fast_rotor", "--until-stop", "--json", "--out", str(out))
     assert result.exit_code == 0
     summary = json.loads(result.stdout)
-    assert summary["verdict"] == "line_contact_overload" and summary["reached_standstill"] is False
+    assert summary["verdict"] == "contact_ellipse_over_shoulder" and summary["reached_standstill"] is False
     plane = summary["planes"][0]
     for key in ("damage_per_drop", "drops_to_failure", "drops_to_dent_limit", "governing", "allowed_drops"):
         assert plane[key] is None, key
-    assert plane["life_note"] == "not computed: the drop ended with verdict line_contact_overload"
+    assert plane["life_note"] == "not computed: the drop ended with verdict contact_ellipse_over_shoulder"
     files = {p.name for p in out.iterdir()}  # no stress cycles of a history cut at the range exit
     assert "coastdown_summary.json" in files and not any(name.startswith("stress_cycles") for name in files)
 

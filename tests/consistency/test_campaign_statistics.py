@@ -118,7 +118,7 @@ def _store_with_outputs(tmp_path, campaign, y, ok=None):
     arrays = {name: np.zeros(runs, dtype) for name, (dtype, *_) in sample_vars.items()}
     arrays.update({name: np.zeros((runs, 1), dtype) for name, (dtype, *_) in plane_vars.items()})
     arrays["verdict"][:] = np.where(ok if ok is not None else np.ones(runs, bool), VERDICTS.index("ok"),
-                                    VERDICTS.index("line_contact_overload"))
+                                    VERDICTS.index("journal_contact_overstress"))
     arrays["peak_ball_stress"][:, 0] = np.asarray(y) * 1e6
     arrays["peak_contact_force"][:, 0] = y
     arrays["s0"][:] = 2.0

@@ -157,9 +157,15 @@ def test_energy_audit_closes_on_every_example(name):
 
 def test_heavy_fast_rotor_stops_with_its_cause():
     summary = run_machine(read_machine("heavy_fast_rotor")).summary
-    assert summary["verdict"] == "line_contact_overload"
+    # the journal contact stays within its material's limit (a conformal contact at ~200 MPa); the balls run
+    # over the groove shoulder under backward whirl, a physical end of the bearing's range
+    assert summary["verdict"] == "contact_ellipse_over_shoulder"
     assert "QJ208" in summary["reason"] and "ms" in summary["reason"]
-    assert summary["planes"][0]["peak_contact_force_N"] is None  # nothing from outside the range is reported
+    plane = summary["planes"][0]
+    # a failing run still reports what the model saw up to its stop
+    assert plane["peak_ball_stress_MPa"] > 3000.0 and plane["s0"] is not None
+    assert 100.0 < plane["peak_journal_pressure_MPa"] < 4000.0
+    assert plane["peaks_cover"].startswith("the run up to its stop")
 
 
 @pytest.mark.slow

@@ -47,8 +47,8 @@ def check_budget(machine, duration: float, blame: str, raise_with: str) -> None:
 def plausibility(machine, typed: dict) -> list[str]:
     """Warnings for legal inputs whose results would mean little (``typed`` names each input).
 
-    An unbalance beyond the clearance, a clearance large against the journal, a line-contact constant
-    no material has.
+    An unbalance beyond the clearance, a clearance large against the journal; a line-contact constant no
+    material has is refused (:class:`~auxbearing.errors.InputError`).
     """
     from auxbearing.core.hertz import line_contact_constant
     from auxbearing.machine import JOURNAL_COMPLIANCE
@@ -71,9 +71,11 @@ def plausibility(machine, typed: dict) -> list[str]:
         steel = float(line_contact_constant(length, b.ring_material.compliance + JOURNAL_COMPLIANCE))
         ratio = plane.line_stiffness / steel
         if not 1.0 / LINE_STIFFNESS_SPAN <= ratio <= LINE_STIFFNESS_SPAN:
-            notes.append(f"{typed['line_stiffness']}: K_l = {plane.line_stiffness:.4g} N/m**(10/9) is {ratio:.3g} "
-                         f"times Palmgren's constant of a steel line contact as long as the race ({length * 1e3:g} mm: "
-                         f"{steel:.4g}); no journal and race material is that far from steel")
+            # refused, not warned: such a contact chatters (10^5 impacts a drop) and no material pair has it
+            raise InputError(f"{typed['line_stiffness']}: K_l = {plane.line_stiffness:.4g} N/m**(10/9) is "
+                             f"{ratio:.3g} times Palmgren's constant of a steel line contact as long as the race "
+                             f"({length * 1e3:g} mm: {steel:.4g}); no journal and race material is that far from "
+                             f"steel (allowed: within a factor {LINE_STIFFNESS_SPAN:g})")
     notes += inertia_notes(rotor, machine.planes, typed["polar_inertia"])
     return notes
 

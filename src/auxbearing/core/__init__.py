@@ -55,6 +55,7 @@ try:
         integrate,
         machine,
         probes,
+        spin,
         statics,
         thermal,
         watch,

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from numba import njit
 
-from auxbearing.core import machine, watch
+from auxbearing.core import machine, spin, watch
 from auxbearing.core.integrate import dopri5
 
 
@@ -19,3 +19,9 @@ def advance(m, w, y, t_end, settings, memory, grid):
     Arguments as :func:`auxbearing.core.integrate.dopri5`; returns its status.
     """
     return dopri5(machine.rhs, watch.observe, m, w, y, t_end, settings, memory, grid)
+
+
+@njit(cache=True)
+def advance_spin(m, obs, y, t_end, settings, memory, grid):
+    """DOPRI5 on the coast-down's reduced model (:func:`auxbearing.core.spin.rhs` and its observer)."""
+    return dopri5(spin.rhs, spin.observe, m, obs, y, t_end, settings, memory, grid)

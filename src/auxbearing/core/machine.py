@@ -150,8 +150,7 @@ class Planes(NamedTuple):
 class Limits(NamedTuple):
     """Range limits of the model (:mod:`auxbearing.core.watch` stops a run that crosses one), SI; (2,) are tuples."""
 
-    line_force_per_length: tuple  #: (2,) journal/race contact force per unit length [N/m]
-    line_length: tuple  #: (2,) contact length of the journal on the race [m]
+    journal_force: tuple  #: (2,) journal/race contact force whose peak pressure reaches the material's limit [N]
     ball_stress: float  #: largest Hertz stress the elastic ball contact may mean [Pa]
     shoulder_angle_inner: tuple  #: (2,) groove arc from the bottom to the shoulder [rad]
     shoulder_angle_outer: tuple  #: (2,)

@@ -10,7 +10,8 @@
   the contact time, the mean contact force and the spin speeds, integrated over windows of fixed
   length (bounded memory, whatever the run's length) and classified by :mod:`auxbearing.whirl`;
 * the model's range, :class:`~auxbearing.core.machine.Limits` (a run that leaves it stops; the
-  code, plane, time and value are kept): line-contact force per unit length beyond the law's range,
+  code, plane, time and value are kept): a journal contact force whose peak pressure passes the journal
+  and race material's limit (the conformal contact of :func:`auxbearing.core.hertz.journal_contact`),
   ball stress beyond the elastic-contact limit, a contact ellipse running over the groove
   shoulder, a mount beyond its travel, a race running off its balls axially, and more energy in the
   machine than was brought in (a numerical run-away).
@@ -44,8 +45,8 @@ from auxbearing.core.machine import (
 from auxbearing.core.probes import ball_extremes, orbit
 
 #: Stop codes of :func:`observe` (0: none).
-LINE_CONTACT, BALL_STRESS, SHOULDER, MOUNT_TRAVEL, AXIAL_RUNAWAY, ENERGY_GAIN = range(1, 7)
-STOP_NAMES = {LINE_CONTACT: "line_contact_overload", BALL_STRESS: "ball_stress_beyond_elastic",
+JOURNAL_PRESSURE, BALL_STRESS, SHOULDER, MOUNT_TRAVEL, AXIAL_RUNAWAY, ENERGY_GAIN = range(1, 7)
+STOP_NAMES = {JOURNAL_PRESSURE: "journal_contact_overstress", BALL_STRESS: "ball_stress_beyond_elastic",
               SHOULDER: "contact_ellipse_over_shoulder", MOUNT_TRAVEL: "mount_beyond_travel",
               AXIAL_RUNAWAY: "race_runs_off_axially", ENERGY_GAIN: "energy_gain"}
 #: Step ends whose largest ball load is below this fraction of the running peak load cannot hold the
@@ -54,7 +55,7 @@ STOP_NAMES = {LINE_CONTACT: "line_contact_overload", BALL_STRESS: "ball_stress_b
 STRESS_CANDIDATE_LOAD = 0.7
 #: Columns of a whirl-window record.
 WHIRL_FIELDS = ("whirl_speed", "mean_radius", "contact_fraction", "spin_speed", "race_speed", "duration",
-                "mean_normal_force")
+                "mean_normal_force", "mean_axial_force")
 _FORCE, _STRESS, _AXIAL = range(3)
 
 
@@ -149,6 +150,7 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
         acc[4] += y1[b + ROMEGA] * h
         acc[5] += h
         acc[6] += diags[k, D_FN] * h
+        acc[7] += abs(diags[k, D_FA]) * h
     if t + h >= w.window_end[0]:
         i = w.window_count[0]
         if i < w.whirl.shape[0]:
@@ -163,6 +165,7 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
                     w.whirl[i, k, 4] = acc[4] / span
                     w.whirl[i, k, 5] = span
                     w.whirl[i, k, 6] = acc[6] / span
+                    w.whirl[i, k, 7] = acc[7] / span
                 for j in range(acc.size):
                     acc[j] = 0.0
             w.window_count[0] = i + 1
@@ -204,8 +207,8 @@ def observe(t, h, y0, y1, coeff, m, w):
         _track_peak(w, _STRESS, k, stress, t, h, coeff, m, tmp)
         _track_peak(w, _AXIAL, k, abs(diag[D_FA]), t, h, coeff, m, tmp)
         if code == 0:
-            if diag[D_FN] > lim.line_force_per_length[k] * lim.line_length[k]:
-                code = _stop(w, LINE_CONTACT, k, t + h, diag[D_FN])
+            if diag[D_FN] > lim.journal_force[k]:
+                code = _stop(w, JOURNAL_PRESSURE, k, t + h, diag[D_FN])
             elif stress > lim.ball_stress:
                 code = _stop(w, BALL_STRESS, k, t + h, stress)
             elif diag[D_MOUNT] > lim.mount_travel[k]:

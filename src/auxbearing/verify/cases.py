@@ -61,7 +61,8 @@ class Cases:
     campaign_store: str | None = None
     notes: list[str] = field(default_factory=list)
     tables: tuple[str, ...] = ()  #: the tables the machine file gives (to say where a value came from)
-    partial_coastdown: bool = False  #: the coast-down stopped short of standstill on purpose (--quick)
+    #: why the coast-down stopped short of standstill without a finding (--quick, a budget); empty: it did not
+    partial_coastdown: str = ""
 
 
 def verify_settings(data: dict) -> dict:
@@ -77,7 +78,7 @@ def variant(data: dict, name: str, base: Path | None, rotor: dict | None = None,
         tables.setdefault("rotor", {}).update(rotor)
     if drop:
         tables.setdefault("drop", {}).update(drop)
-    return machine_from_mapping(tables, name, base)
+    return machine_from_mapping(tables, name, base).for_batch()  # a verdict's work is bounded by steps alone
 
 
 def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, samples: int | None = None,
@@ -115,10 +116,13 @@ def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, sam
                                         duration=min(QUICK_COASTDOWN, machine.coastdown.max_time))
         cases.notes.append(f"--quick: the coast-down ran for its first {QUICK_COASTDOWN:g} s only; temperatures, "
                            "clearances and life cover that part")
-        cases.partial_coastdown = cases.coastdown.summary["coastdown_time_s"] is None
+        if cases.coastdown.summary["coastdown_time_s"] is None:
+            cases.partial_coastdown = "only the first part of the coast-down ran (--quick): run without --quick"
     else:
         say("coast-down with heat")
         cases.coastdown = run_coastdown(cases.machine)
+        if cases.coastdown.summary["verdict"] in ("step_budget", "wall_time_budget"):
+            cases.partial_coastdown = f"the coast-down reached a budget ({cases.coastdown.summary['reason']})"
     if samples is not None:
         n = samples
     elif quick:

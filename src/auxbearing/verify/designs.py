@@ -107,7 +107,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         tables = _design_tables(data, machine, x)
         tables.setdefault("drop", {}).update(duration)
         try:
-            run = run_machine(machine_from_mapping(tables, name, base), lean=True)
+            run = run_machine(machine_from_mapping(tables, name, base).for_batch(), lean=True)
         except InputError as err:  # a geometry the bearing cannot have (e.g. clearance past the bore)
             point = {"x": x, "worst": -1.0, "binding": f"invalid geometry: {err}", "margins": {}}
             evaluated.append(point)

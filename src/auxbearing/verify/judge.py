@@ -46,13 +46,20 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     verdicts = {case: run.summary["verdict"] for case, run in cases.drops.items()}
     if cases.coastdown is not None:
         verdicts["coast-down"] = cases.coastdown.summary["verdict"]
-    bad = {c: v for c, v in verdicts.items() if v != "ok"}
-    reasons = {c: (cases.drops[c].summary if c in cases.drops else cases.coastdown.summary)["reason"] for c in bad}
-    out.append(yes_no("no run leaves the model's range or a limit", "every run ends ok",
-                      "all ok" if not bad else "; ".join(f"{c}: {v}" for c, v in bad.items()), not bad,
-                      "issue 12: a run outside the model's range is a failed design",
-                      "; ".join(f"{c}: {r}" for c, r in reasons.items()) or "every drop and the coast-down stayed "
-                                                                                 "in range"))
+    bad = {c: v for c, v in verdicts.items() if v not in ("ok", *BUDGETS)}
+    spent = {c: v for c, v in verdicts.items() if v in BUDGETS}
+    reasons = {c: (cases.drops[c].summary if c in cases.drops else cases.coastdown.summary)["reason"]
+               for c in (*bad, *spent)}
+    range_name, range_origin = ("no run leaves the model's range or a limit",
+                                "a run outside the model's range is a failed design")
+    if bad or not spent:
+        out.append(yes_no(range_name, "every run ends ok",
+                          "all ok" if not bad else "; ".join(f"{c}: {v}" for c, v in bad.items()), not bad,
+                          range_origin, "; ".join(f"{c}: {reasons[c]}" for c in bad) or
+                          "every drop and the coast-down stayed in range"))
+    else:  # a budget reached is no finding about the machine: not checked, never a pass or a fail
+        out.append(not_checked(range_name, "budget reached: " + "; ".join(f"{c}: {reasons[c]}" for c in spent),
+                               range_origin))
     # no sustained backward whirl or dry whip
     whirls = [(case, p["name"], p["backward_whirl_onset_ms"], p["whirl"]) for case, _, p in _drop_planes(cases)
               if p["backward_whirl_onset_ms"] is not None or p["whirl"] in BACKWARD]
@@ -117,11 +124,14 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
         out.append(not_checked("journal excursion against the seal clearance", "give criteria.seal_clearance to "
                                "check it", "user input"))
     if cases.partial_coastdown:
-        out = [_unsettled(c) if c.name in PARTIAL_COASTDOWN_CRITERIA else c for c in out]
+        out = [_unsettled(c, cases.partial_coastdown) if c.name in PARTIAL_COASTDOWN_CRITERIA else c for c in out]
     if cases.campaign is not None:
         out.append(_whirl_probability(cases.campaign, criteria))
     return out
 
+
+#: Verdicts of a run that reached a budget of work: its outcome is not known.
+BUDGETS = ("step_budget", "wall_time_budget")
 
 #: Criteria a coast-down cut short (``--quick``) can fail but not pass: temperatures and the closing clearance
 #: go on changing, and the over-rolling of the rest of the run adds damage.
@@ -188,12 +198,11 @@ def _drops_to_show(rate: float, limit: float) -> int | None:
     return high
 
 
-def _unsettled(c: Criterion) -> Criterion:
-    """A criterion a partial coast-down passed: kept with its finding, but not checked."""
+def _unsettled(c: Criterion, why: str) -> Criterion:
+    """A criterion a partial coast-down passed: kept with its finding, but not checked (``why``: what cut it)."""
     if c.passed is not True:
         return c
-    return c._replace(passed=None, kind="not checked", evidence=f"{c.evidence}; only the first part of the "
-                      "coast-down ran (--quick), so this is not a pass: run without --quick")
+    return c._replace(passed=None, kind="not checked", evidence=f"{c.evidence}; {why}, so this is not a pass")
 
 
 def _ballset(cases: Cases, k: int):

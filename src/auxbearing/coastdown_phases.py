@@ -1,0 +1,206 @@
+"""Which state a coast-down is in, and the reduced model that carries the states it can represent.
+
+After every full-dynamics window (:mod:`auxbearing.coastdown`) each touchdown plane is put in one state,
+from the window's whirl records (:data:`auxbearing.core.watch.WHIRL_FIELDS`) and onsets:
+
+* ``free``: out of contact all the window; the race spins down on its own bearing torque;
+* ``rolling``: in contact all the window, no impact, no whirl but a forward one, and the race rolls on the
+  journal: the slip of the contact, v = rho_orbit w_whirl + r Omega - R w_race over r |Omega| (window means;
+  the journal centre's orbit speed enters, so a journal rolling round the bore is not taken for a sliding
+  race), within :data:`ROLL_SLIP`;
+* ``whirling``: the same, but in steady backward rolling whirl (every whirl record ``backward_rolling``,
+  Jiang 2007: the no-slip condition s w_whirl = R w_race - r Omega fixes the race-to-rotor ratio);
+* ``rattling``: rolling within :data:`ROLL_SLIP`, no whirl but a forward one, with impacts (a light
+  journal bouncing in the bottom of the bore, or the unbalance lifting it once a turn);
+* ``sliding``: a race that does not roll (still being spun up, or braked): full dynamics only;
+* ``unsettled``: dry whip, a slipping backward whirl, or a window that changes class.
+
+A stretch is handed to the reduced model (:mod:`auxbearing.core.spin`) only when every plane is free,
+rolling, whirling or rattling, and the window before agreed (same states, loss torques within
+:data:`STATIONARY`); the two windows' mean losses are carried. A sliding race stays in full
+dynamics until it rolls: the reduced model has no state for the race's own speed while it is driven.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from auxbearing.core import drive, spin
+from auxbearing.core import integrate as ig
+from auxbearing.core.bearing_friction import palmgren_viscous_torque
+from auxbearing.core.watch import WHIRL_FIELDS
+from auxbearing.machine import DRAG_SPEED_SCALE, Machine
+from auxbearing.whirl import classify_window
+
+#: A race rolls on its journal when the contact's mean slip is within this fraction of the journal's surface speed.
+ROLL_SLIP = 0.02
+#: Two windows of a whirl or a rattle whose loss torques agree within this fraction show a steady state.
+STATIONARY = 0.3
+#: States the reduced model represents (module docstring).
+REDUCIBLE = ("free", "rolling", "whirling", "rattling")
+_F = {name: i for i, name in enumerate(WHIRL_FIELDS)}
+
+
+class PlaneWindow(NamedTuple):
+    """What one full-dynamics window showed of one plane (SI)."""
+
+    state: str
+    onsets: int
+    contact: float  #: contact fraction
+    force: float  #: mean journal contact force [N]
+    axial_force: float  #: mean |axial force| of the collar on the race face [N]
+    rotor_speed: float  #: mean Omega [rad/s]
+    race_speed: float  #: mean race speed [rad/s]
+    whirl_speed: float  #: mean whirl speed of the journal centre [rad/s]
+    slip: float  #: mean contact slip over the journal's surface speed [-]
+    powers: tuple  #: mean heat powers (contact, bearing, mount) [W]
+
+    @property
+    def torque(self) -> float:
+        """Loss of the plane as a torque on the rotor speed [N m]."""
+        return float(sum(self.powers)) / max(abs(self.rotor_speed), 1e-300)
+
+
+def _means(records: np.ndarray) -> np.ndarray:
+    weights = records[:, _F["duration"]]
+    total = weights.sum()
+    if total <= 0.0:
+        return np.zeros(records.shape[1])
+    return (records * weights[:, None]).sum(axis=0) / total
+
+
+def plane_window(machine: Machine, k: int, records: np.ndarray, onsets: int, powers: tuple) -> PlaneWindow:
+    """Classify plane k over one window (module docstring); ``records`` are its closed whirl windows."""
+    plane = machine.planes[k]
+    r, s = plane.journal_radius, plane.radial_clearance
+    mean = _means(records)
+    omega, race, whirl = mean[_F["spin_speed"]], mean[_F["race_speed"]], mean[_F["whirl_speed"]]
+    contact = float(mean[_F["contact_fraction"]])
+    journal = r * abs(omega)
+    slip = ((mean[_F["mean_radius"]] * whirl + r * omega - (r + s) * race) / journal) if journal > 0.0 else 0.0
+    classes = {classify_window(rec, s, r, 0.0) for rec in records}
+    if records.shape[0] == 0:
+        state = "unsettled"  # no closed whirl window: nothing to judge the window on
+    elif contact <= 0.01 and onsets == 0:
+        state = "free"
+    elif abs(slip) > ROLL_SLIP:
+        state = "sliding"
+    elif classes <= {"none", "forward"}:
+        state = "rolling" if onsets == 0 and contact >= 0.99 else "rattling"
+    elif classes == {"backward_rolling"} and onsets == 0 and contact >= 0.99:
+        state = "whirling"
+    else:
+        state = "unsettled"
+    return PlaneWindow(state, onsets, contact, float(mean[_F["mean_normal_force"]]),
+                       float(mean[_F["mean_axial_force"]]), float(omega), float(race),
+                       float(whirl), float(slip), tuple(float(p) for p in powers))
+
+
+def settled(now: list[PlaneWindow], before: list[PlaneWindow] | None) -> list[PlaneWindow] | None:
+    """The windows a stretch may carry (the mean of the two), or None to stay in full dynamics.
+
+    Every plane in a state the reduced model represents, in this window and the one before, in both the same
+    state, with loss torques within :data:`STATIONARY` (a state two windows see alike is steady over more than
+    one window's length).
+    """
+    if before is None or any(p.state not in REDUCIBLE for p in now):
+        return None
+    for p, b in zip(now, before, strict=True):
+        if p.state != b.state:
+            return None
+        if abs(p.torque - b.torque) > STATIONARY * max(abs(p.torque), abs(b.torque), 1e-12):
+            return None
+    return [p._replace(powers=tuple(0.5 * (x + y) for x, y in zip(p.powers, b.powers, strict=True)),
+                       force=0.5 * (p.force + b.force), axial_force=0.5 * (p.axial_force + b.axial_force))
+            for p, b in zip(now, before, strict=True)]
+
+
+def _viscous(plane, speed: float) -> float:
+    if plane.viscous_factor <= 0.0 or plane.lubricant_viscosity <= 0.0:
+        return 0.0
+    return float(palmgren_viscous_torque(plane.lubricant_viscosity, speed, plane.bearing.pitch_diameter,
+                                         plane.viscous_factor))
+
+
+def spin_model(machine: Machine, windows: list[PlaneWindow], omega: float, race_speeds: list,
+               floor: float) -> spin.SpinModel:
+    """The reduced model of a stretch from the windows that carry it (:mod:`auxbearing.core.spin`).
+
+    A coupled race keeps the ratio to the rotor it has at the stretch's start (``race_speeds``, ``omega``): the
+    spin energy the stretch starts from is then the full model's, and the energy audit closes across it.
+    """
+    n = spin.MAX_PLANES
+
+    def per_plane(values, fill=0.0):
+        out = [fill] * n
+        for k, v in enumerate(values):
+            out[k] = float(v)
+        return tuple(out)
+
+    planes = machine.planes
+    coupled = [w.state != "free" for w in windows]
+    ratios = [abs(w / omega) if omega != 0.0 else 0.0 for w in race_speeds]
+    rotor = [abs(w.rotor_speed) if w.rotor_speed != 0.0 else abs(omega) for w in windows]
+    contact = [w.powers[0] / r if c else 0.0 for w, r, c in zip(windows, rotor, coupled, strict=True)]
+    mount = [w.powers[2] / r if c else 0.0 for w, r, c in zip(windows, rotor, coupled, strict=True)]
+    rest = []
+    for p, w in zip(planes, windows, strict=True):
+        race = abs(w.race_speed)
+        rest.append(max(0.0, (w.powers[1] - _viscous(p, race) * race) / race) if race > 0.0 else 0.0)
+    inertia = machine.rotor.polar_inertia + sum(p.race_inertia * rho**2 for p, rho, c in
+                                                zip(planes, ratios, coupled, strict=True) if c)
+    coast = machine.coastdown
+    return spin.SpinModel(
+        inertia=inertia, drag_constant=coast.drag_torque, drag_viscous=coast.viscous_drag,
+        drag_windage=coast.windage_drag, speed_scale=DRAG_SPEED_SCALE, process_torque=coast.process_torque,
+        floor=floor, active=per_plane([1.0] * len(planes)), coupled=per_plane(coupled), ratio=per_plane(ratios),
+        contact_torque=per_plane(contact), mount_torque=per_plane(mount), bearing_torque=per_plane(rest),
+        race_inertia=per_plane([p.race_inertia for p in planes], 1.0),
+        viscosity=per_plane([p.lubricant_viscosity for p in planes]),
+        pitch_diameter=per_plane([p.bearing.pitch_diameter for p in planes], 1.0),
+        viscous_factor=per_plane([p.viscous_factor for p in planes]))
+
+
+class Stretch(NamedTuple):
+    """A reduced stretch's outcome (SI)."""
+
+    duration: float
+    rotor_speed: float
+    race_speeds: list  #: per plane [rad/s]
+    heat: list  #: per plane: (contact, bearing, mount) [J]
+    drag_loss: float
+    work: float
+    race_revolutions: list
+    steps: int
+
+
+#: Relative tolerance of the reduced model's integration (its right-hand side is smooth).
+SPIN_RTOL = 1e-9
+
+
+def integrate_stretch(model: spin.SpinModel, omega: float, race_speeds: list, span: float) -> Stretch:
+    """Integrate the reduced model from the speeds given for at most ``span`` seconds or to its floor."""
+    y = spin.new_state(omega, race_speeds)
+    atol = np.full(spin.N_STATE, np.inf)
+    scale = max(abs(omega), 1.0)
+    atol[spin.OMEGA] = 1e-12 * scale
+    atol[spin.RACE_AT:spin.RACE_AT + spin.MAX_PLANES] = 1e-12 * scale
+    settings = ig.Settings(SPIN_RTOL, atol, math.inf, 1e-14, 10**6, math.inf)
+    memory = ig.new_memory(0.0, min(1e-3, span), spin.N_STATE)
+    obs = np.zeros(spin.N_STATE + 2)
+    status = drive.advance_spin(model, obs, y, span, settings, memory, np.empty((0, spin.N_STATE)))
+    if status == ig.STOPPED:
+        y = obs[:spin.N_STATE].copy()
+        duration = float(obs[spin.N_STATE])
+    elif status == ig.FINISHED:
+        duration = span
+    else:  # a smooth two-speed problem that fails to integrate is a defect, not a machine's verdict
+        raise RuntimeError(f"the reduced coast-down model did not integrate ({ig.STATUS_TEXT[status]})")
+    n = spin.MAX_PLANES
+    heat = [tuple(float(y[spin.HEAT_AT + 3 * k + j]) for j in range(3)) for k in range(n)]
+    return Stretch(duration, float(y[spin.OMEGA]), [float(y[spin.RACE_AT + k]) for k in range(n)], heat,
+                   float(y[spin.DRAG_LOSS]), float(y[spin.WORK_IN]),
+                   [float(y[spin.TURN_AT + k]) / (2.0 * math.pi) for k in range(n)], int(memory.steps[0]))
