@@ -26,7 +26,8 @@ def blower_verified(tmp_path_factory):
     out = tmp_path_factory.mktemp("verify") / "report"
     result = _run("verify", "--machine", "blower", "--out", out, "--quick", "--campaign-samples", 4,
                   "--candidates", "7208", "--quiet")
-    assert result.exit_code == 0, result.output
+    # a quick look never passes: its coast-down is cut short, so it is INCOMPLETE (3) or FAIL (1)
+    assert result.exit_code in (1, 3), result.output
     return out, result.output
 
 
@@ -34,8 +35,9 @@ def blower_verified(tmp_path_factory):
 def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_verified):
     out, _ = blower_verified
     data = json.loads((out / "verify.json").read_text())
-    assert data["verdict"] in ("pass", "fail")
-    assert data["reason"].startswith("every checked criterion holds" if data["verdict"] == "pass" else "fails on")
+    assert data["verdict"] in ("incomplete", "fail")
+    assert data["reason"].startswith("no checked criterion fails, but" if data["verdict"] == "incomplete"
+                                     else "fails on")
     names = [c["name"] for c in data["criteria"]]
     assert len(names) == 9 and len(set(names)) == 9
     for c in data["criteria"]:
@@ -56,7 +58,7 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
     assert set(unchecked) <= {"peak bearing temperature", "preload of a closing internal clearance",
                               "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap"}
     assert all("(--quick)" in c["evidence"] and c["margin"] >= 0.0 for c in unchecked.values())
-    assert data["verdict"] == ("fail" if any(c["pass"] is False for c in data["criteria"]) else "pass")
+    assert data["verdict"] == ("fail" if any(c["pass"] is False for c in data["criteria"]) else "incomplete")
     assert [c["bearing"] for c in data["candidates"]] == ["7208"]
     assert len(data["ranking"]) == 2
     rec = data["recommendation"]
@@ -72,7 +74,7 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
 def test_verify_prints_the_verdict_and_its_reason_first(blower_verified):
     _, output = blower_verified
     first = output.strip().splitlines()[0]
-    assert first.startswith(("PASS: every checked criterion holds", "FAIL: fails on"))
+    assert first.startswith(("INCOMPLETE: no checked criterion fails, but", "FAIL: fails on"))
 
 
 @pytest.mark.slow
@@ -97,7 +99,7 @@ def test_undersized_design_fails_on_the_model_range_with_the_reason_on_top(tmp_p
     out = tmp_path / "report"
     result = _run("verify", "--machine", "heavy_fast_rotor", "--out", out, "--campaign-samples", 4,
                   "--no-recommendation", "--json")
-    assert result.exit_code == 0, result.output
+    assert result.exit_code == 1, result.output
     data = json.loads(result.output)
     assert data["verdict"] == "fail"
     failing = [c["name"] for c in data["criteria"] if c["pass"] is False]

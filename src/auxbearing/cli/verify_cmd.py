@@ -12,6 +12,9 @@ import click
 from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option
 from auxbearing.errors import InputError
 
+#: Exit status by verdict (2 is bad input, as for every command): a script can gate on it.
+EXIT_STATUS = {"pass": 0, "fail": 1, "incomplete": 3}
+
 
 @click.command("verify")
 @click.option("--machine", "machine_spec", required=True, metavar="FILE|NAME",
@@ -38,7 +41,9 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     the coast-down with heat and a small campaign; judges them against the [criteria] table (every default's
     origin is stated in the report); ranks candidate bearings in the same seats; recommends the contact
     angle, groove ratios and clearance of the design's bearing family that maximise the worst margin.
-    Writes report.html (verdicts first) and verify.json.
+    Writes report.html (verdicts first) and verify.json. Exit status: 0 PASS, 1 FAIL, 3 INCOMPLETE (a criterion
+    not checked: its input missing, a run cut short by --quick or a budget, a campaign too small to show it),
+    2 bad input.
     """
     from rich.console import Console
     from rich.table import Table
@@ -80,8 +85,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     if as_json:
         echo_json({k: v for k, v in result.items() if k in ("verdict", "reason", "machine", "criteria", "worst_margin",
                                                             "candidates", "ranking", "recommendation",
-                                                            "wall_time_s")} | {"out": str(out_dir)})
-        return
+                                                            "wall_time_s", "margins")} | {"out": str(out_dir)})
+        click.get_current_context().exit(EXIT_STATUS[result["verdict"]])
     rows, _ = verdict_rows(result["design"]["criteria"])
     table = Table(title=f"Verification of {result['machine']}: {result['verdict'].upper()}")
     for col in ("criterion", "required", "found", "margin", "pass/fail"):
@@ -103,6 +108,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
                           f"{rec['outer_groove_ratio']:.3f}, clearance x{rec['clearance_factor']:.2f}; binds: "
                           f"{rec['binding_criterion']}", highlight=False)
     click.echo(f"Report: {out_dir / 'report.html'} ({result['wall_time_s']:.0f} s)")
+    click.get_current_context().exit(EXIT_STATUS[result["verdict"]])
 
 
 COMMANDS = [verify_command]

@@ -20,7 +20,7 @@ _EXTRA_CSS = """
 pre{white-space:pre-wrap;word-break:break-word}
 .pass{background:#e5f5e5}.fail{background:#fbe3e3}.unchecked{background:#f3f0dc}
 .banner{font-size:1.3em;padding:.6em 1em;border-radius:6px;margin:1em 0}
-.banner.pass{border:2px solid #4a4}.banner.fail{border:2px solid #c44}
+.banner.pass{border:2px solid #4a4}.banner.fail{border:2px solid #c44}.banner.incomplete{border:2px solid #b90}
 """
 
 
@@ -62,17 +62,20 @@ def verdict_rows(criteria: list) -> tuple[list[list[str]], list[str]]:
 
 
 def verdict_reason(criteria: list) -> str:
-    """Why the design passes or fails, in one sentence: every failing criterion with its evidence."""
+    """Why the design passes, fails or is incomplete, in one sentence.
+
+    FAIL names every failing criterion with its evidence; INCOMPLETE names every criterion not checked and how
+    to check it (its evidence says); PASS says every criterion holds.
+    """
     failing = [c for c in criteria if c.passed is False]
-    if not failing:
-        # measured but not shown (a coast-down cut short by --quick, a campaign too small for its bound)
-        unproven = [c.name for c in criteria if c.passed is None and c.found is not None]
-        if unproven:
-            return ("every checked criterion holds; measured but not shown by this run (see the evidence): "
-                    + ", ".join(unproven))
-        return "every checked criterion holds"
-    return "fails on " + "; ".join(f"{c.name} ({_fmt(c.found, c.unit)} against {_fmt(c.required, c.unit)}: "
-                                   f"{c.evidence})" for c in failing)
+    unchecked = [c for c in criteria if c.passed is None]
+    if failing:
+        return "fails on " + "; ".join(f"{c.name} ({_fmt(c.found, c.unit)} against {_fmt(c.required, c.unit)}: "
+                                       f"{c.evidence})" for c in failing)
+    if unchecked:
+        return (f"no checked criterion fails, but {len(unchecked)} of {len(criteria)} are not checked: "
+                + "; ".join(f"{c.name} ({c.evidence})" for c in unchecked))
+    return f"all {len(criteria)} criteria hold"
 
 
 def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
@@ -88,7 +91,7 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
              f"<title>Touchdown-bearing verification: {_e(result['machine'])}</title>",
              f"<style>{_CSS}{_EXTRA_CSS}</style></head><body>",
              f"<h1>Touchdown-bearing verification: {_e(result['machine'])}</h1>",
-             f"<div class='banner {'pass' if verdict == 'pass' else 'fail'}'><b>Verdict: {verdict.upper()}</b> "
+             f"<div class='banner {verdict}'><b>Verdict: {verdict.upper()}</b> "
              f"&mdash; {_e(why)}</div>"]
     if result.get("quick"):
         parts.append("<p class='paper'>A <b>--quick</b> first look: short drops, the first seconds of the "
@@ -98,7 +101,8 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     rows, classes = verdict_rows(main["criteria"])
     parts.append("<h2>Verdicts</h2>")
     parts.append(_table(["criterion", "required", "found", "margin", "pass/fail"], rows,
-                        "Margin: found/required - 1 for a lower bound, 1 - found/required for an upper bound.",
+                        "Margin: " + "; ".join(f"{kind}: {text}" for kind, text in result["margins"].items()
+                                               if kind not in ("yes/no", "not checked")) + ".",
                         classes))
     parts.append("<h3>Where each required value comes from, and the evidence</h3>")
     parts.append(_table(["criterion", "required value from", "evidence"],

@@ -3,9 +3,20 @@
 ISO 14839-5:2022 lays out what a touchdown-bearing verification covers (load requirements, sizing,
 simulation of the touchdown events, failure modes); its acceptance values are the purchaser's. The
 ``[criteria]`` table of a machine file sets them; :data:`CRITERIA` lists each key's default and where
-it comes from. Margins: for a lower bound (found >= required) ``found / required - 1``, for an upper
-bound ``1 - found / required``; a yes/no criterion has no margin. A criterion whose input is missing
-(the magnetic air gap, a seal clearance) is listed as not checked, never as passed.
+it comes from.
+
+Margins are in each criterion's own physical sense (:data:`MARGINS` says which for each):
+
+* a load, stress, count or probability that must stay under a limit: the share of the limit still unused,
+  ``1 - found / limit`` (a ratio scale: zero means nothing);
+* one that must reach a value (s0, drops to failure): how far above it, ``found / required - 1``;
+* a temperature: the share of the allowed rise above ambient still unused,
+  ``(T_allowed - T_found) / (T_allowed - T_ambient)`` (a Celsius value is on an offset scale, so a percentage
+  of it means nothing);
+* a yes/no criterion has no margin.
+
+A criterion whose input is missing (the magnetic air gap, a seal clearance) or whose run did not finish is
+listed as not checked, never as passed; a verification with any criterion not checked is INCOMPLETE.
 """
 
 from __future__ import annotations
@@ -101,14 +112,47 @@ def not_checked(name: str, why: str, origin_text: str) -> Criterion:
     return Criterion(name, None, None, None, None, "", "not checked", origin_text, why)
 
 
+def temperature_bound(name: str, found: float | None, allowed: float, ambient: float, origin_text: str,
+                      evidence: str) -> Criterion:
+    """A temperature that must stay under ``allowed`` [degC]; margin: the unused share of the rise above ambient."""
+    if found is None or (isinstance(found, float) and math.isnan(found)):
+        return Criterion(name, allowed, None, None, False, "°C", "temperature", origin_text, evidence)
+    margin = (allowed - found) / (allowed - ambient) if allowed > ambient else -math.inf
+    return Criterion(name, allowed, found, margin, bool(found <= allowed), "°C", "temperature", origin_text, evidence)
+
+
+#: How each kind of criterion's margin is measured (the report's and verify.json's legend).
+MARGINS = {
+    "lower": "found / required - 1: how far above the required value",
+    "upper": "1 - found / limit: the share of the limit still unused",
+    "temperature": "(T_allowed - T_found) / (T_allowed - T_ambient): the share of the allowed rise above ambient "
+                   "still unused",
+    "yes/no": "none (holds or not)",
+    "not checked": "none (not measured, or not shown)",
+}
+
+
 def worst_margin(criteria: list[Criterion]) -> float:
-    """The smallest margin of the checked criteria (a failed yes/no criterion counts as -1, a passed one as +1)."""
-    values = []
-    for c in criteria:
-        if c.passed is None:
-            continue
-        if c.margin is None:
-            values.append(1.0 if c.passed else -1.0)
-        else:
-            values.append(c.margin)
+    """The smallest margin of the checked criteria that have one (NaN when none has)."""
+    values = [c.margin for c in criteria if c.passed is not None and c.margin is not None]
     return min(values) if values else math.nan
+
+
+#: The verdicts of a verification.
+PASS, FAIL, INCOMPLETE = "pass", "fail", "incomplete"
+
+
+def overall_verdict(criteria: list[Criterion]) -> str:
+    """FAIL if a criterion fails; INCOMPLETE if none fails but one is not checked; PASS only when all hold."""
+    if any(c.passed is False for c in criteria):
+        return FAIL
+    if any(c.passed is None for c in criteria):
+        return INCOMPLETE
+    return PASS
+
+
+def ranking_key(criteria: list[Criterion]) -> tuple:
+    """Sort key of a design: fewer failing criteria first, then fewer unchecked, then the larger worst margin."""
+    margin = worst_margin(criteria)
+    return (sum(c.passed is False for c in criteria), sum(c.passed is None for c in criteria),
+            -margin if math.isfinite(margin) else math.inf)

@@ -12,6 +12,7 @@ from auxbearing.verify.criteria import (
     lower_bound,
     not_checked,
     origin,
+    temperature_bound,
     upper_bound,
     yes_no,
 )
@@ -73,8 +74,9 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     coast = cases.coastdown.summary if cases.coastdown is not None else None
     if coast is not None:
         hottest = max((max(p["max_temperature_C"].values()), p["name"]) for p in coast["planes"])
-        out.append(upper_bound("peak bearing temperature", hottest[0], criteria["max_temperature"] - 273.15, "°C",
-                               origin("max_temperature", criteria), f"coast-down, {hottest[1]}"))
+        out.append(temperature_bound("peak bearing temperature", hottest[0], criteria["max_temperature"] - 273.15,
+                                     cases.machine.coastdown.ambient_temperature - 273.15,
+                                     origin("max_temperature", criteria), f"coast-down, {hottest[1]}"))
         from auxbearing.coastdown import _preload_stress
 
         stresses = []

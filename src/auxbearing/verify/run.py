@@ -13,12 +13,10 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-import numpy as np
-
 from auxbearing.errors import InputError
 from auxbearing.machine import machine_from_mapping, machine_table
 from auxbearing.verify.cases import Cases, run_cases, verify_settings
-from auxbearing.verify.criteria import read_criteria, worst_margin
+from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, read_criteria, worst_margin
 from auxbearing.verify.designs import candidate_tables, recommend
 from auxbearing.verify.judge import judge
 
@@ -81,7 +79,7 @@ def _design(cases: Cases, criteria: dict) -> dict:
     judged = judge(cases, criteria)
     campaign_rows, drivers = _campaign_rows(cases.campaign)
     return {"criteria": judged, "worst_margin": worst_margin(judged),
-            "verdict": "fail" if any(c.passed is False for c in judged) else "pass",
+            "verdict": overall_verdict(judged),
             "drop_rows": _drop_rows(cases), "coastdown_rows": _coastdown_rows(cases),
             "coastdown_caption": "; ".join(cases.notes), "campaign_rows": campaign_rows, "drivers": drivers,
             "cases": cases}
@@ -145,7 +143,8 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
                    "candidates": [label for label, _ in candidate_list], "quick": quick},
     }
     ranked = sorted([(machine.planes[0].bearing.name + " (the design)", design), *others],
-                    key=lambda item: -np.nan_to_num(item[1]["worst_margin"], nan=-np.inf))
+                    key=lambda item: ranking_key(item[1]["criteria"]))
+    result["margins"] = MARGINS
     result["candidate_rows"] = [[i + 1, label, d["verdict"], f"{100 * d['worst_margin']:+.1f} %"
                                  if math.isfinite(d["worst_margin"]) else "-",
                                  "; ".join(c.name for c in d["criteria"] if c.passed is False) or "-"]

@@ -1,0 +1,54 @@
+"""What a verification says: PASS only when every criterion holds, margins in each criterion's physical sense."""
+
+import math
+
+import pytest
+
+from auxbearing.verify.criteria import (
+    lower_bound,
+    not_checked,
+    overall_verdict,
+    ranking_key,
+    temperature_bound,
+    upper_bound,
+    worst_margin,
+    yes_no,
+)
+
+
+def _held():
+    return [lower_bound("s0", 4.0, 2.0, "-", "", ""), upper_bound("stress", 2100.0, 4200.0, "MPa", "", ""),
+            yes_no("range", "ok", "ok", True, "", "")]
+
+
+def test_incomplete_is_never_pass():
+    assert overall_verdict(_held()) == "pass"
+    assert overall_verdict([*_held(), not_checked("air gap", "give criteria.amb_air_gap", "")]) == "incomplete"
+    failing = [*_held(), not_checked("air gap", "", ""), upper_bound("x", 2.0, 1.0, "", "", "")]
+    assert overall_verdict(failing) == "fail"
+
+
+def test_temperature_margin_is_the_unused_share_of_the_allowed_rise():
+    # 120 degC allowed at 25 degC ambient: 72.5 degC found uses half the allowed rise
+    c = temperature_bound("peak bearing temperature", 72.5, 120.0, 25.0, "", "")
+    assert c.passed and c.margin == pytest.approx(0.5)
+    over = temperature_bound("peak bearing temperature", 120.9, 120.0, 25.0, "", "")
+    assert not over.passed and over.margin == pytest.approx(-0.9 / 95.0)
+
+
+def test_ratio_margins_and_no_margin_for_yes_no():
+    assert lower_bound("s0", 3.0, 2.0, "-", "", "").margin == pytest.approx(0.5)
+    assert upper_bound("stress", 3150.0, 4200.0, "MPa", "", "").margin == pytest.approx(0.25)
+    failed = yes_no("no run leaves the model's range", "ok", "overload", False, "", "")
+    assert failed.margin is None  # not a -100 %
+    assert worst_margin([failed]) != worst_margin([failed])  # NaN: no margin to show
+    assert worst_margin(_held()) == pytest.approx(0.5)
+
+
+def test_ranking_puts_failing_designs_last_whatever_their_margins():
+    good = _held()
+    incomplete = [*_held(), not_checked("air gap", "", "")]
+    bad = [lower_bound("s0", 40.0, 2.0, "-", "", ""), yes_no("range", "ok", "overload", False, "", "")]
+    order = sorted([("bad", bad), ("incomplete", incomplete), ("good", good)], key=lambda d: ranking_key(d[1]))
+    assert [name for name, _ in order] == ["good", "incomplete", "bad"]
+    assert math.isfinite(ranking_key(good)[2])
