@@ -56,6 +56,9 @@ class BearingGeometry:
     bore, outside_diameter, width : float or None
         Envelope [m]; optional.
     source : str
+    rating_factor : float
+        A maker's adjustment of ISO 281's b_m, multiplying the computed C [-]; 1 for the plain
+        standard (see :mod:`auxbearing.bearings.series` for SKF's).
 
     Examples
     --------
@@ -79,6 +82,7 @@ class BearingGeometry:
     outside_diameter: float | None = None
     width: float | None = None
     source: str = "user input"
+    rating_factor: float = 1.0
 
     def __post_init__(self) -> None:
         if not isinstance(self.type, str) or self.type not in BEARING_TYPES:
@@ -132,6 +136,7 @@ class BearingGeometry:
             value = getattr(self, key)
             if value is not None:
                 check_positive(key, value)
+        check_positive("rating_factor", self.rating_factor)
         if self.bore is not None and self.bore >= self.inner_raceway_diameter:
             raise InputError.for_field(
                 "bore", self.bore,
@@ -202,6 +207,27 @@ class BearingGeometry:
         return math.acos(radial / a)
 
     @property
+    def ball_mass(self) -> float:
+        """Mass of one ball, rho pi D^3 / 6 [kg]; needs the ball material's density.
+
+        Examples
+        --------
+        >>> round(get_bearing("6205").ball_mass * 1e3, 3), round(get_bearing("6205 hybrid").ball_mass * 1e3, 3)
+        (2.055, 0.842)
+        """
+        density = self.ball_material.density
+        if density is None:
+            raise InputError(f"ball material {self.ball_material.name}: density is not given but the ball mass "
+                             "needs it (add e.g. density = '7810 kg/m^3')")
+        return density * math.pi * self.ball_diameter**3 / 6.0
+
+    @property
+    def is_hybrid(self) -> bool:
+        """True when balls and rings are of different materials (ceramic balls in steel rings)."""
+        return self.ball_material.name != self.ring_material.name and self.ball_material.elastic_modulus > \
+            1.2 * self.ring_material.elastic_modulus
+
+    @property
     def label(self) -> str:
         """Human-readable type."""
         return BEARING_TYPES[self.type]["label"]
@@ -234,6 +260,8 @@ class BearingGeometry:
         for key in ("bore", "outside_diameter", "width"):
             if getattr(self, key) is not None:
                 table[key] = length(getattr(self, key))
+        if self.rating_factor != 1.0:
+            table["rating_factor"] = self.rating_factor
         return table
 
     def describe(self) -> dict[str, object]:
@@ -258,6 +286,8 @@ class BearingGeometry:
             value = getattr(self, key)
             if value is not None:
                 out[f"{key}_mm"] = value * 1e3
+        if self.rating_factor != 1.0:
+            out["rating_factor"] = self.rating_factor
         return out
 
 
@@ -291,7 +321,7 @@ _OPTIONAL_LENGTH_KEYS = ("bore", "outside_diameter", "width")
 _RATIO_KEYS = ("inner_groove_ratio", "outer_groove_ratio")
 _REQUIRED_KEYS = ("type", *_LENGTH_KEYS[:2], "ball_count", *_RATIO_KEYS, "contact_angle",
                   "diametral_clearance", "ball_material", "ring_material")
-_ALLOWED_KEYS = (*_REQUIRED_KEYS, "name", "source", *_OPTIONAL_LENGTH_KEYS)
+_ALLOWED_KEYS = (*_REQUIRED_KEYS, "name", "source", *_OPTIONAL_LENGTH_KEYS, "rating_factor", "estimated")
 
 
 def bearing_from_mapping(data: dict, name: str | None = None, prefix: str = "bearing.") -> BearingGeometry:
@@ -341,6 +371,8 @@ def bearing_from_mapping(data: dict, name: str | None = None, prefix: str = "bea
             values[key] = to_si(prefix + key, data[key], "length")
     for key in _RATIO_KEYS:
         values[key] = to_si(prefix + key, data[key], "dimensionless")
+    if "rating_factor" in data:
+        values["rating_factor"] = to_si(prefix + "rating_factor", data["rating_factor"], "dimensionless")
     try:
         return BearingGeometry(**values)
     except InputError as err:
@@ -362,19 +394,29 @@ def _catalogue() -> dict[str, dict]:
     return bearing_table()
 
 
-def get_bearing(name: str, field: str = "bearing") -> BearingGeometry:
-    """A catalogue bearing by name (case-insensitive); ``field`` names the input in an error.
+def get_bearing(name: str, field: str = "bearing"):
+    """A catalogue bearing, hybrid or duplex set by name as makers write it (case-insensitive).
+
+    ``field`` names the input in an error. Single bearings are :class:`BearingGeometry`; a name with
+    DB, DF or DT gives a :class:`~auxbearing.bearings.duplex.DuplexSet`; "hybrid" (or SKF's /HC5)
+    puts silicon-nitride balls in (:mod:`auxbearing.bearings.catalogue` reads the names).
 
     Examples
     --------
-    >>> get_bearing("qj202").type
-    'four_point'
+    >>> get_bearing("qj202").type, get_bearing("6205").ball_count, get_bearing("7208 DB").arrangement
+    ('four_point', 9, 'DB')
     """
-    if isinstance(name, str):
-        found = _catalogue_bearing(name.strip().lower())
-        if found is not None:
-            return found
-    raise InputError.for_field(field, name, "unknown; catalogue names are " + ", ".join(_catalogue()))
+    from auxbearing.bearings.catalogue import lookup
+
+    return lookup(name, field)
+
+
+def get_catalogue_entry(key: str) -> BearingGeometry:
+    """The ``catalog/bearings.toml`` entry named exactly ``key``."""
+    found = _catalogue_bearing(key.strip().lower())
+    if found is None:
+        raise InputError.for_field("bearing", key, "not in catalog/bearings.toml")
+    return found
 
 
 @functools.cache
@@ -401,12 +443,15 @@ def read_toml(path: str | Path, field: str = "file") -> dict:
         raise InputError.for_field(field, str(path), f"is not valid TOML ({err})") from None
 
 
-def load_bearing(spec: str | Path | BearingGeometry, field: str = "bearing") -> BearingGeometry:
+def load_bearing(spec: str | Path | BearingGeometry, field: str = "bearing", sets: bool = False):
     """A bearing from a catalogue name, a TOML path with a ``[bearing]`` table, or as given.
 
-    ``field`` names the input in an error (``--bearing`` on the command line).
+    ``field`` names the input in an error (``--bearing`` on the command line). A duplex set
+    ("7208 DB") is returned only with ``sets=True``; the single-bearing analyses refuse it by name.
     """
     if isinstance(spec, BearingGeometry):
+        return spec
+    if sets and type(spec).__name__ == "DuplexSet":
         return spec
     text = str(spec)
     if not text.strip():
@@ -417,4 +462,8 @@ def load_bearing(spec: str | Path | BearingGeometry, field: str = "bearing") -> 
         if "bearing" not in data:
             raise InputError.for_field(field, text, "has no [bearing] table")
         return bearing_from_mapping(data["bearing"], name=Path(text).stem)
-    return get_bearing(text, field)
+    found = get_bearing(text, field)
+    if not sets and not isinstance(found, BearingGeometry):
+        raise InputError.for_field(field, text, f"is a matched set ({found.label}); this analysis takes one "
+                                   "bearing (give its row, e.g. " + repr(found.row.name) + ")")
+    return found

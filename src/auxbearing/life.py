@@ -57,20 +57,56 @@ def rating_rows(bearing: BearingGeometry) -> int:
     return 2 if bearing.type == "four_point" else 1
 
 
-def dynamic_load_rating(bearing: BearingGeometry) -> float:
-    """ISO 281:2007 basic dynamic radial load rating C_r [N] of a catalogue or user bearing.
+def dynamic_load_rating(bearing) -> float:
+    """ISO 281:2007 basic dynamic radial load rating C_r [N] of a bearing or a matched set.
 
-    A four-point contact bearing is rated as a double-row 35 deg bearing (i = 2; ISO 281 does not
-    cover the type, see :mod:`auxbearing.core.fatigue`).
+    One bearing: ISO 281 6.1.1 from its ball set, times its ``rating_factor`` (a maker's b_m
+    adjustment, 1 unless the catalogue says otherwise); a four-point contact bearing is rated as a
+    double-row 35 deg bearing (i = 2; ISO 281 does not cover the type, see
+    :mod:`auxbearing.core.fatigue`); ceramic balls do not change C (DIN ISO 281 Bbl. 5, now ISO 20056-1).
+    A duplex set (DB, DF, DT) of two identical rows: 2^0.7 times one row (ISO 281:2007 6.1.2-6.1.3).
+    A name is looked up in the catalogue first.
 
     Examples
     --------
     >>> from auxbearing import get_bearing
     >>> round(dynamic_load_rating(get_bearing("209")))
     32687
+    >>> round(dynamic_load_rating("7208")), round(dynamic_load_rating("7208 DB"))
+    (34370, 55834)
     """
-    return cf.dynamic_load_rating(bearing.ball_diameter, bearing.pitch_diameter, bearing.ball_count,
-                                  bearing.contact_angle, rating_rows(bearing))
+    from auxbearing.bearings import ratings
+
+    if isinstance(bearing, str):
+        from auxbearing.bearing import get_bearing
+
+        bearing = get_bearing(bearing)
+    row = getattr(bearing, "row", None)
+    if row is not None:
+        return ratings.set_factor(bearing.row_count) * ratings.dynamic_load_rating(row)
+    return ratings.dynamic_load_rating(bearing)
+
+
+def static_load_rating(bearing) -> float:
+    """ISO 76:2006 basic static radial load rating C0 [N] of a bearing or a matched set (2 C0 for a pair).
+
+    Hybrids: at 4200 MPa with the ceramic contact (:mod:`auxbearing.bearings.ratings`).
+
+    Examples
+    --------
+    >>> round(static_load_rating("7208")), round(static_load_rating("7208 DB"))
+    (24091, 48182)
+    """
+    from auxbearing.bearings import ratings
+
+    if isinstance(bearing, str):
+        from auxbearing.bearing import get_bearing
+
+        bearing = get_bearing(bearing)
+    row = getattr(bearing, "row", None)
+    if row is not None:
+        return bearing.row_count * ratings.static_load_rating(row)
+    return ratings.static_load_rating(bearing)
 
 
 def race_constants(bearing: BearingGeometry) -> dict:

@@ -386,6 +386,10 @@ def load_distribution(
         max contact load, max stress, s0, residual, iterations, support reactions. SI units in
         attrs.
 
+    A matched set ("7208 DB", or a :class:`~auxbearing.bearings.duplex.DuplexSet`) is solved with both
+    rows by :func:`auxbearing.bearings.duplex_statics.load_distribution` (dims ``case``, ``row``,
+    ``ball``, ``pair``).
+
     Examples
     --------
     >>> ds = load_distribution("QJ202", axial="500 N", radial=1000)
@@ -395,6 +399,16 @@ def load_distribution(
     fa = _load_array("axial", axial, "force", "N")
     fr = _load_array("radial", radial, "force", "N")
     mm = _load_array("moment", moment, "moment", "N*m")
+    bearing = load_bearing(bearing, sets=True)
+    if not isinstance(bearing, BearingGeometry):  # a duplex set: both rows through the same kernel
+        from auxbearing.bearings import duplex_statics
+
+        if axial_condition != "free" or ball_constant is not None:
+            raise InputError.for_field("axial_condition" if axial_condition != "free" else "ball_constant",
+                                       axial_condition if axial_condition != "free" else ball_constant,
+                                       f"not available for a matched set ({bearing.name}): its rows locate "
+                                       "the shaft axially, with Hertz K_b")
+        return duplex_statics.load_distribution(bearing, fa, fr, mm, tilt=tilt, tol=tol)
     try:
         fa, fr, mm = np.broadcast_arrays(fa, fr, mm)
     except ValueError:

@@ -21,7 +21,7 @@ EXIT_USER_ERROR = 2
 
 #: command name -> (module in auxbearing.cli, one-line help)
 COMMANDS: dict[str, tuple[str, str]] = {
-    "bearings": ("study_cmd", "List the bearing and material catalogues with their sources."),
+    "bearings": ("bearings_cmd", "The bearing catalogue, filtered by type and bore, and the materials, with sources."),
     "campaign": ("campaign_cmd", "Monte Carlo campaign of machine drops over uncertain inputs (Dask, Zarr)."),
     "campaign-report": ("campaign_cmd", "Statistics, sensitivity and figures of a campaign store."),
     "coastdown": ("coastdown_cmd", "A machine from the drop to standstill: heat, thermal growth, drops to failure."),

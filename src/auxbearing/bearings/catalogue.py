@@ -1,0 +1,236 @@
+"""The bearing catalogue as one lookup: names as makers write them, hybrids and duplex sets.
+
+Two sources, the first winning on a name both hold:
+
+* ``catalog/bearings.toml``: bearings with named sources of their own (the source paper's QJ202,
+  7202 and 7202-40, Harris & Kotzalas' 209 and 218, the examples' illustrative QJ208);
+* the series of :mod:`auxbearing.bearings.series` (60, 62, 63, 72 B, 73 B, QJ2, QJ3; bore 15-100 mm).
+
+A name is read as ``[QJ]<type><series><bore code>[maker suffix][/HC5 | hybrid][DB | DF | DT [preload]]``:
+"6205", "6305-2RS", "7208", "7208 BECBP", "QJ 208 N2MA", "QJ208 hybrid", "7208 DB", "7208 BECBP/DB",
+"7208 DF medium", "7208 DT". Maker suffixes are ignored except that an angular-contact bearing must
+be the 40 deg B design (suffix starting with B, or none); "7202" is the source paper's 35 deg
+bearing, "7202 B..." its 40 deg variant "7202-40".
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import cache
+
+from auxbearing.errors import InputError
+
+#: Words that make a name a hybrid (silicon-nitride balls): "hybrid", or SKF's /HC5 suffix.
+HYBRID_WORDS = ("hybrid", "hc5")
+PRELOAD_WORDS = ("light", "medium", "heavy", "none")
+_DESIGNATION = re.compile(r"^(?:(QJ)\s*|([67]))([023])(\d\d)\s*[-/]?\s*([A-Z0-9/ -]*)$")
+_SERIES_OF = {("6", "0"): "60", ("6", "2"): "62", ("6", "3"): "63", ("7", "2"): "72", ("7", "3"): "73",
+              ("QJ", "2"): "QJ2", ("QJ", "3"): "QJ3"}
+
+
+@dataclass(frozen=True)
+class NameParts:
+    """A catalogue name taken apart."""
+
+    base: str
+    hybrid: bool = False
+    arrangement: str | None = None
+    preload: str | None = None
+
+
+def split_name(name: str) -> NameParts:
+    """Take a name apart into base designation, hybrid flag, arrangement and preload class.
+
+    Examples
+    --------
+    >>> split_name("7208 BECBP/DB medium")
+    NameParts(base='7208 BECBP', hybrid=False, arrangement='DB', preload='medium')
+    >>> split_name("QJ208 hybrid")
+    NameParts(base='QJ208', hybrid=True, arrangement=None, preload=None)
+    """
+    text = " ".join(str(name).replace("/", " /").split())
+    tokens = text.split(" ")
+    hybrid, arrangement, preload = False, None, None
+    kept: list[str] = []
+    for token in tokens:
+        bare = token.lstrip("/").lower()
+        if bare in HYBRID_WORDS:
+            hybrid = True
+        elif bare.upper() in ("DB", "DF", "DT"):
+            arrangement = bare.upper()
+        elif bare in PRELOAD_WORDS and arrangement is not None:
+            preload = bare
+        else:
+            kept.append(token)
+    base = " ".join(kept).replace(" /", "/").strip().rstrip("/")
+    return NameParts(base, hybrid, arrangement, preload)
+
+
+@cache
+def _toml_entries() -> dict[str, str]:
+    from auxbearing.catalog import bearing_table
+
+    return {key.lower(): key for key in bearing_table()}
+
+
+def _series_name(base: str) -> tuple[str | None, str]:
+    """The series designation of a maker's name ('7208 BECBP' -> '7208') and its suffix."""
+    match = _DESIGNATION.match(base.upper().strip())
+    if match is None:
+        return None, ""
+    qj, kind, series, code, suffix = match.groups()
+    suffix = suffix.replace(" ", "")
+    key = _SERIES_OF.get(("QJ" if qj else kind, series))
+    if key is None:
+        return None, suffix
+    prefix = "QJ" + series if qj else kind + series
+    return f"{prefix}{code}", suffix
+
+
+def resolve_single(base: str, field: str = "bearing"):
+    """The single bearing a base designation names (toml entries first, then the series).
+
+    Examples
+    --------
+    >>> resolve_single("7208 BECBP").name, resolve_single("7202 BEP").name, resolve_single("qj202").name
+    ('7208', '7202-40', 'QJ202')
+    """
+    from auxbearing.bearing import get_catalogue_entry
+    from auxbearing.bearings.series import series_entries
+
+    toml = _toml_entries()
+    if base.lower() in toml:
+        return get_catalogue_entry(toml[base.lower()])
+    designation, suffix = _series_name(base)
+    if designation is None:
+        raise InputError.for_field(field, base, _unknown_text())
+    if designation[0] == "7" and suffix and not suffix.startswith("B"):
+        raise InputError.for_field(field, base, "only the 40 deg B design of angular-contact bearings is in the "
+                                   "catalogue (suffix B..., or none)")
+    if designation[0] == "7" and suffix.startswith("B") and f"{designation}-40".lower() in toml:
+        return get_catalogue_entry(toml[f"{designation}-40".lower()])
+    if designation.lower() in toml:
+        return get_catalogue_entry(toml[designation.lower()])
+    entry = series_entries().get(designation)
+    if entry is None:
+        raise InputError.for_field(field, base, "bore code outside the catalogue's 02-20 (15 to 100 mm); "
+                                   + _unknown_text())
+    return entry.bearing
+
+
+def _unknown_text() -> str:
+    from auxbearing.catalog import bearing_names
+
+    return ("unknown; catalogue names are " + ", ".join(bearing_names())
+            + " and the series 60xx, 62xx, 63xx, 72xx B, 73xx B, QJ2xx, QJ3xx with bore codes 02-20 "
+            "('auxbearing bearings' lists them)")
+
+
+def lookup(name: str, field: str = "bearing"):
+    """A catalogue bearing, hybrid or duplex set by name (see the module notes).
+
+    Examples
+    --------
+    >>> lookup("6305").ball_count, lookup("7208 DB").arrangement, lookup("QJ208 hybrid").ball_material.name
+    (7, 'DB', 'Si3N4')
+    """
+    if not isinstance(name, str) or not name.strip():
+        raise InputError.for_field(field, name, _unknown_text())
+    parts = split_name(name)
+    if not parts.base:
+        raise InputError.for_field(field, name, "names no bearing; " + _unknown_text())
+    bearing = resolve_single(parts.base, field)
+    if parts.hybrid:
+        from auxbearing.bearings.hybrid import hybrid
+
+        bearing = hybrid(bearing)
+    if parts.arrangement is None:
+        return bearing
+    from auxbearing.bearings.duplex import duplex_set
+
+    if bearing.type != "angular_contact":
+        raise InputError.for_field(field, name, f"a duplex set ({parts.arrangement}) needs an angular-contact row; "
+                                   f"{bearing.name} is {bearing.label}")
+    preload = parts.preload or ("none" if parts.arrangement == "DT" else "light")
+    label = f"{bearing.name} {parts.arrangement}" + (f" {parts.preload}" if parts.preload else "")
+    return duplex_set(bearing, parts.arrangement, preload=preload, name=label)
+
+
+#: Bearing types the listing filters on, with the words a person may type for them.
+TYPE_WORDS = {"deep_groove": ("deep_groove", "deep-groove", "deep groove", "dg", "6"),
+              "angular_contact": ("angular_contact", "angular-contact", "angular contact", "angular", "ac", "7"),
+              "four_point": ("four_point", "four-point", "four point", "qj", "4pt")}
+
+
+def parse_type(text: str) -> str:
+    """A bearing type from the words people use ('deep groove', 'angular', 'QJ', ...).
+
+    Examples
+    --------
+    >>> parse_type("Angular"), parse_type("qj")
+    ('angular_contact', 'four_point')
+    """
+    wanted = str(text).strip().lower()
+    for kind, words in TYPE_WORDS.items():
+        if wanted in words:
+            return kind
+    raise InputError.for_field("--type", text, "must be one of deep_groove, angular_contact, four_point")
+
+
+def entries(types=None, bore_range=None) -> list[dict]:
+    """The catalogue as rows: name, family, geometry, computed and published C and C0, provenance.
+
+    Parameters
+    ----------
+    types : iterable of str, optional
+        Bearing types to keep (``deep_groove``, ``angular_contact``, ``four_point``).
+    bore_range : (float, float), optional
+        Bore limits [m], inclusive.
+
+    Examples
+    --------
+    >>> rows = entries(types=["four_point"], bore_range=(0.04, 0.04))
+    >>> [r["name"] for r in rows]
+    ['QJ208', 'QJ308']
+    """
+    from auxbearing.bearing import get_catalogue_entry
+    from auxbearing.bearings import ratings
+    from auxbearing.bearings.series import series_data, series_entries
+    from auxbearing.catalog import bearing_table
+
+    table = bearing_table()
+    rows: list[dict] = []
+    for key, raw in table.items():
+        b = get_catalogue_entry(key)
+        rows.append(_row(b, "named source", {}, tuple(raw.get("estimated", ())), "", ratings))
+    shadowed = {k.lower() for k in table}
+    sources = series_data()["sources"]
+    for name, entry in series_entries().items():
+        if name.lower() in shadowed:
+            continue
+        published = {k: {"value": v, "source": sources.get(s, s)} for k, (v, s) in entry.published.items()}
+        rows.append(_row(entry.bearing, entry.series, published, entry.estimated, entry.rule, ratings))
+    keep = set(types) if types else None
+    out = []
+    for r in rows:
+        if keep is not None and r["type"] not in keep:
+            continue
+        if bore_range is not None:
+            if r["bore_mm"] is None or not bore_range[0] * 1e3 - 1e-9 <= r["bore_mm"] <= bore_range[1] * 1e3 + 1e-9:
+                continue
+        out.append(r)
+    return out
+
+
+def _row(b, series, published, estimated, rule, ratings) -> dict:
+    row = b.describe()
+    row.update(series=series, C_N=ratings.dynamic_load_rating(b), C0_N=ratings.static_load_rating(b),
+               C_published_N=published.get("C", {}).get("value"),
+               C0_published_N=published.get("C0", {}).get("value"),
+               published=sorted(published), estimated=list(estimated), rule=rule,
+               bore_mm=None if b.bore is None else b.bore * 1e3,
+               ball_mass_g=b.ball_mass * 1e3 if b.ball_material.density else None)
+    if published:
+        row["published_sources"] = sorted({p["source"] for p in published.values()})
+    return row
