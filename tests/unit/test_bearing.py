@@ -111,3 +111,89 @@ def test_deep_groove_free_contact_angle_from_clearance():
     assert b.free_contact_angle == pytest.approx(math.acos(1 - b.diametral_clearance / (2 * a)))
     with pytest.raises(InputError, match="deep_groove bearing has contact_angle 0 deg"):
         b.with_changes(contact_angle=0.3)
+
+
+# -- names as makers write them, hybrids, duplex sets, the catalogue listing (issue 26) ---------------
+@pytest.mark.parametrize(("name", "expected", "kind", "z"), [
+    ("6205", "6205", "deep_groove", 9), ("6305", "6305", "deep_groove", 7), ("6305-2RS1", "6305", "deep_groove", 7),
+    ("7208", "7208", "angular_contact", 15), ("7208 BECBP", "7208", "angular_contact", 15),
+    ("QJ208", "QJ208", "four_point", 11), ("QJ 208 N2MA", "QJ208", "four_point", 11),
+    ("qj 308", "QJ308", "four_point", 9), ("7202 BEP", "7202-40", "angular_contact", 11),
+])
+def test_maker_names(name, expected, kind, z):
+    b = get_bearing(name)
+    assert (b.name, b.type, b.ball_count) == (expected, kind, z)
+
+
+def test_7208_is_the_40_deg_b_design_and_sizes_cover_15_to_100():
+    assert get_bearing("7208").contact_angle == pytest.approx(math.radians(40))
+    for name in ("6002", "6020", "6202", "6220", "6302", "6320", "7203", "7320", "QJ203", "QJ320"):
+        assert 15e-3 <= get_bearing(name).bore <= 100e-3
+
+
+@pytest.mark.parametrize(("name", "fragment"), [
+    ("7208 AC", "only the 40 deg B design"), ("6221", "bore code outside"), ("6205 DB", "needs an angular-contact row"),
+    ("DB", "names no bearing"), ("7208 DT heavy", "cannot be preloaded"),
+])
+def test_bad_names(name, fragment):
+    with pytest.raises(InputError, match=fragment):
+        get_bearing(name)
+
+
+def test_hybrid_and_duplex_names():
+    h = get_bearing("QJ208 hybrid")
+    assert h.ball_material.name == "Si3N4" and h.ring_material.name == "GCr15" and h.name == "QJ208 hybrid"
+    pair = get_bearing("7208 DB medium")
+    assert (pair.arrangement, pair.preload, pair.row.name) == ("DB", "medium", "7208")
+    assert get_bearing("7208 BECBP/DF").arrangement == "DF"
+    assert get_bearing("7208 DT").preload_offset == 0.0
+    hybrid_pair = get_bearing("7208 hybrid DB")
+    assert hybrid_pair.row.ball_material.name == "Si3N4"
+
+
+def test_single_bearing_analyses_refuse_a_pair_by_name():
+    with pytest.raises(InputError, match="is a matched set"):
+        load_bearing("7208 DB")
+    assert load_bearing("7208 DB", sets=True).arrangement == "DB"
+
+
+def test_rating_factor_round_trip_and_validation():
+    b = get_bearing("6205")
+    assert b.rating_factor > 1.0
+    assert bearing_from_mapping(b.to_table(), name=b.name) == b
+    with pytest.raises(InputError, match="rating_factor"):
+        bearing_from_mapping(with_(rating_factor=-1.0))
+
+
+def test_duplex_set_from_force_offset_and_spacer():
+    from auxbearing.bearings.duplex import duplex_set
+
+    row = get_bearing("7208")
+    assert duplex_set(row, "DB", preload="800 N").preload_force == pytest.approx(800.0, rel=1e-9)
+    assert duplex_set(row, "DB", preload=800).preload_force == pytest.approx(800.0, rel=1e-9)
+    pair = duplex_set(row, "DF", preload="6 um", spacer="4 mm")
+    assert pair.preload_offset == pytest.approx(6e-6) and pair.row_spacing == pytest.approx(22e-3)
+    with pytest.raises(InputError, match="preload"):
+        duplex_set(row, "DB", preload="3 kg")
+    with pytest.raises(InputError, match="arrangement"):
+        duplex_set(row, "XX")
+
+
+def test_bearings_command_filters(tmp_path):
+    import json
+
+    from click.testing import CliRunner
+
+    from auxbearing.cli.main import cli
+
+    result = CliRunner().invoke(cli, ["bearings", "--type", "angular", "--bore", "40", "--json"])
+    assert result.exit_code == 0, result.output
+    rows = json.loads(result.output)["bearings"]
+    assert [r["name"] for r in rows] == ["7208", "7308"]
+    seven = rows[0]
+    assert seven["C_published_N"] == 34.5e3 and "ball_count" in seven["estimated"] and seven["published"]
+    result = CliRunner().invoke(cli, ["bearings", "--type", "deep_groove", "--bore", "30-60", "--json"])
+    names = {r["name"] for r in json.loads(result.output)["bearings"]}
+    assert {"6006", "6206", "6306", "6012", "6212", "6312", "209"} <= names and "6005" not in names
+    bad = CliRunner().invoke(cli, ["bearings", "--type", "tapered"])
+    assert bad.exit_code == 2 and "--type = 'tapered'" in bad.output

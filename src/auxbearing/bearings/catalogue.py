@@ -152,7 +152,7 @@ def lookup(name: str, field: str = "bearing"):
     if bearing.type != "angular_contact":
         raise InputError.for_field(field, name, f"a duplex set ({parts.arrangement}) needs an angular-contact row; "
                                    f"{bearing.name} is {bearing.label}")
-    preload = parts.preload or ("none" if parts.arrangement == "DT" else "light")
+    preload = parts.preload
     label = f"{bearing.name} {parts.arrangement}" + (f" {parts.preload}" if parts.preload else "")
     return duplex_set(bearing, parts.arrangement, preload=preload, name=label)
 

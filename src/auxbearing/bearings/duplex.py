@@ -241,7 +241,7 @@ def offset_for_preload(row: BearingGeometry, force: float) -> float:
     return lo + hi  # twice the row's displacement
 
 
-def duplex_set(row: BearingGeometry, arrangement: str, preload: object = "light", spacer: object = 0.0,
+def duplex_set(row: BearingGeometry, arrangement: str, preload: object = None, spacer: object = 0.0,
                name: str | None = None) -> DuplexSet:
     """A matched pair of ``row`` with its preload given as a class, a force or an axial offset.
 
@@ -249,8 +249,9 @@ def duplex_set(row: BearingGeometry, arrangement: str, preload: object = "light"
     ----------
     row : BearingGeometry
     arrangement : {"DB", "DF", "DT"}
-    preload : str or float
-        "light", "medium", "heavy" (project convention, see the module notes), "none", a force
+    preload : str or float, optional
+        "light" (the default for DB and DF), "medium", "heavy" (project convention, see the module
+        notes), "none" (the default for DT), a force
         ("500 N"), or an axial offset ("10 um", the interference of the clamped pair). A plain
         number is a force in N. A tandem set takes no preload.
     spacer : str or float
@@ -271,9 +272,12 @@ def duplex_set(row: BearingGeometry, arrangement: str, preload: object = "light"
     if arrangement not in ARRANGEMENTS:
         raise InputError.for_field("arrangement", arrangement, "must be one of " + ", ".join(ARRANGEMENTS))
     spacer_m = _length("spacer", spacer)
+    if preload is None:
+        preload = "none" if arrangement == "DT" else "light"
     text = str(preload).strip().lower() if isinstance(preload, str) else preload
-    if arrangement == "DT" and text in ("light", "medium", "heavy"):
-        text = "none"
+    if arrangement == "DT" and text in PRELOAD_CLASSES:
+        raise InputError.for_field("preload", preload, "a tandem (DT) set cannot be preloaded against itself; its "
+                                   "rows carry one axial direction together")
     if text in (None, "none", "zero", 0, 0.0):
         offset, label = 0.0, "none"
     elif text in PRELOAD_CLASSES:

@@ -17,8 +17,11 @@ Makers do not publish ball sets, so every entry's internal geometry is estimated
 3. 72 B / 73 B sizes without ratings: the ball of the deep-groove bearing of the same boundary plan
    (62xx, 63xx), and as many balls as fit at the ball spacing of the calibrated 7208 and 7308
    (pitch chord over ball diameter :data:`ANGULAR_SPACING`; a one-shoulder ring takes more balls).
-4. QJ2 / QJ3: the ball set of the 72 B / 73 B bearing of the same boundary plan, at 35 deg, as the
-   source paper gives its QJ202 the ball set of its 7202.
+4. QJ2 / QJ3: the ball of the 72 B / 73 B bearing of the same boundary plan at 35 deg (as the
+   source paper gives its QJ202 the ball of its 7202), as many as fit at the wider ball spacing
+   :data:`FOUR_POINT_SPACING` (a machined cage between the balls), calibrated on the one four-point
+   rating held, SKF's QJ 202 N2MA (C = 12.7 kN). With the 72 B ball count instead, the QJ 202 would be
+   rated 15.2 kN, 19.5 % above SKF.
 5. Groove radii 0.52 D_w inner and 0.53 D_w outer (the conformity ISO 76 assumes); diametral clearance
    zero for angular-contact and four-point bearings (as the catalogue's paper bearings), the middle
    of ISO 5753-1's Normal group for deep groove bearings (:data:`NORMAL_CLEARANCE_UM`).
@@ -50,6 +53,9 @@ INNER_GROOVE_RATIO, OUTER_GROOVE_RATIO = 0.52, 0.53
 #: Pitch chord over ball diameter, D_pw sin(pi/Z)/D_w, of the 7208 B and 7308 B ball sets fitted to
 #: their published ratings (1.0607 and 1.0733), mean: the ball spacing of rule 3.
 ANGULAR_SPACING = 1.067
+#: Pitch chord over ball diameter of the four-point series (rule 4): SKF's QJ 202 N2MA (C = 12.7 kN) needs 9
+#: balls of the 7202 B's 6.0 mm on D_pw 25 mm, i.e. a spacing in (1.288, 1.425]; the middle of that range.
+FOUR_POINT_SPACING = 1.356
 #: ISO 5753-1:2009 Table 1, radial internal clearance of deep groove ball bearings, Normal group
 #: [um]: (bore over, bore up to and including, min, max).
 NORMAL_CLEARANCE_UM = ((10, 18, 3, 18), (18, 24, 5, 20), (24, 30, 5, 20), (30, 40, 6, 20), (40, 50, 6, 23),
@@ -248,8 +254,10 @@ def _build(series: Series, code: str, entries: dict) -> CatalogueEntry:
                 "(the spacing of the calibrated 7208 and 7308)")
     else:
         partner = entries[designation(SERIES[series.partner], code)].bearing
-        z, dw = partner.ball_count, partner.ball_diameter
-        rule = f"rule 4: the ball set of the {partner.name} at 35 deg"
+        dw = partner.ball_diameter
+        z = most_balls(dm, dw, FOUR_POINT_SPACING)
+        rule = (f"rule 4: ball of the {partner.name} at 35 deg, as many as fit at pitch chord "
+                f"{FOUR_POINT_SPACING:g} D_w (calibrated on SKF's QJ 202)")
     if c is not None and "C" not in published:
         published["C"] = (c, source)
     clearance = normal_clearance(d) if series.type == "deep_groove" else 0.0
