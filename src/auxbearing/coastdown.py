@@ -322,7 +322,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     full_time = session.t
     reduced_time = 0.0
     counts = {"windows": 0, "stretches": 0, "states": {}}
-    previous = None
+    checked: list = []  # each full window's planes since the last stretch
     stopped_at = None
 
     def record(mode_code: int) -> None:
@@ -385,8 +385,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         if progress is not None:
             rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
             progress(min(1.0, session.t / t_end), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
-        carried = settled(windows, previous)
-        previous = windows
+        checked.append(windows)
+        carried = settled(checked)
         if verdict != OK or mode == "full" or carried is None:
             continue
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
@@ -406,7 +406,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         session.memory.t[0] = session.t
         reduced_time += stretch.duration
         counts["stretches"] += 1
-        previous = None  # the next window starts from a new state: it is judged on its own
+        checked = []  # the next windows start from a new state: they are judged on their own
         verdict, reason = limits.update(temps, session.t)
         record(1)
         if progress is not None:

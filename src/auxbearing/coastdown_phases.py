@@ -16,8 +16,8 @@ from the window's whirl records (:data:`auxbearing.core.watch.WHIRL_FIELDS`) and
 * ``unsettled``: dry whip, a slipping backward whirl, or a window that changes class.
 
 A stretch is handed to the reduced model (:mod:`auxbearing.core.spin`) only when every plane is free,
-rolling, whirling or rattling, and the window before agreed (same states, loss torques within
-:data:`STATIONARY`); the two windows' mean losses are carried. A sliding race stays in full
+rolling, whirling or rattling in every window since the last stretch (at least two), and the mean of their
+loss torques is known to :data:`STATIONARY` (:func:`settled`); that mean is carried. A sliding race stays in full
 dynamics until it rolls: the reduced model has no state for the race's own speed while it is driven.
 """
 
@@ -37,8 +37,9 @@ from auxbearing.whirl import classify_window
 
 #: A race rolls on its journal when the contact's mean slip is within this fraction of the journal's surface speed.
 ROLL_SLIP = 0.02
-#: Two windows of a whirl or a rattle whose loss torques agree within this fraction show a steady state.
-STATIONARY = 0.3
+#: A state is steady when the mean loss torque of the windows since the last stretch is known to this fraction
+#: (standard error of the mean): a plane's loss is then measured to about that over the stretch it carries.
+STATIONARY = 0.02
 #: States the reduced model represents (module docstring).
 REDUCIBLE = ("free", "rolling", "whirling", "rattling")
 _F = {name: i for i, name in enumerate(WHIRL_FIELDS)}
@@ -99,23 +100,36 @@ def plane_window(machine: Machine, k: int, records: np.ndarray, onsets: int, pow
                        float(whirl), float(slip), tuple(float(p) for p in powers))
 
 
-def settled(now: list[PlaneWindow], before: list[PlaneWindow] | None) -> list[PlaneWindow] | None:
-    """The windows a stretch may carry (the mean of the two), or None to stay in full dynamics.
+def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:
+    """The mean of the windows since the last stretch if a stretch may carry it, or None to go on in full dynamics.
 
-    Every plane in a state the reduced model represents, in this window and the one before, in both the same
-    state, with loss torques within :data:`STATIONARY` (a state two windows see alike is steady over more than
-    one window's length).
+    ``windows`` holds, oldest first, each window's planes; the last ones in the same states as the last window
+    count. A stretch needs at least two of them, in states the reduced model represents, and each plane's mean
+    loss torque
+    known to :data:`STATIONARY`: the standard error of the windows' mean within that fraction of it. A steady
+    rolling or whirl agrees at once; a rattle or a journal swinging to and fro in the bottom of the bore
+    (a slow pendulum whose losses change along its swing) needs as many windows as its scatter asks for, and
+    the stretch carries their mean.
     """
-    if before is None or any(p.state not in REDUCIBLE for p in now):
+    if not windows or any(p.state not in REDUCIBLE for p in windows[-1]):
         return None
-    for p, b in zip(now, before, strict=True):
-        if p.state != b.state:
+    states = [p.state for p in windows[-1]]
+    run = 1  # the windows at the end that share the last one's states
+    while run < len(windows) and [p.state for p in windows[-1 - run]] == states:
+        run += 1
+    windows = windows[-run:]
+    n = len(windows)
+    if n < 2:
+        return None
+    for k in range(len(states)):
+        torques = np.array([w[k].torque for w in windows])
+        mean = abs(float(torques.mean()))
+        if float(torques.std(ddof=1)) / math.sqrt(n) > STATIONARY * max(mean, 1e-12):
             return None
-        if abs(p.torque - b.torque) > STATIONARY * max(abs(p.torque), abs(b.torque), 1e-12):
-            return None
-    return [p._replace(powers=tuple(0.5 * (x + y) for x, y in zip(p.powers, b.powers, strict=True)),
-                       force=0.5 * (p.force + b.force), axial_force=0.5 * (p.axial_force + b.axial_force))
-            for p, b in zip(now, before, strict=True)]
+    return [p._replace(powers=tuple(float(np.mean([w[k].powers[j] for w in windows])) for j in range(3)),
+                       force=float(np.mean([w[k].force for w in windows])),
+                       axial_force=float(np.mean([w[k].axial_force for w in windows])))
+            for k, p in enumerate(windows[-1])]
 
 
 def _viscous(plane, speed: float) -> float:

@@ -427,6 +427,8 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
             "peak_force_time_ms": float(watch.peak_time[0, k]) * 1e3,
             "peak_stress_time_ms": float(watch.peak_time[1, k]) * 1e3,
             "max_mount_deflection_um": float(np.max(sel.mount_deflection.values)) * 1e6,
+            "max_excursion_um": float(np.max(np.hypot(sel.journal_x.values - sel.ring_x.values,
+                                                      sel.journal_y.values - sel.ring_y.values))) * 1e6,
             "line_stiffness_N_per_m10_9": plane.line_stiffness,
             "defaults_used": list(plane.defaults),
         })
@@ -439,6 +441,7 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
         "energy_balance_error": float((accounted - energy_in) / max(scale, 1e-300)),
         "largest_energy_error": float(watch.energy_error[0]),
         "final_rotor_speed_rad_s": float(ds.rotor_speed.values[-1]), "planes": planes,
+        "largest_excursion_m": max(p["max_excursion_um"] for p in planes) * 1e-6,
         "output_step_s": run.output_step, "output_decimated": run.decimated,
     }
     return out

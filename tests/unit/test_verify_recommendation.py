@@ -22,7 +22,7 @@ def test_no_passing_geometry_is_no_recommendation(monkeypatch):
     data, name, base = machine_table("paper_rig")
     rec = recommend(data, name, base, read_criteria(None), quick=True)
     assert rec["passes"] is False and rec["worst_margin"] == -1.0
-    assert rec["note"].startswith("no four point geometry within these ranges passes the drop criteria")
+    assert rec["note"].startswith("no four point geometry within these ranges passes the drop's criteria")
     assert "backward whirl" in rec["note"] and f"all {rec['evaluations']} points fail" in rec["note"]
 
 

@@ -7,8 +7,11 @@
   single angular-contact bearing catches one direction only;
 * the coast-down with heat from the maximum speed to standstill (``--quick``: its first
   :data:`QUICK_COASTDOWN` seconds);
-* a small campaign over the drop conditions nobody controls (unbalance phase, friction, clearance
-  within its tolerance) on Dask (:mod:`auxbearing.campaign`).
+* a campaign over the drop conditions nobody controls, each over a range with a stated origin
+  (:func:`campaign_spreads`): the spin's phase at the drop, where the levitated rotor is when the magnetic
+  bearings let go, the journal/race friction, the unbalance up to the balance grade, the radial clearance
+  within its fit tolerances and the mount's stiffness and damping within theirs; on Dask
+  (:mod:`auxbearing.campaign`).
 """
 
 from __future__ import annotations
@@ -30,6 +33,13 @@ LOW_SPEED_FRACTION = 0.25
 #: ``--quick``: the drops last at most this long [s], the coast-down is run for this long [s] and the
 #: campaign has this many samples.
 QUICK_DROP, QUICK_COASTDOWN, QUICK_SAMPLES = 0.05, 5.0, 8
+#: Dry steel-on-steel sliding friction: 0.10-0.30 in Gieck & Gieck, *Engineering Formulas*, 7th ed. (1997),
+#: as quoted with other handbooks' values (0.23-0.62) by LBL's engineering table of friction coefficients
+#: (www-eng.lbl.gov/~ajdemell/coefficients_of_friction.html); Blau, Tribol. Int. 34 (2001) 585-591 on why a
+#: friction coefficient is a system's, not a material pair's, property: hence a spread, not a value.
+FRICTION_RANGE = (0.1, 0.3)
+FRICTION_SOURCE = ("Gieck & Gieck, Engineering Formulas, 7th ed. (1997): steel on steel sliding 0.10-0.30; "
+                   "a system property (Blau, Tribol. Int. 34, 2001), so a range")
 #: Samples of the verification's campaign unless ``verify.campaign_samples`` says otherwise: a power of two
 #: (Sobol' balance) whose whirl-free outcome shows P(backward whirl) within the default 5 % at 95 % confidence
 #: (Wilson's bound for no events, 1.96^2 / (n + 1.96^2), is 0.029 at 128 and 0.057 at 64).
@@ -41,13 +51,37 @@ VERIFY: tuple[Param, ...] = (
     Param("verify", "campaign_samples", "dimensionless", float(CAMPAIGN_SAMPLES), "", "count",
           "Samples of the verification's campaign",
           "ours: 128 whirl-free drops show P(backward whirl) <= 0.05 at 95 %"),
-    Param("verify", "friction_spread", "dimensionless", 0.05, "", "unit_interval",
-          "Half-width of the campaign's uniform spread of sliding friction about each plane's value",
-          "ours: the literature spans 0.1-0.3"),
-    Param("verify", "clearance_tolerance", "length", 1e-5, "um", "nonnegative",
-          "Half-width of the campaign's uniform spread of each radial clearance (machining tolerance)", "ours"),
+    Param("verify", "friction_low", "dimensionless", FRICTION_RANGE[0], "", "unit_interval",
+          "Lowest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
+    Param("verify", "friction_high", "dimensionless", FRICTION_RANGE[1], "", "unit_interval",
+          "Highest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
+    Param("verify", "balance_grade", "velocity", 6.3e-3, "mm/s", "nonnegative",
+          "Balance grade G of the rotor: the campaign's unbalance spreads from 0 to G / speed (and at least to "
+          "rotor.unbalance)",
+          "ISO 21940-11:2016, Table 1 (G 6.3: fans, blowers, pumps, electric motors); e_per = G / Omega"),
+    Param("verify", "fit_grade", "dimensionless", 6.0, "", "positive",
+          "ISO tolerance grade (IT) of the race bore and the journal; the campaign's radial clearance spreads by "
+          "(IT_bore + IT_journal) / 4 either side", "ISO 286-1:2010, Table 1 (IT6: ground bore and journal)"),
+    Param("verify", "clearance_tolerance", "length", None, "um", "optional_nonnegative",
+          "Half-width of the radial clearance's spread, instead of the one from verify.fit_grade", "user input"),
+    Param("verify", "mount_stiffness_spread", "dimensionless", 0.2, "", "unit_interval",
+          "Half-width of the mount stiffness's spread, as a fraction of its value",
+          "ours: elastomer and spring mounts are held to about +-20 % of their rated stiffness"),
+    Param("verify", "mount_damping_spread", "dimensionless", 0.3, "", "unit_interval",
+          "Half-width of the mount damping's spread, as a fraction of its value",
+          "ours: damping scatters more than stiffness (temperature, frequency)"),
+    Param("verify", "start_offset", "dimensionless", 0.3, "", "unit_interval",
+          "Largest offset of the levitated rotor from the bearing centre when the magnetic bearings let go, as a "
+          "fraction of the smallest radial clearance (square spread of that half-diagonal)",
+          "ISO 14839-2:2004: zone A/B boundary of a levitated rotor's displacement at 0.3 of the minimum "
+          "clearance"),
 )
 VERIFY_TABLE = by_key(VERIFY, "verify")
+#: ISO 286-1:2010 Table 1: standard tolerance IT6 and IT7 [m] by nominal size (upper bound of each range [m]).
+IT_TABLE = ((0.003, 6e-6, 10e-6), (0.006, 8e-6, 12e-6), (0.010, 9e-6, 15e-6), (0.018, 11e-6, 18e-6),
+            (0.030, 13e-6, 21e-6), (0.050, 16e-6, 25e-6), (0.080, 19e-6, 30e-6), (0.120, 22e-6, 35e-6),
+            (0.180, 25e-6, 40e-6), (0.250, 29e-6, 46e-6), (0.315, 32e-6, 52e-6), (0.400, 36e-6, 57e-6),
+            (0.500, 40e-6, 63e-6))
 
 
 @dataclass
@@ -56,10 +90,12 @@ class Cases:
 
     machine: Machine
     drops: dict[str, MachineRun] = field(default_factory=dict)  #: case name -> run
+    machines: dict[str, Machine] = field(default_factory=dict)  #: case name -> the machine it ran
     coastdown: CoastdownRun | None = None
     campaign: dict | None = None  #: statistics of :func:`auxbearing.campaign.statistics.campaign_statistics`
     campaign_store: str | None = None
     notes: list[str] = field(default_factory=list)
+    spreads: list[dict] = field(default_factory=list)  #: the campaign's uncontrolled conditions (campaign_spreads)
     tables: tuple[str, ...] = ()  #: the tables the machine file gives (to say where a value came from)
     #: why the coast-down stopped short of standstill without a finding (--quick, a budget); empty: it did not
     partial_coastdown: str = ""
@@ -97,15 +133,15 @@ def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, sam
     cases = Cases(variant(data, name, base, drop=drop), tables=tuple(data))
     speed = machine.rotor.speed
     low = settings["low_speed"] if settings["low_speed"] is not None else LOW_SPEED_FRACTION * abs(speed)
-    say("drop at the maximum speed")
-    cases.drops["drop at the maximum speed"] = run_machine(cases.machine)
-    say("drop at low speed")
-    cases.drops["drop at low speed"] = run_machine(
-        variant(data, name, base, rotor={"speed": f"{float(math.copysign(low, speed))!r} rad/s"}, drop=drop))
+    cases.machines["drop at the maximum speed"] = cases.machine
+    cases.machines["drop at low speed"] = variant(
+        data, name, base, rotor={"speed": f"{float(math.copysign(low, speed))!r} rad/s"}, drop=drop)
     if machine.rotor.axial_force != 0.0:
-        say("drop with the process thrust reversed")
-        cases.drops["drop with the thrust reversed"] = run_machine(
-            variant(data, name, base, rotor={"axial_force": f"{float(-machine.rotor.axial_force)!r} N"}, drop=drop))
+        cases.machines["drop with the thrust reversed"] = variant(
+            data, name, base, rotor={"axial_force": f"{float(-machine.rotor.axial_force)!r} N"}, drop=drop)
+    for case, case_machine in cases.machines.items():
+        say(case)
+        cases.drops[case] = run_machine(case_machine)
     first = cases.drops["drop at the maximum speed"].summary
     if first["verdict"] != "ok":
         cases.notes.append("the coast-down was not run: the drop at the maximum speed it starts from already left "
@@ -131,29 +167,92 @@ def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, sam
         n = int(settings["campaign_samples"])
     if n > 0:
         say(f"campaign of {n} drops")
+        cases.spreads = campaign_spreads(cases.machine, settings)
         cases.campaign, cases.campaign_store = _campaign(data, name, base, cases.machine, settings, n, store,
                                                          workers, scheduler, required_s0, drop)
     return cases
 
 
+def it_tolerance(diameter: float, grade: float) -> float:
+    """ISO 286-1 standard tolerance [m] of a nominal diameter [m], grade IT6 or IT7 (Table 1), linear between."""
+    for top, it6, it7 in IT_TABLE:
+        if diameter <= top:
+            return it6 + (it7 - it6) * (min(max(grade, 6.0), 7.0) - 6.0)
+    raise InputError.for_field("verify.fit_grade", f"diameter {diameter * 1e3:g} mm",
+                               "ISO 286-1's table here covers sizes up to 500 mm")
+
+
+def campaign_spreads(machine: Machine, settings: dict) -> list[dict]:
+    """The uncontrolled drop conditions and their ranges (SI), each with where its range comes from.
+
+    Each entry: ``key`` (a campaign input), ``low``, ``high``, ``unit`` (display), ``label`` and ``origin``.
+    """
+    r = machine.rotor
+    spreads = [{"key": "rotor.unbalance_phase", "low": 0.0, "high": 2.0 * math.pi, "scale": 180.0 / math.pi,
+                "unit": "deg", "label": "phase of the spin at the drop",
+                "origin": "any: the magnetic bearings do not fail at a chosen angle"}]
+    grade = settings["balance_grade"]
+    e_grade = grade / abs(r.speed) if r.speed else 0.0
+    top = max(e_grade, r.unbalance)
+    if top > 0.0:
+        spreads.append({"key": "rotor.unbalance", "low": 0.0, "high": top, "scale": 1e6, "unit": "um",
+                        "label": "static unbalance (mass-centre offset)",
+                        "origin": f"ISO 21940-11: G {grade * 1e3:g} mm/s at {abs(r.speed) * 30 / math.pi:.0f} rpm "
+                                  f"is e = {e_grade * 1e6:.3g} um" + (f"; the file's {r.unbalance * 1e6:g} um is larger"
+                                                                       if r.unbalance > e_grade else "")})
+    offset = settings["start_offset"] * min(p.radial_clearance for p in machine.planes) / math.sqrt(2.0)
+    if offset > 0.0:
+        for axis in ("x", "y"):
+            base = getattr(r, f"start_{axis}")
+            spreads.append({"key": f"rotor.start_{axis}", "low": base - offset, "high": base + offset, "scale": 1e6,
+                            "unit": "um", "label": f"levitated rotor's position at the drop, {axis}",
+                            "origin": VERIFY_TABLE["start_offset"].source})
+    for k, plane in enumerate(machine.planes):
+        lo, hi = settings["friction_low"], settings["friction_high"]
+        spreads.append({"key": f"touchdown.{k}.sliding_friction", "low": lo, "high": hi, "scale": 1.0, "unit": "",
+                        "label": f"{plane.name}: journal/race sliding friction", "origin": FRICTION_SOURCE})
+        tol = settings["clearance_tolerance"]
+        if tol is None:
+            bore = 2.0 * (plane.journal_radius + plane.radial_clearance)
+            tol = 0.25 * (it_tolerance(bore, settings["fit_grade"]) +
+                          it_tolerance(2.0 * plane.journal_radius, settings["fit_grade"]))
+            origin = (f"ISO 286-1 IT{settings['fit_grade']:g} of the {bore * 1e3:.0f} mm bore and journal: "
+                      f"+-{tol * 1e6:.1f} um")
+        else:
+            origin = "your [verify] table"
+        if tol > 0.0:
+            s = plane.radial_clearance
+            spreads.append({"key": f"touchdown.{k}.radial_clearance", "low": max(s - tol, 0.5 * s), "high": s + tol,
+                            "scale": 1e6, "unit": "um", "label": f"{plane.name}: radial clearance", "origin": origin})
+        if plane.mount is not None:
+            for name, value, spread_key in (("mount_stiffness", plane.mount.stiffness, "mount_stiffness_spread"),
+                                            ("mount_damping", plane.mount.damping, "mount_damping_spread")):
+                f = settings[spread_key]
+                if value > 0.0 and f > 0.0:
+                    spreads.append({"key": f"touchdown.{k}.{name}", "low": value * (1.0 - f),
+                                    "high": value * (1.0 + f), "scale": 1.0,
+                                    "unit": "N/m" if name == "mount_stiffness" else "N*s/m",
+                                    "label": f"{plane.name}: {name.replace('_', ' ')}",
+                                    "origin": VERIFY_TABLE[spread_key].source})
+    return spreads
+
+
 def campaign_tables(data: dict, machine: Machine, settings: dict, samples: int, drop: dict) -> dict:
-    """The verification's campaign over the uncontrolled drop conditions (module docstring)."""
+    """The verification's campaign over the uncontrolled drop conditions (:func:`campaign_spreads`)."""
     tables = copy.deepcopy(data)
     for key in ("criteria", "candidate", "verify", "campaign"):
         tables.pop(key, None)
     if drop:
         tables.setdefault("drop", {}).update(drop)
-    inputs = [{"key": "rotor.unbalance_phase", "distribution": "uniform", "low": "0 deg", "high": "360 deg"}]
-    spread = settings["friction_spread"]
-    for k, plane in enumerate(machine.planes):
-        mu = plane.sliding_friction
-        inputs.append({"key": f"touchdown.{k}.sliding_friction", "distribution": "uniform",
-                       "low": max(0.0, mu - spread), "high": min(1.0, mu + spread)})
-        tol = settings["clearance_tolerance"]
-        if tol > 0.0:
-            s = plane.radial_clearance
-            inputs.append({"key": f"touchdown.{k}.radial_clearance", "distribution": "uniform",
-                           "low": f"{float(max(s - tol, 0.5 * s))!r} m", "high": f"{float(s + tol)!r} m"})
+    si_units = {"rotor.unbalance_phase": "rad", "rotor.unbalance": "m", "rotor.start_x": "m", "rotor.start_y": "m"}
+    inputs = []
+    for spread in campaign_spreads(machine, settings):
+        key = spread["key"]
+        unit = si_units.get(key) or ("m" if key.endswith("radial_clearance") else
+                                     spread["unit"] if spread["unit"] not in ("", "um", "deg") else "")
+        low, high = (f"{float(spread['low'])!r} {unit}", f"{float(spread['high'])!r} {unit}") if unit else (
+            float(spread["low"]), float(spread["high"]))
+        inputs.append({"key": key, "distribution": "uniform", "low": low, "high": high})
     sampler = "sobol" if samples & (samples - 1) == 0 else "lhs"  # Sobol' points balance at powers of two
     tables["campaign"] = {"sampler": sampler, "samples": samples, "seed": 1, "analysis": "drop", "input": inputs}
     return tables

@@ -7,11 +7,15 @@ angular contact) carried to the machine.
 
 Recommendation (:func:`recommend`): for the family of the machine's bearing, the contact angle (within
 the source paper's Sec. IV range of 15-45 deg), the groove radius ratios (0.505-0.53, inner; the outer
-keeps its offset from the inner) and the radial touchdown clearance (60-140 % of the file's, and below
-the air-gap limit when one is given) that maximise the worst margin of the drop criteria at the maximum
-speed: a grid over the box, then a Nelder-Mead polish from its best point (scipy), each point a drop of
-the machine. The criterion with the smallest margin at the optimum binds; a variable at its bound says
-the box binds.
+keeps its offset from the inner) and the radial touchdown clearance that maximise the worst margin of the
+verdict's own criteria a drop at the maximum speed checks: s0 against its required value, the journal's
+excursion against the seal clearance, the clearance against the magnetic air gap (each margin as the
+verdict measures it), with leaving the model's range and sustained backward whirl as failures. The
+clearance stays between the levitated rotor's orbit over :data:`ORBIT_ZONE` (ISO 14839-2) and the
+air-gap limit, within 60-140 % of the file's. A grid over the box, then a Nelder-Mead polish from its best
+point (scipy), each point a drop of the machine. The criterion with the smallest margin at the optimum binds;
+a variable at a bound of the box is said. A point that fails a criterion is never recommended; the
+recommended design is then verified in full (:func:`auxbearing.verify.run.verify`) and its verdict shown.
 """
 
 from __future__ import annotations
@@ -27,6 +31,9 @@ from auxbearing.errors import InputError
 CONTACT_ANGLE_RANGE = (math.radians(15.0), math.radians(45.0))  #: source paper Sec. IV
 GROOVE_RATIO_RANGE = (0.505, 0.53)  #: ours: the paper's 0.51-0.52 widened to what makers grind
 CLEARANCE_RANGE = (0.6, 1.4)  #: ours: fraction of the file's radial clearance
+#: A levitated rotor's displacement stays below this fraction of the smallest touchdown clearance in normal
+#: running (ISO 14839-2:2004, zone A/B boundary), so the clearance must be at least the orbit over it.
+ORBIT_ZONE = 0.3
 
 
 def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
@@ -81,6 +88,15 @@ def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
     return tables
 
 
+def recommended_tables(data: dict, name: str, base: Path | None, rec: dict) -> dict:
+    """The machine file's tables with the recommended geometry (:func:`recommend`'s result) in every plane."""
+    from auxbearing.machine import machine_from_mapping
+
+    machine = machine_from_mapping(data, name, base)
+    x = np.array([math.radians(rec["contact_angle_deg"]), rec["inner_groove_ratio"], rec["clearance_factor"]])
+    return _design_tables(data, machine, x)
+
+
 def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: bool = False,
               progress=None) -> dict:
     """The geometry of the machine's bearing family that maximises the worst drop margin (module docstring)."""
@@ -88,17 +104,22 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
 
     from auxbearing.drop import run_machine
     from auxbearing.machine import machine_from_mapping
-    from auxbearing.verify.cases import QUICK_DROP
+    from auxbearing.verify.cases import QUICK_DROP, verify_settings
 
     machine = machine_from_mapping(data, name, base)
     first = machine.planes[0].bearing
     angle_free = first.type != "deep_groove"
     c_high = CLEARANCE_RANGE[1]
+    gap_limit = None
     if criteria.get("amb_air_gap"):
-        limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
-        c_high = min(c_high, limit / max(p.radial_clearance for p in machine.planes))
+        gap_limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
+        c_high = min(c_high, gap_limit / max(p.radial_clearance for p in machine.planes))
+    # the levitated rotor orbits its mass centre above its rigid-body modes: the orbit is the unbalance, at least
+    # the balance grade's (the verification's campaign uses the same)
+    orbit = max(machine.rotor.unbalance, verify_settings(data)["balance_grade"] / max(abs(machine.rotor.speed), 1e-9))
+    c_low = max(CLEARANCE_RANGE[0], orbit / ORBIT_ZONE / min(p.radial_clearance for p in machine.planes))
     bounds = np.array([CONTACT_ANGLE_RANGE if angle_free else (first.contact_angle, first.contact_angle),
-                       GROOVE_RATIO_RANGE, (CLEARANCE_RANGE[0], max(c_high, CLEARANCE_RANGE[0]))])
+                       GROOVE_RATIO_RANGE, (c_low, max(c_high, c_low))])
     duration = {"duration": f"{float(min(machine.simulation.duration, QUICK_DROP))!r} s"} if quick else {}
     evaluated: list[dict] = []
 
@@ -115,13 +136,17 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         summary = run.summary
         out = {}
         if summary["verdict"] != "ok":
-            out["model range"] = -1.0
+            out["no run leaves the model's range or a limit"] = -1.0
         s0 = min((p["s0"] for p in summary["planes"] if p["s0"] is not None), default=0.0)
-        out["s0"] = s0 / criteria["min_s0"] - 1.0
+        out["static safety factor s0 of every ball contact"] = s0 / criteria["min_s0"] - 1.0
         if any(p["backward_whirl_onset_ms"] is not None for p in summary["planes"]):
-            out["backward whirl"] = -1.0
-        shoulder = max(p["shoulder_use"] for p in summary["planes"])
-        out["contact ellipse below the shoulder"] = 1.0 - shoulder
+            out["no sustained backward whirl or dry whip"] = -1.0
+        if criteria.get("seal_clearance"):
+            out["journal excursion against the seal clearance"] = (
+                1.0 - summary["largest_excursion_m"] / criteria["seal_clearance"])
+        if gap_limit is not None:
+            out["touchdown clearance against the magnetic air gap"] = 1.0 - max(
+                p.radial_clearance * x[2] for p in machine.planes) / gap_limit
         binding = min(out, key=out.get)
         point = {"x": x, "worst": out[binding], "binding": binding, "margins": out}
         evaluated.append(point)
@@ -156,7 +181,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     # when no point passes, the best one is only the least bad (often a tie at -100 %): say so instead of
     # recommending it
     note = None if passes else (
-        f"no {first.type.replace('_', ' ')} geometry within these ranges passes the drop criteria: all "
+        f"no {first.type.replace('_', ' ')} geometry within these ranges passes the drop's criteria: all "
         f"{len(evaluated)} points fail ({', '.join(failing)}); the lever is outside the bearing's geometry "
         "(mount stiffness and damping, the clearance beyond this range, the rotor or the speed)")
     return {

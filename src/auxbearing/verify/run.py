@@ -16,8 +16,9 @@ from pathlib import Path
 from auxbearing.errors import InputError
 from auxbearing.machine import machine_from_mapping, machine_table
 from auxbearing.verify.cases import Cases, run_cases, verify_settings
+from auxbearing.verify.convergence import convergence
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, read_criteria, worst_margin
-from auxbearing.verify.designs import candidate_tables, recommend
+from auxbearing.verify.designs import candidate_tables, recommend, recommended_tables
 from auxbearing.verify.judge import judge
 
 
@@ -82,6 +83,7 @@ def _design(cases: Cases, criteria: dict) -> dict:
             "verdict": overall_verdict(judged),
             "drop_rows": _drop_rows(cases), "coastdown_rows": _coastdown_rows(cases),
             "coastdown_caption": "; ".join(cases.notes), "campaign_rows": campaign_rows, "drivers": drivers,
+            "spread_rows": spread_rows(cases.spreads),
             "cases": cases}
 
 
@@ -132,13 +134,25 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
                           required_s0=criteria["min_s0"], progress=lambda t, label=label: say(f"{label}: {t}"))
         others.append((label, _design(cases, criteria)))
     rec = recommend(data, name, base, criteria, quick=quick, progress=say) if with_recommendation else None
+    if rec is not None and rec["passes"]:
+        # the recommendation is itself verified: every case of the design, on the recommended geometry
+        tables = recommended_tables(data, name, base, rec)
+        checked = _design(run_cases(tables, f"{name}, recommended geometry", base, quick=quick, samples=samples,
+                                    store=out_dir / "campaign_recommended.zarr", workers=workers,
+                                    scheduler=scheduler, required_s0=criteria["min_s0"],
+                                    progress=lambda t: say(f"recommended geometry: {t}")), criteria)
+        rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
+                               "reason": _reason(checked["criteria"]),
+                               "criteria": [c.as_json() for c in checked["criteria"]]}
+    say("convergence: the governing case with tolerances ten times tighter")
+    converged = convergence(design["cases"], design["criteria"])
     machine = design["cases"].machine
     result = {
         "machine": machine.name, "verdict": design["verdict"], "design": design, "quick": quick,
         "criteria": [c.as_json() for c in design["criteria"]], "worst_margin": design["worst_margin"],
         "candidates": [{"bearing": label, "verdict": d["verdict"], "worst_margin": d["worst_margin"],
                         "criteria": [c.as_json() for c in d["criteria"]]} for label, d in others],
-        "recommendation": rec, "settings": settings, "wall_time_s": 0.0,
+        "recommendation": rec, "settings": settings, "wall_time_s": 0.0, "convergence": converged,
         "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
                    "candidates": [label for label, _ in candidate_list], "quick": quick},
     }
@@ -164,6 +178,23 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     return result
 
 
+def _reason(criteria) -> str:
+    from auxbearing.report.verify_html import verdict_reason
+
+    return verdict_reason(criteria)
+
+
+def _spread_value(spread: dict, end: str) -> str:
+    value = spread[end] * spread["scale"]
+    return f"{value:.4g} {spread['unit']}".strip()
+
+
+def spread_rows(spreads: list[dict]) -> list[list[str]]:
+    """The campaign's spreads as report rows: condition, range, origin."""
+    return [[sp["label"], f"{_spread_value(sp, 'low')} to {_spread_value(sp, 'high')}", sp["origin"]]
+            for sp in spreads]
+
+
 def _assumptions(cases: Cases, criteria: dict, settings: dict, quick: bool) -> list[str]:
     from auxbearing.verify.criteria import CRITERIA
 
@@ -174,9 +205,10 @@ def _assumptions(cases: Cases, criteria: dict, settings: dict, quick: bool) -> l
     for plane in cases.machine.planes:
         if plane.defaults:
             out.append(f"{plane.name}: derived from the bearing's geometry or defaulted: {', '.join(plane.defaults)}")
-    out.append(f"low-speed drop at a quarter of the maximum speed unless verify.low_speed is given; campaign "
-               f"spreads (the [verify] table): unbalance phase over the whole turn, sliding friction +-"
-               f"{settings['friction_spread']:g}, radial clearance +-{settings['clearance_tolerance'] * 1e6:g} um")
+    out.append("low-speed drop at a quarter of the maximum speed unless verify.low_speed is given")
+    for sp in cases.spreads:
+        out.append(f"campaign: {sp['label']} from {_spread_value(sp, 'low')} to {_spread_value(sp, 'high')} "
+                   f"({sp['origin']})")
     out += cases.notes
     if quick:
         out.append("--quick: shorter drops, a partial coast-down, 8 campaign samples, a 2x2x2 design grid")

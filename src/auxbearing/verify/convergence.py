@@ -1,0 +1,108 @@
+"""Convergence evidence: the case that governs a verdict, run again with tolerances ten times tighter.
+
+The governing criterion is the failing one, or else the one with the smallest margin. Its case (a drop, or
+the coast-down) runs again with the integration's relative and absolute tolerances divided by
+:data:`TIGHTER` and, for a coast-down, a reduced-model speed step halved (finer stretches between the
+full-dynamics checks); the governing quantity's change is reported, and a change beyond
+:data:`SETTLED` says the verdict rests on a number the numerics still move. A campaign's probability has
+its confidence interval as its own evidence and is not re-run.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import replace
+
+from auxbearing.verify.cases import Cases
+
+#: Factor by which the tolerances are tightened.
+TIGHTER = 10.0
+#: Largest relative change of the governing quantity for which it counts as converged.
+SETTLED = 0.01
+
+_COASTDOWN = ("peak bearing temperature", "preload of a closing internal clearance",
+              "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap")
+
+
+def _tightened(machine, coastdown: bool):
+    """A copy of a (batch) machine with tolerances divided by :data:`TIGHTER`, and a finer coast-down."""
+    sim = copy.copy(machine.simulation)
+    object.__setattr__(sim, "rtol", machine.simulation.rtol / TIGHTER)  # both stay valid: smaller, positive
+    object.__setattr__(sim, "atol", machine.simulation.atol / TIGHTER)
+    out = replace(machine, simulation=sim)
+    if coastdown:
+        out = replace(out, coastdown=replace(machine.coastdown, speed_step=0.5 * machine.coastdown.speed_step))
+    return out
+
+
+def _coastdown_quantity(name: str, summary: dict, history) -> float | None:
+    planes = summary["planes"]
+    if name == "peak bearing temperature":
+        return max(max(p["max_temperature_C"].values()) for p in planes)
+    if name == "preload of a closing internal clearance":
+        return min(p["min_internal_clearance_um"] for p in planes)
+    if name == "drops to failure (fatigue or dent)":
+        values = [p["allowed_drops"] for p in planes if p["allowed_drops"] is not None]
+        return min(values) if values else None
+    return float(history.radial_clearance.max()) * 1e3
+
+
+def _drop_quantity(name: str, summary: dict) -> float | None:
+    if name.startswith("static safety factor"):
+        values = [p["s0"] for p in summary["planes"] if p["s0"] is not None]
+        return min(values) if values else None
+    return summary["largest_excursion_m"] * 1e3
+
+
+def governing(criteria: list):
+    """The criterion that governs a verdict: the first failing one, else the checked one with the smallest margin."""
+    failing = [c for c in criteria if c.passed is False]
+    if failing:
+        return failing[0]
+    with_margin = [c for c in criteria if c.passed is not None and c.margin is not None]
+    return min(with_margin, key=lambda c: c.margin) if with_margin else None
+
+
+def convergence(cases: Cases, criteria: list) -> dict | None:
+    """Re-run the governing case tighter (module docstring); None when nothing re-runnable governs."""
+    from auxbearing.coastdown import run_coastdown
+    from auxbearing.drop import run_machine
+
+    c = governing(criteria)
+    if c is None or c.found is None:
+        return None
+    what = {"criterion": c.name, "unit": c.unit, "tolerance_factor": TIGHTER}
+    if c.name in _COASTDOWN:
+        if cases.coastdown is None:
+            return None
+        first = cases.coastdown
+        run = run_coastdown(_tightened(cases.machine, True), until_stop=first.summary["until_stop"],
+                            duration=None if first.summary["until_stop"] else first.summary["simulated_s"])
+        before = _coastdown_quantity(c.name, first.summary, first.history)
+        after = _coastdown_quantity(c.name, run.summary, run.history)
+        what.update(case="the coast-down (speed step halved too)", verdict=run.summary["verdict"])
+        if c.name == "peak bearing temperature":  # on an offset scale: compare the rises above ambient
+            ambient = cases.machine.coastdown.ambient_temperature - 273.15
+            before, after = (None if before is None else before - ambient), (None if after is None else after - ambient)
+            what["quantity"] = "hottest part's rise above ambient"
+    elif c.name.startswith("static safety factor") or c.name.startswith("journal excursion"):
+        case = max(cases.drops, key=lambda k: 0.0) if not c.evidence else next(
+            (k for k in cases.drops if k in c.evidence), next(iter(cases.drops)))
+        run = run_machine(_tightened(cases.machines[case], False))
+        before = _drop_quantity(c.name, cases.drops[case].summary)
+        after = _drop_quantity(c.name, run.summary)
+        what.update(case=case, verdict=run.summary["verdict"])
+    else:
+        return None
+    what.setdefault("quantity", c.name)
+    what.update(as_run=before, tightened=after)
+    if before is None or after is None or before == 0.0:
+        what.update(change=None, settled=None, note="the tighter run gave no value to compare")
+        return what
+    change = (after - before) / abs(before)
+    what.update(change=change, settled=abs(change) <= SETTLED,
+                note=(f"{what['quantity']} moves {100 * change:+.2f} % with tolerances {TIGHTER:g}x tighter"
+                      + ("" if abs(change) <= SETTLED else
+                         f": more than {100 * SETTLED:g} %, so the verdict rests on a number the numerics still "
+                         "move")))
+    return what
