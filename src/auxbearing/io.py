@@ -120,6 +120,60 @@ def read_text(path: str | Path, field: str = "file") -> str:
     return text
 
 
+#: Deepest nesting of arrays and tables an input TOML file may have. A campaign's inputs are the deepest a
+#: file of ours goes (``campaign`` > ``input`` > one input > its value: 4 levels, 6 with an inline bearing
+#: and its material in a candidate); anything far deeper is not one of our files, and a parser or a copy
+#: walking thousands of levels would run out of stack.
+MAX_TOML_DEPTH = 16
+
+
+def nesting_depth(data: object) -> int:
+    """How many arrays and tables lie inside one another in ``data`` (a plain value is 0), without recursion.
+
+    >>> nesting_depth({"a": [1, {"b": [2]}]}), nesting_depth(5)
+    (4, 0)
+    """
+    deepest = 0
+    stack = [(data, 0)]
+    while stack:
+        item, depth = stack.pop()
+        if isinstance(item, dict):
+            children = item.values()
+        elif isinstance(item, list):
+            children = item
+        else:
+            deepest = max(deepest, depth)
+            continue
+        deepest = max(deepest, depth + 1)
+        stack.extend((child, depth + 1) for child in children)
+    return deepest
+
+
+def read_toml(path: str | Path, field: str = "file") -> dict:
+    """A TOML file's tables; a missing file, a folder, bad syntax or a file nested too deeply is one line.
+
+    A file nested thousands of levels deep exhausts the parser's stack (``RecursionError``) and one nested a
+    few hundred levels would exhaust the next function that walks it: both are refused, naming the file.
+    A file that is not UTF-8 is read in the encoding :func:`read_text` can tell, with a warning.
+    """
+    import tomllib
+
+    text = read_text(path, field)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as err:
+        raise InputError.for_field(field, str(path), f"is not valid TOML ({err})") from None
+    except RecursionError:
+        raise InputError.for_field(field, str(path), "is nested too deeply to read (arrays or tables inside one "
+                                   f"another thousands of levels deep; our files need at most {MAX_TOML_DEPTH})"
+                                   ) from None
+    depth = nesting_depth(data)
+    if depth > MAX_TOML_DEPTH:
+        raise InputError.for_field(field, str(path), f"is nested {depth} levels deep (arrays or tables inside one "
+                                   f"another); our files need at most {MAX_TOML_DEPTH}")
+    return data
+
+
 def provenance(inputs: dict | None = None) -> dict:
     """Attributes every file carries: the package version and the inputs of the run."""
     return {"auxbearing_version": __version__, "inputs": json.dumps(to_jsonable(inputs or {}), sort_keys=True)}

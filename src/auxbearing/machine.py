@@ -17,7 +17,7 @@ from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from auxbearing.bearing import BearingGeometry, bearing_from_mapping, read_toml
+from auxbearing.bearing import BearingGeometry, bearing_from_mapping
 from auxbearing.core import machine as cm
 from auxbearing.core.hertz import line_contact_constant
 from auxbearing.errors import InputError
@@ -33,7 +33,7 @@ from auxbearing.machine_params import (
     hollow_cylinder,
     steel_column_stiffness,
 )
-from auxbearing.params import accept, read_table
+from auxbearing.params import accept, read_table, unknown
 
 if TYPE_CHECKING:
     from auxbearing.machine_kernel import KernelModel
@@ -45,6 +45,8 @@ STEEL_DENSITY = 7810.0
 #: Default shoulder height of the raceway grooves as a fraction of the ball diameter (an assumption).
 SHOULDER_FRACTION = 0.25
 ORIENTATIONS = ("horizontal", "vertical")
+#: Keys of ``[machine]``.
+MACHINE_KEYS = ("name", "orientation", "source")
 #: Tables of a machine file that other commands read and check (verify's criteria and candidates, a
 #: campaign's definition); a drop or coast-down leaves them alone.
 OTHER_TABLES = ("criteria", "candidate", "verify", "campaign")
@@ -369,8 +371,9 @@ def make_plane(bearing: BearingGeometry, values: dict, name: str, index: int) ->
             filled.append("mount_mass")
         stop = given.get("mount_stop")
         stop_k = given.get("stop_stiffness") or 100.0 * given["mount_stiffness"]
-        travel = given.get("mount_travel") or (2.0 * stop if stop is not None else 10.0 * s)
-        mount = Mount(given["mount_stiffness"], value("mount_damping"), m_mass, value("mount_deadband"), stop, stop_k,
+        deadband = value("mount_deadband")
+        travel = given.get("mount_travel") or (2.0 * stop if stop is not None else max(10.0 * s, 2.0 * deadband))
+        mount = Mount(given["mount_stiffness"], value("mount_damping"), m_mass, deadband, stop, stop_k,
                       value("stop_damping"), travel)
     shoulder = given.get("shoulder_height")
     if shoulder is None:
@@ -398,18 +401,25 @@ def _text(table: dict, key: str, where: str, fallback: str) -> str:
 
 
 def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
-    """A machine from the tables of a machine TOML file (values with units); every key checked first."""
+    """A machine from the tables of a machine TOML file (values with units); every key checked first.
+
+    The machine's own tables are read here, with the values no machine can have together
+    (:func:`auxbearing.machine_check.check_combinations`); a whole file, its ``[criteria]``, ``[verify]``,
+    ``[[candidate]]`` and ``[campaign]`` tables too, is checked by
+    :func:`auxbearing.machine_check.check_machine_document` (what :func:`read_machine` does).
+    """
+    from auxbearing.machine_check import check_combinations
+
     allowed = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", *OTHER_TABLES)
     for key in data:
         if key not in allowed:
-            raise InputError.for_field(f"[{key}]", "table", "unknown table; allowed tables: " + ", ".join(allowed))
+            raise unknown(f"[{key}]", "table", key, allowed, "table")
     head = data.get("machine", {})
     if not isinstance(head, dict):
         raise InputError.for_field("machine", head, "must be a table")
     for key in head:
-        if key not in ("name", "orientation", "source"):
-            raise InputError.for_field(f"machine.{key}", head[key], "unknown key; allowed keys: name, orientation, "
-                                                                     "source")
+        if key not in MACHINE_KEYS:
+            raise unknown(f"machine.{key}", head[key], key, MACHINE_KEYS)
     rotor_values = read_table(data.get("rotor"), TABLES["rotor"], "rotor.")
     for key in ("mass", "polar_inertia", "speed"):
         if key not in rotor_values:
@@ -421,6 +431,9 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     planes = []
     for k, table in enumerate(tables):
         where = f"touchdown.{k}."
+        for key in table:
+            if key not in TABLES["touchdown"] and key not in TOUCHDOWN_TEXT:
+                raise unknown(where + key, table[key], key, [*TOUCHDOWN_TEXT, *TABLES["touchdown"]])
         numbers = {key: v for key, v in table.items() if key not in TOUCHDOWN_TEXT}
         values = read_table(numbers, TABLES["touchdown"], where)
         if "radial_clearance" not in values:
@@ -431,36 +444,41 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
             except InputError as err:
                 raise InputError(str(err)) from None
         else:
-            spec = _text(table, "bearing", where, "")
-            path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
-            bearing = _bearing(spec, path, where)
+            bearing = read_bearing_spec(_text(table, "bearing", where, ""), base, where + "bearing")
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
         planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")
+    if not isinstance(data.get("coastdown") or {}, dict):
+        raise InputError.for_field("coastdown", data["coastdown"], "must be a table of keys")
     coast = dict(data.get("coastdown") or {})
     vacuum = coast.pop("vacuum", False)
     if not isinstance(vacuum, bool):
         raise InputError.for_field("coastdown.vacuum", vacuum, "must be true or false")
     coast_values = read_table(coast, TABLES["coastdown"], "coastdown.")
     life_values = read_table(data.get("life"), TABLES["life"], "life.")
-    return Machine(name=_text(head, "name", "machine.", name), rotor=rotor, planes=tuple(planes),
-                   orientation=_text(head, "orientation", "machine.", "horizontal"),
-                   simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
-                   coastdown=Coastdown(**coast_values, vacuum=vacuum), life=Life(**life_values))
+    machine = Machine(name=_text(head, "name", "machine.", name), rotor=rotor, planes=tuple(planes),
+                      orientation=_text(head, "orientation", "machine.", "horizontal"),
+                      simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
+                      coastdown=Coastdown(**coast_values, vacuum=vacuum), life=Life(**life_values))
+    check_combinations(data, machine)
+    return machine
 
 
-def _bearing(spec: str, path: Path, where: str) -> BearingGeometry:
+def read_bearing_spec(spec: str, base: Path | None, field: str) -> BearingGeometry:
+    """A bearing named in a machine file: a catalogue name, or a bearing TOML file (relative to ``base``).
+
+    ``field`` names it in an error (``touchdown.0.bearing``, ``candidate.1.bearing``).
+    """
     from auxbearing.bearing import get_bearing
+    from auxbearing.io import read_toml
 
+    path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
     if spec.lower().endswith(".toml") or path.is_file():
-        table = read_toml(path, where + "bearing")
+        table = read_toml(path, field)
         if "bearing" not in table:
-            raise InputError.for_field(where + "bearing", spec, "this file has no [bearing] table")
+            raise InputError.for_field(field, spec, "this file has no [bearing] table")
         return bearing_from_mapping(table["bearing"], name=path.stem)
-    try:
-        return get_bearing(spec)
-    except InputError as err:
-        raise InputError(where + str(err)) from None
+    return get_bearing(spec, field)
 
 
 @cache
@@ -475,24 +493,41 @@ def machine_names() -> list[str]:
     return sorted(_catalogue_files())
 
 
-def machine_table(spec: str | Path) -> tuple[dict, str, Path | None]:
-    """The tables of a machine file or catalogue machine as read (values with units), its name and folder."""
+def _document(spec: str | Path) -> tuple[dict, str, Path | None]:
     import tomllib
+
+    from auxbearing.io import existing_file, read_toml
 
     text = str(spec)
     if text in _catalogue_files():
         return tomllib.loads(_catalogue_files()[text]), text, None
     path = Path(text)
-    if not path.is_file():
+    if not path.exists():
         raise InputError.for_field("machine", text, "neither a file nor a catalogue machine ("
                                    + ", ".join(machine_names()) + ")")
-    return read_toml(path, "--machine"), path.stem, path.parent
+    existing_file(path, "machine")
+    return read_toml(path, "machine"), path.stem, path.parent
+
+
+def machine_table(spec: str | Path) -> tuple[dict, str, Path | None]:
+    """The tables of a machine file or catalogue machine as read (values with units), its name and folder.
+
+    The whole file is checked first (:func:`auxbearing.machine_check.check_machine_document`): a file any
+    command refuses, every command refuses, before any work.
+    """
+    from auxbearing.machine_check import check_machine_document
+
+    data, name, base = _document(spec)
+    check_machine_document(data, name, base)
+    return data, name, base
 
 
 def read_machine(spec: str | Path) -> Machine:
-    """A machine from a TOML file or a catalogue name (:func:`machine_names`)."""
-    data, name, base = machine_table(spec)
-    return machine_from_mapping(data, name, base)
+    """A machine from a TOML file or a catalogue name (:func:`machine_names`), the whole file checked first."""
+    from auxbearing.machine_check import check_machine_document
+
+    data, name, base = _document(spec)
+    return check_machine_document(data, name, base)
 
 
 def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
@@ -530,4 +565,4 @@ def paper_rig() -> Machine:
 
 __all__ = ["G0", "Coastdown", "Life", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
            "machine_from_mapping", "machine_names", "machine_table", "make_plane", "paper_rig", "planar_machine",
-           "read_machine"]
+           "read_bearing_spec", "read_machine"]

@@ -84,7 +84,8 @@ TOUCHDOWN: tuple[Param, ...] = (
           "Hard-stop stiffness; default 100 x mount_stiffness", "ours"),
     Param("touchdown", "stop_damping", "damping", 0.0, "N*s/m", "nonnegative", "Hard-stop damping", "ours"),
     Param("touchdown", "mount_travel", "length", None, "mm", "optional_positive",
-          "Largest radial travel the mount allows before the run stops; default 2 x the stop, or 10 x the clearance",
+          "Largest radial travel the mount allows before the run stops; default 2 x the stop, or 10 x the clearance "
+          "(at least 2 x the dead band)",
           "ours"),
     Param("touchdown", "misalignment_x", "length", 0.0, "um", "finite", "Bearing centre offset along x", "ours"),
     Param("touchdown", "misalignment_y", "length", 0.0, "um", "finite", "Bearing centre offset along y", "ours"),
@@ -169,7 +170,7 @@ COASTDOWN: tuple[Param, ...] = (
     Param("coastdown", "max_temperature", "temperature", 423.15, "degC", "positive",
           "Temperature of any bearing part that ends the run (thermal run-away)",
           "ours: 150 degC, the usual dimensional-stabilisation limit of through-hardened bearing steel"),
-    Param("coastdown", "speed_step", "dimensionless", 0.1, "", "unit_interval",
+    Param("coastdown", "speed_step", "dimensionless", 0.1, "", "fraction",
           "Largest relative speed change of one reduced-model stretch before full dynamics checks again",
           "ours: the reduced/full agreement test holds within 2 % with it"),
     Param("coastdown", "max_steps", "dimensionless", 3e7, "", "count",

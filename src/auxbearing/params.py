@@ -8,6 +8,7 @@ in the row's display unit.
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 from typing import NamedTuple
@@ -37,8 +38,42 @@ EXTRA_UNITS = {
     "torque_per_speed": ("N*m*s", "N*m*s, N*m/rpm"),
     "torque_per_speed2": ("N*m*s**2", "N*m*s**2, N*m/rpm**2"),
 }
-RULES = ("positive", "nonnegative", "unit_interval", "finite", "tolerance", "optional_positive",
+RULES = ("positive", "nonnegative", "unit_interval", "fraction", "finite", "tolerance", "optional_positive",
          "optional_nonnegative", "count")
+#: How close (difflib's ratio) a mistyped key must be to an allowed one to be suggested.
+SUGGESTION_CUTOFF = 0.6
+
+
+def with_article(noun: str) -> str:
+    """The noun with its indefinite article ("an angular speed", "a length").
+
+    >>> with_article("angular speed"), with_article("length")
+    ('an angular speed', 'a length')
+    """
+    return ("an " if noun[:1].lower() in "aeiou" else "a ") + noun
+
+
+def did_you_mean(key: str, allowed) -> str:
+    """``"; did you mean mount_damping?"`` for the allowed key closest to a mistyped one, or ``""``.
+
+    >>> did_you_mean("mount_dampng", ["mount_damping", "mount_mass"])
+    '; did you mean mount_damping?'
+    >>> did_you_mean("colour", ["mass"])
+    ''
+    """
+    close = difflib.get_close_matches(str(key), [str(a) for a in allowed], n=1, cutoff=SUGGESTION_CUTOFF)
+    return f"; did you mean {close[0]}?" if close else ""
+
+
+def unknown(field: str, value: object, key: str, allowed, what: str = "key") -> InputError:
+    """The one-line error of an unknown key (or table): the allowed list and the closest allowed name.
+
+    >>> str(unknown("rotor.mas", "2 kg", "mas", ["mass", "speed"]))
+    "rotor.mas = '2 kg': unknown key; allowed keys: mass, speed; did you mean mass?"
+    """
+    allowed = [str(a) for a in allowed]
+    return InputError.for_field(field, value, f"unknown {what}; allowed {what}s: " + ", ".join(allowed)
+                                + did_you_mean(key, allowed))
 
 
 class Param(NamedTuple):
@@ -85,7 +120,8 @@ def convert(field: str, value: object, dimension: str, default_unit: str | None 
     try:
         magnitude = float(quantity.to(unit).magnitude)
     except pint.DimensionalityError:
-        raise InputError.for_field(field, value, f"unit {quantity.units} is not a {dimension.replace('_', ' ')} "
+        raise InputError.for_field(field, value, f"unit {quantity.units} is not "
+                                                 f"{with_article(dimension.replace('_', ' '))} "
                                                  f"(use e.g. {_examples(dimension)})") from None
     except (OverflowError, ValueError, TypeError):
         raise InputError.for_field(field, value, "is not a finite number") from None
@@ -139,6 +175,8 @@ def check(param: Param, value: object, field: str | None = None, typed: object =
         raise InputError.for_field(name, shown, "must be >= 0")
     if rule == "unit_interval" and not 0.0 <= value <= 1.0:
         raise InputError.for_field(name, shown, "must lie in [0, 1]")
+    if rule == "fraction" and not 0.0 < value <= 1.0:
+        raise InputError.for_field(name, shown, "must lie in (0, 1]")
     if rule == "tolerance" and not 0.0 < value <= 1e-2:
         raise InputError.for_field(name, shown, "must lie in (0, 0.01]")
     if rule == "count" and (value != int(value) or value < 1):
@@ -169,7 +207,7 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
     >>> read_table({"mas": "2 kg"}, rows, "rotor.")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: rotor.mas = '2 kg': unknown key; allowed keys: mass
+    auxbearing.errors.InputError: rotor.mas = '2 kg': unknown key; allowed keys: mass; did you mean mass?
     """
     if data is None:
         return {}
@@ -178,7 +216,7 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
     out = {}
     for key, value in data.items():
         if key not in table:
-            raise InputError.for_field(prefix + key, value, "unknown key; allowed keys: " + ", ".join(table))
+            raise unknown(prefix + key, value, key, table)
         param = table[key]
         if isinstance(value, (int, float)) and not isinstance(value, bool) and param.dimension not in (
                 "dimensionless",) and si_unit(param.dimension):

@@ -23,6 +23,10 @@ from auxbearing.units import to_si
 _HEADER = re.compile(r"^\s*([A-Za-z_][\w\-]*)\s*(?:\[([^\]]*)\])?\s*$")
 _WHITESPACE_HEADER_FIELD = re.compile(r"[^\s\[\]]+(?:\s*\[[^\]]*\])?")
 _MISSING = ("", "nan", "na", "null", "none")
+#: Largest magnitude of a value in SI. A double holds up to 1.8e308, but the arithmetic after reading squares
+#: values (hypotenuses, energies, Hertz's cube roots of squares): 1e150 keeps such a square finite, and no
+#: force, length, time or speed a person measures comes near it.
+MAX_MAGNITUDE = 1e150
 
 
 class Column(NamedTuple):
@@ -177,5 +181,11 @@ def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: s
                                  f"{text!r} is not a number") from None
             if not math.isfinite(values[k]):
                 raise InputError(f"{path.name}: column {header[index]!r}, line {lines[k]}: {text!r} is not finite")
-        data[key] = values * scale
+        with np.errstate(over="ignore"):
+            data[key] = values * scale
+        beyond = np.nonzero(~(np.abs(data[key]) <= MAX_MAGNITUDE))[0]
+        if beyond.size:
+            k = int(beyond[0])
+            raise InputError(f"{path.name}: column {header[index]!r}, line {lines[k]}: {rows[k][index]!r} is beyond "
+                             f"any value auxbearing computes with (at most {MAX_MAGNITUDE:g} in SI units)")
     return UnitTable(data, lines, header, header_line, meta)

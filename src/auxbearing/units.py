@@ -16,6 +16,7 @@ import pint
 from auxbearing.errors import InputError
 from auxbearing.params import EXTRA_UNITS as _EXTRA_UNITS
 from auxbearing.params import SI_UNITS as _SI_UNITS
+from auxbearing.params import with_article
 
 ureg = pint.UnitRegistry()
 ureg.define("rpm = revolution / minute")
@@ -184,8 +185,7 @@ def _describe(dimension: str) -> str:
 
 def _a(dimension: str) -> str:
     """The dimension with its article ("an angle", "a length")."""
-    text = _describe(dimension)
-    return ("an " if text[0] in "aeiou" else "a ") + text
+    return with_article(_describe(dimension))
 
 
 def _entry(dimension: str) -> tuple[str, str, str]:

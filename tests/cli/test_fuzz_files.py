@@ -88,6 +88,7 @@ def _measured(rows: list[list[object]], header: str = "time [s], x [um], y [um]"
 
 
 GOOD_ROWS = _measured_rows()
+SYNTHETIC = (Path(__file__).parents[2] / "src/auxbearing/catalog/experiments/qj202_drop_synthetic.csv").read_text()
 
 
 def _netcdf(**changes):
@@ -296,6 +297,11 @@ LOAD_FILES = [
          files={"l.csv": "axial [N]; radial [kN]\n0; 0,5\n"}),
     case("lcsv-enormous-load", "static-cases --loads l.csv", files={"l.csv": "radial [N]\n1e12\n"},
          expect="warning"),
+    case("lcsv-overflow-in-unit", "static-cases --loads l.csv", "l.csv", "1e308",
+         files={"l.csv": "radial [kN]\n1e308\n"},
+         note="issue 20: a RuntimeWarning (overflow) leaked before the error"),
+    case("lcsv-largest-double", "static-cases --loads l.csv", "l.csv", "1.7e308",
+         files={"l.csv": "radial [N]\n1.7e308\n"}),
 ]
 
 MEASURED_FILES = [
@@ -327,6 +333,15 @@ MEASURED_FILES = [
     case("mcsv-binary", "experiment --measured m.csv", "m.csv", files={"m.csv": bytes(range(256)) * 8}),
     case("mcsv-unit-option-contradicts", "experiment --measured m.csv --unit x=mm", "m.csv", "contradicts",
          files={"m.csv": _measured(GOOD_ROWS)}),
+    case("mcsv-unit-mm-for-um", "experiment --measured m.csv", "m.csv", "um", "mm",
+         files={"m.csv": SYNTHETIC.replace("x [um]", "x [mm]").replace("y [um]", "y [mm]")},
+         note="issue 20: refused as 'touching the wall in fewer than 3 directions', with RuntimeWarnings"),
+    case("mcsv-unit-nm-for-um", "experiment --measured m.csv", "m.csv", "um", "nm",
+         files={"m.csv": SYNTHETIC.replace("x [um]", "x [nm]").replace("y [um]", "y [nm]")}),
+    case("mcsv-unit-m-for-um", "experiment --measured m.csv", "m.csv", "um",
+         files={"m.csv": SYNTHETIC.replace("x [um]", "x [m]").replace("y [um]", "y [m]")}),
+    case("mcsv-huge-values", "experiment --measured m.csv", "m.csv", "1e+308",
+         files={"m.csv": _measured([[r[0], 1e308 * (k % 2), r[2]] for k, r in enumerate(GOOD_ROWS)])}),
     case("mnc-not-netcdf", "experiment --measured m.nc", "m.nc", files={"m.nc": "time,x,y\n"}),
     case("mnc-empty", "experiment --measured m.nc", "m.nc", files={"m.nc": b""}),
     case("mnc-no-x", "experiment --measured m.nc", "m.nc", "'x'", files={"m.nc": _netcdf(x=None)}),

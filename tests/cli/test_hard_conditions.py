@@ -49,15 +49,27 @@ def _scratch(folder: Path, name: str) -> list[Path]:
 
 
 # ----------------------------------------------------------------------------- the issue's hangs
+def test_tiny_race_mass_is_refused_before_any_step(tmp_path):
+    # issue 11: `drop --race-mass 1e-9` never finished; issue 20: it ran into its wall budget with nothing said.
+    # The race on its damped contacts allows explicit steps of ~3e-12 s: some 1e10 steps, beyond the step budget
+    start = time.monotonic()
+    o = _run(tmp_path, "drop --race-mass 1e-9 --quiet", None, "error", "--race-mass", "1e-9", "stiff",
+             "drop.max_steps")
+    assert time.monotonic() - start < 10 and "e+10 steps for the 150 ms run" in _error_line(o)
+
+
 @pytest.mark.slow
-def test_tiny_race_mass_ends_at_the_wall_time_budget(tmp_path):
-    # issue: `drop --race-mass 1e-9` never finished (killed at 300 s): the race is so light the steps shrink
+def test_light_race_is_said_stiff_and_ends_at_the_wall_time_budget(tmp_path):
+    # a race of 1e-6 kg fits the step budget (2.3e7 steps) but not two seconds: said at the start, then the
+    # wall-time budget ends the run in one line
     (tmp_path / "work").mkdir()
-    o = run_in_process(case("budget", "drop --race-mass 1e-9 --max-wall-time 2s --quiet"), tmp_path / "work")
+    o = run_in_process(case("budget", "drop --race-mass 1e-6 --max-wall-time 2s --quiet"), tmp_path / "work")
     lines = [ln for ln in o.stderr.splitlines() if ln.strip()]
     assert o.exit_code == 1 and not o.traceback and o.seconds < 30 and not o.new_files
-    assert len(lines) == 1 and lines[0].startswith("error: --max-wall-time = 2 s: the drop used up its wall-time")
-    assert "raise --max-wall-time" in lines[0]
+    assert len(lines) == 2 and lines[0].startswith("warning: --race-mass = '1e-6': the race of 1e-06 kg")
+    assert "makes the integration stiff" in lines[0]
+    assert lines[1].startswith("error: --max-wall-time = 2 s: the drop used up its wall-time")
+    assert "raise --max-wall-time" in lines[1]
 
 
 def test_tiny_max_step_is_refused_before_any_step(tmp_path):
@@ -70,7 +82,8 @@ def test_tiny_max_step_is_refused_before_any_step(tmp_path):
 def test_a_machine_run_past_its_budget_ends_with_that_verdict(tmp_path):
     # the machine's own budgets: a file's drop.max_wall_time stops the run with a verdict and partial results
     machine = (Path(__file__).parents[2] / "src/auxbearing/catalog/machines/paper_rig.toml").read_text()
-    machine = machine.replace('race_mass = "0.0125 kg"', 'race_mass = "1e-9 kg"') + 'max_wall_time = "1 s"\n'
+    machine = machine.replace('race_mass = "0.0125 kg"', 'race_mass = "1e-9 kg"') + 'max_wall_time = "1 s"\n' \
+        + "max_steps = 1e11\n"  # the stiff race fits a budget this large: the wall time ends it
     o = _run(tmp_path, "drop --machine m.toml --json --quiet", {"m.toml": machine})
     summary = json.loads(o.stdout)
     assert summary["verdict"] == "wall_time_budget" and summary["simulated_s"] < 0.15

@@ -32,8 +32,9 @@ from pathlib import Path
 
 from auxbearing.campaign.distributions import Distribution, distribution_from_table, share_outside_rule
 from auxbearing.errors import InputError
+from auxbearing.machine_check import FACE_KEYS, MACHINE_FILE_TABLES, MOUNT_KEYS
 from auxbearing.machine_params import TABLES, TOUCHDOWN_TEXT
-from auxbearing.params import Param, si_unit
+from auxbearing.params import Param, did_you_mean, si_unit, unknown
 
 SAMPLERS = ("sobol", "lhs", "random", "saltelli")
 ANALYSES = ("drop", "coastdown")
@@ -128,7 +129,7 @@ class Campaign:
 
 def read_campaign(path: str | Path) -> Campaign:
     """A campaign from a TOML file (module docstring)."""
-    from auxbearing.bearing import read_toml
+    from auxbearing.io import read_toml
 
     path = Path(path)
     return campaign_from_mapping(read_toml(path), path.stem, path.parent)
@@ -150,7 +151,7 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
     import tomllib
     from importlib import resources
 
-    from auxbearing.bearing import read_toml
+    from auxbearing.io import read_toml
     from auxbearing.machine import machine_names
 
     tables: dict = {}
@@ -167,7 +168,7 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
             if not path.is_file():
                 raise InputError.for_field("campaign.machine", spec, "neither a file nor a catalogue machine ("
                                            + ", ".join(machine_names()) + ")")
-            tables = read_toml(path)
+            tables = read_toml(path, "campaign.machine")
             base = path.parent
         tables.setdefault("machine", {}).setdefault("name", spec)
     for key in MACHINE_TABLES:
@@ -209,7 +210,8 @@ the machine has 1 touchdown plane (touchdown.0)
     section = parts[0]
     if section not in TABLES:
         raise InputError.for_field(field_, key, "names nothing a campaign can vary; keys start with "
-                                   + ", ".join(f"{s}.<plane>." if s == "touchdown" else f"{s}." for s in TABLES))
+                                   + ", ".join(f"{s}.<plane>." if s == "touchdown" else f"{s}." for s in TABLES)
+                                   + did_you_mean(section, TABLES))
     depth = 3 if section == "touchdown" else 2
     if len(parts) != depth or not all(parts):
         shape = "touchdown.<plane>.<key>" if section == "touchdown" else f"{section}.<key>"
@@ -219,7 +221,7 @@ the machine has 1 touchdown plane (touchdown.0)
         raise InputError.for_field(field_, key, "names a text, not a quantity; a campaign varies numbers")
     if name not in TABLES[section]:
         raise InputError.for_field(field_, key, f"unknown key; allowed keys of [{section}]: "
-                                   + ", ".join(TABLES[section]))
+                                   + ", ".join(TABLES[section]) + did_you_mean(name, TABLES[section]))
     planes: tuple[int, ...] = ()
     if section == "touchdown":
         index = parts[1]
@@ -256,11 +258,6 @@ def _inputs(head: dict, n_planes: int) -> tuple[tuple[CampaignInput, ...], list[
         inputs.append(CampaignInput(key, section, name, planes, param, dist))
     return tuple(inputs), notes
 
-
-#: Keys of [[touchdown]] that act only with a mount (mount_stiffness given) or an axial catch (axial_clearance).
-MOUNT_KEYS = ("mount_damping", "mount_mass", "mount_deadband", "mount_stop", "stop_stiffness", "stop_damping",
-              "mount_travel")
-FACE_KEYS = ("face_stiffness", "face_damping", "face_friction", "face_radius")
 
 
 def _check_inputs_act(inputs: tuple[CampaignInput, ...], machine) -> None:
@@ -313,21 +310,25 @@ def apply_sample(tables: dict, inputs: tuple[CampaignInput, ...], values, as_qua
     return out
 
 
-def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None = None) -> Campaign:
-    """A checked :class:`Campaign` from the tables of a campaign file (module docstring)."""
-    from auxbearing.machine import machine_from_mapping
+def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None = None, *,
+                          check_machine: bool = True) -> Campaign:
+    """A checked :class:`Campaign` from the tables of a campaign file (module docstring).
 
-    for key in data:
-        if key not in ("campaign", *MACHINE_TABLES):
-            raise InputError.for_field(f"[{key}]", "table", "unknown table; allowed tables: campaign, "
-                                       + ", ".join(MACHINE_TABLES))
+    The campaign's machine (the file's machine tables laid over ``campaign.machine``) is checked whole, as
+    every command checks a machine file (:func:`auxbearing.machine_check.check_machine_document`), with the
+    file's own ``[criteria]``, ``[verify]`` and ``[[candidate]]`` tables. ``check_machine=False`` is for that
+    check itself, which reads a ``[campaign]`` table of a machine file through this function.
+    """
+    from auxbearing.machine import machine_from_mapping
+    from auxbearing.machine_check import check_machine_document, check_tables
+
+    check_tables(data, MACHINE_FILE_TABLES)
     head = data.get("campaign")
     if not isinstance(head, dict):
         raise InputError("campaign: missing; a campaign file needs a [campaign] table")
     for key in head:
         if key not in CAMPAIGN_KEYS:
-            raise InputError.for_field(f"campaign.{key}", head[key], "unknown key; allowed keys: "
-                                       + ", ".join(CAMPAIGN_KEYS))
+            raise unknown(f"campaign.{key}", head[key], key, CAMPAIGN_KEYS)
     sampler = str(head.get("sampler", "sobol")).strip().lower()
     if sampler not in SAMPLERS:
         raise InputError.for_field("campaign.sampler", head.get("sampler"), "use one of " + ", ".join(SAMPLERS))
@@ -343,7 +344,12 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     if isinstance(required, bool) or not isinstance(required, (int, float)) or not 0.0 < required < math.inf:
         raise InputError.for_field("campaign.required_s0", required, "must be a number > 0")
     tables, base = _machine_tables(data, head, base)
-    machine = machine_from_mapping(tables, name, base)
+    if check_machine:
+        document = {key: value for key, value in tables.items() if key != "campaign"}
+        document.update({key: data[key] for key in ("criteria", "verify", "candidate") if key in data})
+        machine = check_machine_document(document, name, base, campaign=False)
+    else:
+        machine = machine_from_mapping(tables, name, base)
     inputs, notes = _inputs(head, len(machine.planes))
     _check_inputs_act(inputs, machine)
     whirl_map = head.get("whirl_map")

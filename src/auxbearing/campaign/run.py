@@ -19,7 +19,7 @@ from typing import NamedTuple
 from auxbearing.campaign.config import Campaign
 from auxbearing.campaign.evaluate import evaluate_batch, warm_up
 from auxbearing.campaign.sampling import design
-from auxbearing.campaign.store import pending_batches, prepare_store, write_batch
+from auxbearing.campaign.store import pending_batches, prepare_store, store_lock, write_batch
 from auxbearing.errors import InputError
 
 #: How long a campaign waits for a scheduler to have its first worker [s].
@@ -95,29 +95,36 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         ``run_s`` (first task to last record), ``wall_time_s`` and ``drops_per_second`` (new / run_s);
         ``lost_reason`` is the first error of a lost batch.
     """
-    from distributed import as_completed
-
     start = time.perf_counter()
     points = design(campaign)
     # a scheduler address is tried before the store is touched, so a wrong address writes nothing
-    client, cluster = _client(scheduler, None) if scheduler is not None else (None, None)
+    client = _client(scheduler, None)[0] if scheduler is not None else None
     try:
-        prepare_store(store, campaign, points)
-        todo = pending_batches(store, campaign.runs, campaign.batch_size)
-    except BaseException:
+        # one writer per store: the lock is held from before the store is made until its last batch is in
+        with store_lock(store):
+            prepare_store(store, campaign, points)
+            todo = pending_batches(store, campaign.runs, campaign.batch_size)
+            return _run(campaign, store, points, todo, client, scheduler, workers, progress, start)
+    finally:
         if client is not None:
             client.close()
-        raise
+
+
+def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler: str | None, workers: int | None,
+         progress, start: float) -> dict:
+    """The batches still to do, on the cluster (started here unless ``client`` is given), into the store."""
+    from distributed import as_completed
+
     runs = campaign.runs
     done = runs - sum(b - a for a, b in todo)
     out = {"runs": runs, "completed": done, "new": 0, "lost": 0, "lost_reason": None, "workers": 0, "warm_up_s": 0.0,
            "startup_s": 0.0, "run_s": 0.0, "wall_time_s": 0.0, "drops_per_second": None}
     if not todo:
-        if client is not None:
-            client.close()
         out["wall_time_s"] = time.perf_counter() - start
         return out
-    if client is None:
+    own = client is None
+    cluster = None
+    if own:
         client, cluster = _client(None, workers)
     try:
         try:
@@ -170,8 +177,9 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         out.update(completed=done, new=new, lost=lost,
                    drops_per_second=new / out["run_s"] if out["run_s"] > 0 else None)
     finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
+        if own:
+            client.close()
+            if cluster is not None:
+                cluster.close()
     out["wall_time_s"] = time.perf_counter() - start
     return out

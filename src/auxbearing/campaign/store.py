@@ -10,14 +10,26 @@ campaign (its description and fingerprint), the verdict and whirl codes and the 
 The store is made in a hidden sibling folder and renamed into place, so a store either exists with
 its design or does not exist. Zarr format 2 is used: its fixed-width text arrays (the per-sample
 reason) are specified, where format 3 has no stable text type yet.
+
+One writer per store: a campaign holds the store's lock (:func:`store_lock`, a hidden file beside the
+store naming the host and process that hold it) from before the store is made until its last batch
+is written. A second writer is refused in one line naming the store; a lock whose process has ended on
+this host (a campaign killed before it could clean up) is taken over with a note. A store that cannot be
+read (metadata that is not JSON, a chunk cut short, an array missing) is one line naming the store.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
+import socket
+import struct
 import tempfile
+import uuid
+import warnings
+from collections.abc import Iterator
 from datetime import UTC, datetime
 from pathlib import Path
 
@@ -92,28 +104,97 @@ def _template(campaign: Campaign, design: Design):
 
 
 def create_store(path: str | Path, campaign: Campaign, design: Design) -> Path:
-    """Make the store of a campaign at ``path`` (which must not exist): design written, outputs empty."""
+    """Make the store of a campaign at ``path`` (which must not exist): design written, outputs empty.
+
+    An error names the store, never the hidden folder it is made in.
+    """
     path = Path(path)
     ds, encoding = _template(campaign, design)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    scratch = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        scratch = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
+    except OSError as err:
+        raise InputError(f"store = '{path}': cannot be made here ({err.strerror or err})") from None
     try:
         ds.to_zarr(scratch / "store.zarr", mode="w-", compute=False, consolidated=False, zarr_format=ZARR_FORMAT,
                    encoding=encoding)
         os.rename(scratch / "store.zarr", path)
+    except OSError as err:
+        reason = "it appeared while this one was being made" if path.exists() else (err.strerror or str(err))
+        raise InputError(f"store = '{path}': cannot be made ({reason})") from None
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
     return path
 
 
+def _damaged(path: Path, what: str, err: BaseException) -> InputError:
+    reason = " ".join(f"{type(err).__name__}: {err}".split())[:160]
+    return InputError(f"store = '{path}': {what} cannot be read ({reason}): the store is damaged (a file cut short "
+                      "or changed, a copy that did not finish?); run the campaign again into a new --out")
+
+
+@contextlib.contextmanager
+def reading(path: str | Path, what: str = "its data") -> Iterator[None]:
+    """Turn whatever a damaged store makes zarr, numcodecs or xarray raise into one line naming the store."""
+    try:
+        yield
+    except (InputError, KeyboardInterrupt, MemoryError):
+        raise
+    except Exception as err:  # several libraries, many types: a bad chunk, bad metadata, a missing array
+        raise _damaged(Path(path), what, err) from None
+
+
+#: Blosc's chunk header: 16 bytes, the compressed size of the chunk (header included) a uint32 little-endian at
+#: byte 12 (c-blosc, README_HEADER.rst). A chunk file shorter than that size was cut short; blosc would decode
+#: it from memory past the file's end without a word.
+BLOSC_HEADER, BLOSC_CBYTES_AT = 16, 12
+
+
+def check_chunks(path: str | Path) -> None:
+    """Refuse a store with a blosc chunk file cut short (a full disk, a copy that did not finish)."""
+    path = Path(path)
+    for meta in sorted(path.glob("*/.zarray")):
+        name = meta.parent.name
+        with reading(path, f"the array {name!r}"):
+            spec = json.loads(meta.read_bytes())
+            if (spec.get("compressor") or {}).get("id") != "blosc":
+                continue
+            for chunk in sorted(meta.parent.iterdir()):
+                if chunk.name.startswith("."):
+                    continue
+                with chunk.open("rb") as handle:
+                    head = handle.read(BLOSC_HEADER)
+                size = chunk.stat().st_size
+                expected = struct.unpack_from("<I", head, BLOSC_CBYTES_AT)[0] if len(head) == BLOSC_HEADER else None
+                if expected != size:
+                    raise InputError(f"store = '{path}': the array {name!r} has a chunk cut short ({chunk.name}: "
+                                     f"{size} bytes of {expected or 'at least 16'}): the store is damaged (a full "
+                                     "disk, a copy that did not finish?); run the campaign again into a new --out")
+
+
+def check_arrays(path: str | Path, ds, attrs: dict) -> None:
+    """Refuse a store that lacks an array every campaign store of its analysis has."""
+    sample, plane = output_variables(attrs.get("analysis", "drop"))
+    for name in (*sample, *plane, "completed", "unit", "value"):
+        if name not in ds.variables:
+            raise InputError(f"store = '{path}': the array {name!r} is missing: the store is damaged (a folder "
+                             "deleted or a copy that did not finish?); run the campaign again into a new --out")
+
+
 def read_attrs(path: str | Path) -> dict:
-    """The attributes of a campaign store; a one-line error when ``path`` is none."""
+    """The attributes of a campaign store; a one-line error when ``path`` is none or they cannot be read."""
     path = Path(path)
     meta = path / ".zattrs"
     if not meta.is_file():
         raise InputError(f"store = '{path}': not a campaign store (no Zarr attributes); give the folder "
                          "`auxbearing campaign --out` wrote")
-    attrs = json.loads(meta.read_text())
+    try:
+        attrs = json.loads(meta.read_bytes())
+    except (ValueError, OSError) as err:  # not JSON, not UTF-8 (a ValueError too), unreadable
+        raise _damaged(path, "its metadata (.zattrs)", err) from None
+    if not isinstance(attrs, dict):
+        raise InputError(f"store = '{path}': its metadata (.zattrs) is not a table of attributes: the store is "
+                         "damaged; run the campaign again into a new --out")
     if MARK not in attrs:
         raise InputError(f"store = '{path}': a Zarr group but not a campaign store")
     return attrs
@@ -135,8 +216,12 @@ def prepare_store(path: str | Path, campaign: Campaign, design: Design) -> bool:
     if attrs[MARK] != campaign.fingerprint():
         raise InputError(f"out = '{path}': holds another campaign (fingerprint {attrs[MARK]}, this file gives "
                          f"{campaign.fingerprint()}); give a new --out to start afresh")
-    stored = open_store(path)
-    if stored.sizes.get("sample") != campaign.runs or not np.array_equal(stored["unit"].values, design.unit):
+    check_chunks(path)
+    with reading(path, "its design"):
+        stored = open_store(path)
+        check_arrays(path, stored, attrs)
+        same = stored.sizes.get("sample") == campaign.runs and np.array_equal(stored["unit"].values, design.unit)
+    if not same:
         raise InputError(f"out = '{path}': its samples differ from those this campaign gives now (another "
                          "scipy or SALib version?); give a new --out")
     return False
@@ -150,14 +235,25 @@ def open_store(path: str | Path):
 
 
 def load_results(path: str | Path):
-    """The store read into memory (after :func:`read_attrs` checks it is one)."""
-    read_attrs(path)
-    return open_store(path).load()
+    """The store read into memory (after :func:`read_attrs` checks it is one); a damaged store is one line.
+
+    The line names the store and, when one array is at fault, that array.
+    """
+    attrs = read_attrs(path)
+    check_chunks(path)
+    with reading(path, "its arrays"):
+        ds = open_store(path)
+    check_arrays(path, ds, attrs)
+    for name in [*ds.coords, *ds.data_vars]:
+        with reading(path, f"the array {name!r}"):
+            ds[name].load()
+    return ds
 
 
 def completed(path: str | Path) -> np.ndarray:
     """Boolean per sample: its record is in the store."""
-    return open_store(path)["completed"].values.astype(bool)
+    with reading(path, "its completed flags"):
+        return open_store(path)["completed"].values.astype(bool)
 
 
 def pending_batches(path: str | Path, runs: int, batch: int) -> list[tuple[int, int]]:
@@ -180,3 +276,94 @@ def write_batch(path: str | Path, start: int, arrays: dict[str, np.ndarray]) -> 
     for name, values in arrays.items():
         group[name][start:start + n] = values
     group["completed"][start:start + n] = np.ones(n, dtype="i1")
+
+
+# ----------------------------------------------------------------------------- one writer per store
+class StoreLockNote(UserWarning):
+    """A campaign took over the lock of a store whose writer had ended without releasing it."""
+
+
+def lock_path(path: str | Path) -> Path:
+    """The lock file of a store: a hidden sibling, so it exists before the store does."""
+    path = Path(path)
+    return path.parent / f".{path.name}.lock"
+
+
+def _lock_owner(lock: Path) -> tuple[str, int, str] | None:
+    """(host, process id, since) written in a lock file; None when it holds no such line."""
+    try:
+        host, pid, since = [*lock.read_text().split(), ""][:3]
+        return host, int(pid), since
+    except (OSError, ValueError, UnicodeDecodeError):
+        return None
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # a live process of another user
+        return True
+    return True
+
+
+@contextlib.contextmanager
+def store_lock(path: str | Path) -> Iterator[Path]:
+    """Hold the lock of the store at ``path`` while writing it (module docstring); yields the lock file.
+
+    The lock is a file beside the store holding "<host> <process id> <since>", made whole in a hidden
+    file first and linked into place (a link fails when the name exists, so of two campaigns starting
+    together exactly one gets the lock). Held by a live process, or by any process of another host (whose
+    life this host cannot see), the store is refused in one line naming it. Held by a process of this
+    host that has ended, it is taken over with a :class:`StoreLockNote`.
+    """
+    path = Path(path)
+    lock = lock_path(path)
+    host = socket.gethostname()
+    mine = f"{host} {os.getpid()} {datetime.now(UTC).isoformat(timespec='seconds')}\n"
+    try:
+        lock.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise InputError(f"store = '{path}': cannot be made here ({err.strerror or err})") from None
+    for _ in range(5):
+        draft = lock.parent / f".{path.name}.lock-{uuid.uuid4().hex}"
+        try:
+            draft.write_text(mine)
+            try:
+                os.link(draft, lock)
+                break
+            except FileExistsError:
+                pass
+        except OSError as err:
+            raise InputError(f"store = '{path}': cannot take its lock ({err.strerror or err})") from None
+        finally:
+            draft.unlink(missing_ok=True)
+        owner = _lock_owner(lock)
+        if owner is not None and (owner[0] != host or _alive(owner[1])):
+            where = "this host" if owner[0] == host else f"host {owner[0]}"
+            since = f" since {owner[2]}" if owner[2] else ""
+            hint = "" if owner[0] == host else (f"; if that process has ended, delete the lock file '{lock}' by "
+                                                "hand (a process of another host cannot be seen from here)")
+            raise InputError(f"store = '{path}': another campaign is writing it (process {owner[1]} on {where}"
+                             f"{since}); wait for it to finish, or give another --out{hint}")
+        # the writer has ended without releasing it (killed), or the file is not a lock of ours: move it
+        # aside (a rename succeeds for one of two campaigns doing this at once), then try again
+        stale = lock.parent / f".{path.name}.stale-{uuid.uuid4().hex}"
+        try:
+            os.rename(lock, stale)
+        except FileNotFoundError:
+            continue
+        stale.unlink(missing_ok=True)
+        what = (f"process {owner[1]} on this host, which has ended" if owner is not None
+                else "a lock file that names no process")
+        warnings.warn(StoreLockNote(f"store = '{path}': took over the lock of {what} (a campaign stopped before it "
+                                    "could release it); its complete batches are kept"), stacklevel=3)
+    else:
+        raise InputError(f"store = '{path}': could not take its lock after 5 tries; another campaign keeps taking "
+                         "it")
+    try:
+        yield lock
+    finally:
+        if lock.is_file() and lock.read_text() == mine:
+            lock.unlink(missing_ok=True)

@@ -45,7 +45,12 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.cli.drop_checks import check_ball_contacts, machine_input_names, plausibility
+    from auxbearing.cli.drop_checks import (
+        check_ball_contacts,
+        machine_input_names,
+        plausibility,
+        stiffness_warnings,
+    )
     from auxbearing.coastdown import run_coastdown
     from auxbearing.coastdown_life import cycles_of_worst_contact
     from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
@@ -55,6 +60,7 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     with option_named("--machine", "machine"), option_named("--machine", "file", value=machine_spec):
         machine = read_machine(machine_spec)
     check_ball_contacts(machine, max_ball_contacts, f"--machine = {machine_spec!r}")
+    warn(*stiffness_warnings(machine, machine.simulation.duration, f"--machine = {machine_spec!r}: "))
     warn(*plausibility(machine, machine_input_names(machine_spec)))
     seconds = None
     if duration is not None:

@@ -44,6 +44,26 @@ def check_budget(machine, duration: float, blame: str, raise_with: str) -> None:
                          f"the run, lengthen the largest step, or {raise_with}")
 
 
+def stiffness_warnings(machine, duration: float, prefix: str = "", names: dict | None = None) -> list[str]:
+    """Warnings for a stiff run, said before it starts; a refusal when it cannot fit its step budget.
+
+    :func:`auxbearing.machine_check.stiffness_notes` with each sentence prefixed (``"--machine = 'm.toml': "``).
+    """
+    from auxbearing.machine_check import stiffness_notes
+
+    try:
+        return [prefix + note for note in stiffness_notes(machine, duration, names)]
+    except InputError as err:
+        raise InputError(prefix + str(err)) from None
+
+
+def paper_stiffness_names(params: dict) -> dict:
+    """How the paper drop's options name its race in a stiffness warning: the options typed, else the default."""
+    typed = [f"--{key.replace('_', '-')} = {params[('drop', key)]!r}"
+             for key in ("race_mass", "ball_damping", "line_damping", "line_stiffness") if ("drop", key) in params]
+    return {"touchdown.0.race_mass": ", ".join(typed) or "--race-mass (default)"}
+
+
 def plausibility(machine, typed: dict) -> list[str]:
     """Warnings for legal inputs whose results would mean little (``typed`` names each input).
 

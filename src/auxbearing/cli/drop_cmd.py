@@ -35,9 +35,11 @@ from auxbearing.cli.drop_checks import (
     decimation_note,
     impact_rate_warning,
     machine_input_names,
+    paper_stiffness_names,
     plausibility,
     race_sink_warning,
     sink_check,
+    stiffness_warnings,
 )
 from auxbearing.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.errors import InputError
@@ -254,6 +256,7 @@ def _paper_drop(ctx, bearing_spec, config, params, wall, max_contacts, out_dir, 
                                                 "can be raised")
     check_ball_contacts(machine, max_contacts, f"--bearing = {bearing_spec!r}")
     sink_check(bearing, machine, case.ball_constant, f"--ball-constant = {params.get(('drop', 'ball_constant'))!r}")
+    warn(*stiffness_warnings(machine, case.duration, names=paper_stiffness_names(params)))
     warn(*plausibility(machine, _typed_names(params)))
     seconds = wall if wall is not None else machine.simulation.max_wall_time
     # The output folder is checked before the integration, so a bad --out costs no run.
@@ -332,6 +335,8 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
                  f"--duration = {duration!r}" if duration is not None else f"--machine = {spec!r}: drop.duration",
                  "raise drop.max_steps in the machine file")
     check_ball_contacts(machine, max_contacts, f"--machine = {spec!r}")
+    warn(*stiffness_warnings(machine, seconds if seconds is not None else machine.simulation.duration,
+                             f"--machine = {spec!r}: "))
     warn(*plausibility(machine, machine_input_names(spec)))
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
         with ProgressReporter(f"drop of {machine.name}", quiet) as progress:

@@ -19,6 +19,7 @@ regard to case; ``t`` is an alias of ``time``, ``omega`` and ``rpm`` of ``speed`
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -26,7 +27,8 @@ import xarray as xr
 
 from auxbearing.errors import InputError
 from auxbearing.io import existing_file
-from auxbearing.unit_csv import Column, read_unit_csv, unit_scale
+from auxbearing.params import with_article
+from auxbearing.unit_csv import MAX_MAGNITUDE, Column, read_unit_csv, unit_scale
 
 #: Dimension of each channel (keys of :data:`auxbearing.units.SI_UNITS`), required or not.
 CHANNELS = {"time": ("time", True), "x": ("length", True), "y": ("length", True),
@@ -41,6 +43,15 @@ UNIFORM_TOLERANCE = 0.01
 #: Slowest sampling that can still see an impact: the rotor/race contact lasts about 0.2 ms
 #: (half the ~0.4 ms contact period, paper_notes item 7), so below 5 kHz an impact is one sample or none.
 MIN_SAMPLING_RATE = 5e3
+#: Span of a drop record (the larger peak-to-peak of x and y) [m]: the journal crosses its clearance circle,
+#: so it spans about twice the radial clearance plus the contact deflections. Touchdown clearances run from
+#: some 10 um on small spindles to about 1 mm on large machines; a record outside 1 um - 20 mm is not a drop
+#: in the unit its columns name (a factor of 1000 either way is the usual slip: um written as mm).
+ORBIT_SPAN = (1e-6, 20e-3)
+#: A typical span [m] (the source paper's rig: 0.2 mm clearance), against which another unit is suggested.
+TYPICAL_SPAN = 0.4e-3
+#: Length units a sensor's column is written in, with their size in metres.
+LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}
 
 
 def channel_name(name: str) -> str | None:
@@ -88,8 +99,14 @@ def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: s
     """
     table = read_unit_csv(path, _CSV_COLUMNS, file_field=field, aliases=_ALIASES, units=units,
                           delimiter=delimiter)
+    written = {}
+    for label in table.header:
+        head, _, unit = label.partition("[")
+        channel = _channel(head)
+        if channel is not None:
+            written[channel] = unit.rstrip("] ").strip() or (units or {}).get(channel, "")
     return _checked(table.data, [f"line {n}" for n in table.lines], Path(path).name,
-                    {h: h for h in table.header}, table.meta)
+                    {h: h for h in table.header}, table.meta, written)
 
 
 def read_netcdf(path: str | Path, units: dict[str, str] | None = None, field: str = "measured file") -> xr.Dataset:
@@ -109,6 +126,7 @@ def read_netcdf(path: str | Path, units: dict[str, str] | None = None, field: st
     units = {(_channel(k) or k): v for k, v in (units or {}).items()}
     names = {(_channel(str(k)) or str(k)): str(k) for k in [*raw.data_vars, *raw.coords]}
     data: dict[str, np.ndarray] = {}
+    written: dict[str, str] = {}
     for channel, (dimension, required) in CHANNELS.items():
         if channel not in names:
             if required:
@@ -126,17 +144,24 @@ def read_netcdf(path: str | Path, units: dict[str, str] | None = None, field: st
         if bad.size:
             raise InputError(f"{path.name}: variable {names[channel]!r}, index {bad[0]}: missing value")
         try:
-            data[channel] = values * unit_scale(names[channel], unit, dimension)
+            scale = unit_scale(names[channel], unit, dimension)
         except InputError:
-            raise InputError(f"{path.name}: variable {names[channel]!r}: units {unit!r} is not a "
-                             f"{dimension.replace('_', ' ')} (store seconds for time, lengths such as um for x "
-                             "and y)") from None
+            raise InputError(f"{path.name}: variable {names[channel]!r}: units {unit!r} is not "
+                             f"{with_article(dimension.replace('_', ' '))} (store seconds for time, lengths such as "
+                             "um for x and y)") from None
+        with np.errstate(over="ignore"):
+            data[channel] = values * scale
+        beyond = np.nonzero(~(np.abs(data[channel]) <= MAX_MAGNITUDE))[0]
+        if beyond.size:
+            raise InputError(f"{path.name}: variable {names[channel]!r}, index {beyond[0]}: {values[beyond[0]]:g} "
+                             f"{unit} is beyond any value auxbearing computes with (at most {MAX_MAGNITUDE:g} in SI)")
+        written[channel] = unit
     sizes = {c: v.size for c, v in data.items()}
     if len(set(sizes.values())) != 1:
         raise InputError(f"{path.name}: channels have different lengths {sizes}")
     meta = {str(k): str(v) for k, v in raw.attrs.items()}
     return _checked(data, [f"index {k}" for k in range(sizes["time"])], path.name,
-                    {c: names[c] for c in data}, meta)
+                    {c: names[c] for c in data}, meta, written)
 
 
 def read_measured(path: str | Path, units: dict[str, str] | None = None, field: str = "measured file") -> xr.Dataset:
@@ -150,8 +175,30 @@ def read_measured(path: str | Path, units: dict[str, str] | None = None, field: 
     return read_csv(path, units, field=field)
 
 
-def _checked(data: dict[str, np.ndarray], where: list[str], name: str, labels: dict, meta: dict) -> xr.Dataset:
-    """Check time and sampling, then build the Dataset (SI)."""
+def _orbit_span(data: dict[str, np.ndarray], name: str, labels: dict, written: dict) -> None:
+    """Refuse a record whose orbit no touchdown clearance allows, naming the unit it would fit (module constants)."""
+    span = max(float(np.ptp(data["x"])), float(np.ptp(data["y"])))
+    if ORBIT_SPAN[0] <= span <= ORBIT_SPAN[1]:
+        return
+    columns = f"{labels.get('x', 'x')!r}, {labels.get('y', 'y')!r}"
+    size = "more" if span > ORBIT_SPAN[1] else "less"
+    text = (f"{name}: columns {columns}: the journal moves over {span * 1e3:.4g} mm, {size} than a drop's orbit can "
+            f"(about twice the radial clearance: {ORBIT_SPAN[0] * 1e6:g} um to {ORBIT_SPAN[1] * 1e3:g} mm)")
+    unit = written.get("x", "")
+    if unit in LENGTH_UNITS and span > 0.0:
+        best = min(LENGTH_UNITS, key=lambda u: abs(math.log(span / LENGTH_UNITS[unit] * LENGTH_UNITS[u]
+                                                             / TYPICAL_SPAN)))
+        if best != unit:
+            text += (f"; are the columns in {best} rather than {unit}? (the orbit would span "
+                     f"{span / LENGTH_UNITS[unit] * LENGTH_UNITS[best] * 1e3:.4g} mm)")
+    elif span < ORBIT_SPAN[0]:
+        text += ": no drop in it, or a length unit too large"
+    raise InputError(text)
+
+
+def _checked(data: dict[str, np.ndarray], where: list[str], name: str, labels: dict, meta: dict,
+             written: dict | None = None) -> xr.Dataset:
+    """Check time, sampling and the orbit's size, then build the Dataset (SI)."""
     t = data["time"]
     label = labels.get("time", "time")
     if t.size < MIN_SAMPLES:
@@ -173,6 +220,7 @@ def _checked(data: dict[str, np.ndarray], where: list[str], name: str, labels: d
     if rate < MIN_SAMPLING_RATE:
         raise InputError(f"{name}: column {label!r}: sampling rate {rate:.4g} Hz is below {MIN_SAMPLING_RATE:g} Hz, "
                          "too slow to resolve impacts lasting about 0.2 ms")
+    _orbit_span(data, name, labels, written or {})
     coords = {"time": ("time", t, {"units": "s", "long_name": "Time of the record"})}
     variables = {
         "x": ("time", data["x"], {"units": "m", "long_name": "Journal centre x as measured (sensor frame)"}),
