@@ -14,9 +14,18 @@ from auxbearing.params import Param, display_value, si_unit
 
 _INTRO = """# The machine file
 
-A machine file is TOML; every number carries its unit as a string (`"0.15 mm"`, `"18000 rpm"`,
-`"2e7 N/m"`); a bare number is SI. Every table and key is checked before anything runs: an unknown
-table or key, a wrong unit or a value outside its rule stops with one line naming it. The shipped
+A machine file is TOML. A value with a unit is a string that spells its unit (`"0.15 mm"`,
+`"18000 rpm"`, `"2e7 N/m"`); a bare number there is refused (`rotor.mass = 5: needs a unit, e.g.
+'5 kg'`), never read as SI. Keys without a unit (the column "unit" shows `-`: friction coefficients,
+ratios, counts) take plain numbers (`sliding_friction = 0.2`). (The Python API is the exception: there
+a plain number is SI.)
+
+The whole file is checked before anything runs, by every command that reads it (`drop`,
+`coastdown`, `campaign`, `verify`), the tables a command does not use included: an unknown table or
+key (the message names the closest allowed one), a wrong unit, a value outside its rule, two values
+that cannot hold together (a start outside the clearance, a hard stop inside the dead band, a
+temperature limit below ambient, mount or face keys without `mount_stiffness` or `axial_clearance`)
+or a candidate that does not fit the design's seat stops with one line naming the keys. The shipped
 examples (`auxbearing machines`) are complete files to start from:
 `src/auxbearing/catalog/machines/*.toml`.
 
@@ -32,8 +41,8 @@ This page is generated: `python -m auxbearing.machine_keys > docs/machine_file.m
 | `[life]` | the number of drops the bearings must survive |
 | `[criteria]` | the acceptance values `verify` judges against |
 | `[verify]` | the cases and the campaign of `verify` |
-| `[[candidate]]` | other bearings for the same seats: `name` and `bearing` (catalogue name, TOML path or table) |
-| `[campaign]` | a Monte Carlo campaign over this machine (`auxbearing campaign --help`) |
+| `[[candidate]]` | bearings for the same seats (same bore, no larger outside diameter or width): `name`, `bearing` |
+| `[campaign]` | a Monte Carlo campaign over this machine (`auxbearing campaign --config`; keys below) |
 
 In `[[touchdown]]`, `bearing` is a catalogue name (`auxbearing bearings`), the path of a bearing TOML
 file (relative to the machine file) or an inline table with the keys of a bearing file
@@ -64,6 +73,24 @@ def _default(param: Param) -> str:
     return f"`{shown}`" if isinstance(shown, str) else f"`{shown:g}`"
 
 
+def _campaign() -> list[str]:
+    from auxbearing.campaign.config import CAMPAIGN_KEY_HELP
+    from auxbearing.campaign.distributions import KINDS
+
+    lines = ["## `[campaign]`", "",
+             "A campaign file is a machine file whose `[campaign]` table runs many drops (or coast-downs) over "
+             "uncertain inputs; `examples/campaign_*.toml` are complete ones.", "",
+             "| key | default | meaning |", "|---|---|---|"]
+    lines += [f"| `{key}` | {_cell(default)} | {_cell(meaning)} |" for key, (default, meaning) in
+              CAMPAIGN_KEY_HELP.items()]
+    lines += ["", "Each `[[campaign.input]]` has `key`, the dotted name of the value it varies (`rotor.<key>`, "
+              "`drop.<key>`, `coastdown.<key>`, `touchdown.<plane>.<key>` or `touchdown.*.<key>` for every plane), "
+              "`distribution`, and that distribution's parameters, with the input's unit:", "",
+              "| distribution | parameters |", "|---|---|"]
+    lines += [f"| `{kind}` | {', '.join(f'`{name}`' for name in names)} |" for kind, names in KINDS.items()]
+    return [*lines, ""]
+
+
 def markdown() -> str:
     """The whole reference as Markdown text."""
     lines = [_INTRO]
@@ -75,6 +102,7 @@ def markdown() -> str:
             lines.append(f"| `{p.key}` | {_cell(unit)} | {_cell(_default(p))} | {_cell(p.help)} | "
                          f"{_cell(p.source)} |")
         lines.append("")
+    lines += _campaign()
     return "\n".join(lines)
 
 

@@ -299,3 +299,55 @@ def test_no_fit_with_a_clearance_above_the_orbit_is_warned(tmp_path):
     o = _run(tmp_path, "experiment --measured m.csv --no-fit --out o --json --quiet",
              {"m.csv": SYNTHETIC.read_text()}, "warning", "never reaches the clearance circle", "--clearance")
     assert json.loads(o.stdout)["measured"]["impacts"] == 0
+
+
+# ----------------------------------------------------------------------------- one writer per campaign store
+CAMPAIGN = ('[campaign]\nmachine = "paper_rig"\nsamples = {samples}\nseed = 1\nbatch_size = 2\n[[campaign.input]]\n'
+            'key = "rotor.unbalance_phase"\ndistribution = "uniform"\nlow = "0 deg"\nhigh = "360 deg"\n'
+            '[drop]\nduration = "{duration}"\n')
+
+
+def _campaign(folder: Path, samples: int = 8, duration: str = "5 ms") -> subprocess.Popen:
+    (folder / "c.toml").write_text(CAMPAIGN.format(samples=samples, duration=duration))
+    return _subprocess(["campaign", "--config", "c.toml", "--out", "s.zarr", "--workers", "1", "--quiet", "--json"],
+                       folder, start_new_session=True)
+
+
+@pytest.mark.slow
+def test_two_campaigns_on_one_fresh_store_one_writes_the_other_is_refused(tmp_path):
+    # issue 20: both ran (every drop computed and written twice), or one failed naming a hidden scratch folder
+    first, second = _campaign(tmp_path), _campaign(tmp_path)
+    results = [(p.returncode, out, err) for p in (first, second) for out, err in [p.communicate(timeout=600)]]
+    codes = sorted(code for code, _, _ in results)
+    assert codes == [0, 2], results
+    _, _, refusal = next(r for r in results if r[0] == 2)
+    lines = [ln for ln in refusal.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("error: --out = 's.zarr': another campaign is writing it")
+    assert ".s.zarr" not in lines[0] and "partial" not in lines[0] and "Traceback" not in refusal
+    _, out, _ = next(r for r in results if r[0] == 0)
+    assert json.loads(out)["completed"] == 8
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["c.toml", "s.zarr"]  # no lock, no scratch left
+
+
+@pytest.mark.slow
+def test_a_killed_campaign_leaves_a_stale_lock_the_next_one_takes_over(tmp_path):
+    from auxbearing.campaign.store import load_results, lock_path
+
+    first = _campaign(tmp_path, samples=16, duration="20 ms")
+    lock = lock_path(tmp_path / "s.zarr")
+    assert _wait_for(lambda: (tmp_path / "s.zarr" / "completed").is_dir() and lock.exists(), 300)
+    held_by = int(lock.read_text().split()[1])
+    assert held_by == first.pid
+    second = _campaign(tmp_path, samples=16, duration="20 ms")  # while the first runs: refused
+    _, err = second.communicate(timeout=120)
+    assert second.returncode == 2 and f"another campaign is writing it (process {held_by} on this host" in err
+    os.killpg(first.pid, signal.SIGKILL)
+    first.communicate(timeout=60)
+    assert lock.exists()  # a kill leaves the lock behind
+    third = _campaign(tmp_path, samples=16, duration="20 ms")
+    out, err = third.communicate(timeout=600)
+    lines = [ln for ln in err.splitlines() if ln.strip()]
+    assert third.returncode == 0 and len(lines) == 1, err
+    assert lines[0].startswith(f"warning: store = 's.zarr': took over the lock of process {held_by} on this host")
+    assert json.loads(out)["completed"] == 16 and not lock.exists()
+    assert int(load_results(tmp_path / "s.zarr")["completed"].values.sum()) == 16

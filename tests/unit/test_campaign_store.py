@@ -151,3 +151,116 @@ def test_temperature_spread_in_degrees_celsius_is_refused():
             "campaign": {"machine": "paper_rig", "samples": 2, "input": [
                 {"key": "coastdown.ambient_temperature", "distribution": "normal", "mean": "20 degC",
                  "std": "3 degC"}]}})
+
+
+# ----------------------------------------------------------------------------- one writer per store (issue 20)
+def _dead_pid() -> int:
+    import subprocess
+    import sys
+
+    process = subprocess.Popen([sys.executable, "-c", "pass"])
+    process.wait()
+    return process.pid
+
+
+def test_the_lock_is_held_while_writing_and_released_after(tmp_path):
+    import os
+    import socket
+
+    from auxbearing.campaign.store import lock_path, store_lock
+
+    path = tmp_path / "s.zarr"
+    with store_lock(path) as lock:
+        assert lock == lock_path(path) and lock.name == ".s.zarr.lock"
+        host, pid, since = lock.read_text().split()
+        assert host == socket.gethostname() and int(pid) == os.getpid() and since
+        with pytest.raises(InputError) as err:  # a second writer, here a live process (this one)
+            with store_lock(path):
+                pass
+        text = str(err.value)
+        assert text.startswith(f"store = '{path}': another campaign is writing it (process {os.getpid()} on this host")
+        assert ".partial" not in text and ".lock" not in text
+    assert not lock.exists() and [p.name for p in tmp_path.iterdir()] == []
+
+
+def test_a_stale_lock_is_taken_over_with_a_note(tmp_path):
+    import socket
+
+    from auxbearing.campaign.store import StoreLockNote, lock_path, store_lock
+
+    path = tmp_path / "s.zarr"
+    dead = _dead_pid()
+    lock_path(path).write_text(f"{socket.gethostname()} {dead} 2024-01-01T00:00:00+00:00\n")
+    with pytest.warns(StoreLockNote, match=f"took over the lock of process {dead} on this host, which has ended"):
+        with store_lock(path):
+            pass
+    lock_path(path).write_text("not a lock\n")  # a file that names no process is no one's lock either
+    with pytest.warns(StoreLockNote, match="a lock file that names no process"):
+        with store_lock(path):
+            pass
+    assert [p.name for p in tmp_path.iterdir()] == []
+
+
+def test_a_lock_of_another_host_is_refused_with_where_it_is(tmp_path):
+    from auxbearing.campaign.store import lock_path, store_lock
+
+    path = tmp_path / "s.zarr"
+    lock_path(path).write_text("elsewhere.example 1234 2024-01-01T00:00:00+00:00\n")
+    with pytest.raises(InputError, match=r"process 1234 on host elsewhere\.example since 2024-01-01") as err:
+        with store_lock(path):
+            pass
+    assert "delete the lock file" in str(err.value) and lock_path(path).exists()
+
+
+def test_a_campaign_run_refuses_a_store_another_writes(tmp_path):
+    import os
+    import socket
+
+    from auxbearing.campaign.run import run_campaign
+    from auxbearing.campaign.store import lock_path
+
+    path = tmp_path / "s.zarr"
+    lock_path(path).write_text(f"{socket.gethostname()} {os.getpid()} 2024-01-01T00:00:00+00:00\n")
+    with pytest.raises(InputError, match="another campaign is writing it"):
+        run_campaign(small(), path)
+    assert not path.exists()  # refused before the store was made
+
+
+# ----------------------------------------------------------------------------- damaged stores (issue 20)
+def _written_store(tmp_path):
+    c = small()
+    points = design(c)
+    path = tmp_path / "s.zarr"
+    prepare_store(path, c, points)
+    sample, plane = ev.output_variables(c.analysis)
+    arrays = {name: np.full((2, 1) if name in plane else (2,), "" if dtype.startswith("<U") else 1, dtype=dtype)
+              for name, (dtype, *_) in {**sample, **plane}.items()}
+    write_batch(path, 0, arrays)
+    return c, points, path
+
+
+def test_damaged_stores_are_one_line_naming_the_store(tmp_path):
+    import shutil
+
+    from auxbearing.campaign.store import check_chunks
+
+    c, points, path = _written_store(tmp_path)
+    assert load_results(path)["verdict"].values.tolist()[:2] == [1, 1]
+    check_chunks(path)
+    chunk = path / "peak_ball_stress" / "0.0"
+    data = chunk.read_bytes()
+    chunk.write_bytes(data[:-4])  # blosc would decode this from memory past the file's end, without a word
+    with pytest.raises(InputError, match=r"store = '.*s\.zarr': the array 'peak_ball_stress' has a chunk cut short"):
+        load_results(path)
+    with pytest.raises(InputError, match="chunk cut short"):  # a resume is refused alike
+        prepare_store(path, c, points)
+    chunk.write_bytes(data)
+    shutil.rmtree(path / "s0")
+    with pytest.raises(InputError, match="the array 's0' is missing"):
+        load_results(path)
+    (path / ".zattrs").write_text("{not json")
+    with pytest.raises(InputError, match=r"its metadata \(\.zattrs\) cannot be read \(JSONDecodeError"):
+        load_results(path)
+    (path / ".zattrs").write_text("[1, 2]")
+    with pytest.raises(InputError, match="is not a table of attributes"):
+        read_attrs(path)

@@ -40,8 +40,26 @@ SAMPLERS = ("sobol", "lhs", "random", "saltelli")
 ANALYSES = ("drop", "coastdown")
 #: Tables of a machine file: [machine] and one per parameter table (rotor, touchdown, drop, ...).
 MACHINE_TABLES = ("machine", *TABLES)
-CAMPAIGN_KEYS = ("machine", "sampler", "samples", "seed", "analysis", "input", "batch_size", "required_s0",
-                 "second_order", "whirl_map")
+#: The keys of ``[campaign]``: default and meaning (``docs/machine_file.md`` is made from this table).
+CAMPAIGN_KEY_HELP: dict[str, tuple[str, str]] = {
+    "machine": ("this file's machine tables", "A catalogue machine or a machine file (relative to this file); the "
+                "machine tables of this file are laid over it"),
+    "sampler": ("`sobol`", "Design of the samples: `sobol`, `lhs`, `random` (scipy.stats.qmc) or `saltelli` "
+                "(SALib, for Sobol' indices)"),
+    "samples": ("required", "Rows of the design (a whole number); for `saltelli` the base count N, which gives "
+                "N (D + 2) runs for D inputs"),
+    "seed": ("`0`", "Seed of the design (a whole number): the same seed gives the same samples"),
+    "analysis": ("`drop`", "What each sample runs: `drop`, or `coastdown` (the drop to standstill with heat and "
+                 "life)"),
+    "input": ("required", "One `[[campaign.input]]` table per uncertain input (below)"),
+    "batch_size": ("derived", "Samples per task and per store write (a whole number); default about 64 tasks, "
+                   "8-32 samples each"),
+    "required_s0": ("`1`", "Static safety factor the statistics count P(s0 < required) against (ISO 76: 1 loads a "
+                    "contact to 4200 MPa)"),
+    "second_order": ("`false`", "With `saltelli`: second-order Sobol' indices too (N (2 D + 2) runs)"),
+    "whirl_map": ("the first two inputs", "Two input keys for the whirl map of `campaign-report`"),
+}
+CAMPAIGN_KEYS = tuple(CAMPAIGN_KEY_HELP)
 #: Required static safety factor when the file gives none: s0 = 1 is where the peak ball stress reaches
 #: ISO 76's 4200 MPa reference for ball bearings, where the permanent set is 1e-4 of the ball diameter (ISO 76:2006).
 DEFAULT_REQUIRED_S0 = 1.0
