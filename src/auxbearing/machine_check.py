@@ -349,32 +349,43 @@ def check_candidate_seat(design: Machine, bearing, where: str) -> None:
 
 # ----------------------------------------------------------------------------- stiffness before the run
 #: Stability limit of the Dormand-Prince 5(4) pair on the negative real axis, |h lambda| (Hairer, Norsett &
-#: Wanner, Solving ODEs I, 2nd ed., Sec. II.10, Fig. 10.4: about 3.3); the imaginary-axis limit is similar, so
-#: the step an explicit integration can take is about this over the fastest eigenvalue's modulus.
+#: Wanner, Solving ODEs I, 2nd ed., Sec. II.10, Fig. 10.4: about 3.3): an overdamped mode lets an explicit
+#: integration take steps of about this over its fast eigenvalue once it has decayed.
 DOPRI5_STABILITY = 3.3
-#: A mode is stiff when the step its stability allows is this many times below the largest step of the run.
+#: An oscillating mode, once excited (an impact rings a mount), is followed to the run's tolerance at about
+#: this many radians of it per step (h omega); measured: a 1 ms drop on a 1e16 N/m mount (omega 8e8 rad/s)
+#: took 8.0e5 steps, h omega = 1.0.
+OSCILLATION_STEP = 1.0
+#: A mode is stiff when the step it allows is this many times below the largest step of the run ...
 STIFF_RATIO = 10.0
-#: ... and it matters once the run it implies has this many steps (a few seconds of integration).
-STIFF_STEPS = 1e6
+#: ... and it matters once the run it implies has this many steps (some seconds of integration).
+STIFF_STEPS = 2e5
 #: Exponent of the journal/race line contact, Q = K_l delta^(10/9) (Palmgren; source paper Eq. 19).
 LINE_EXPONENT = 10.0 / 9.0
 
 
-def mode_rate(mass: float, stiffness: float, damping: float) -> float:
-    """Modulus of the fastest eigenvalue of m x'' + c x' + k x = 0 [1/s].
+def mode_step(mass: float, stiffness: float, damping: float) -> float:
+    """The step an explicit integration can take through the mode m x'' + c x' + k x = 0 [s].
 
-    >>> round(mode_rate(1.0, 100.0, 0.0), 6), round(mode_rate(1.0, 0.0, 50.0), 6)
-    (10.0, 50.0)
+    Overdamped, the fast real eigenvalue a + sqrt(a^2 - k/m) (a = c / 2m) bounds it by stability
+    (:data:`DOPRI5_STABILITY`); underdamped, the oscillation at sqrt(k/m) bounds it by accuracy
+    (:data:`OSCILLATION_STEP` radians a step).
+
+    >>> round(mode_step(1.0, 100.0, 0.0), 6), round(mode_step(1.0, 0.0, 33.0), 6)
+    (0.1, 0.1)
     """
     if mass <= 0.0:
-        return math.inf
+        return 0.0
     a = damping / (2.0 * mass)
     disc = a * a - stiffness / mass
-    return a + math.sqrt(disc) if disc >= 0.0 else math.sqrt(stiffness / mass)
+    if disc >= 0.0:
+        rate = a + math.sqrt(disc)
+        return DOPRI5_STABILITY / rate if rate > 0.0 else math.inf
+    return OSCILLATION_STEP / math.sqrt(stiffness / mass)
 
 
 def _modes(machine: Machine) -> list[tuple[str, str, float, str]]:
-    """(key, what, eigenvalue modulus, when it acts) of the fast modes a plane brings."""
+    """(key, what, the step it allows [s], when it acts) of the fast modes a plane brings."""
     g = machine.simulation.gravity
     load = max(machine.rotor.mass * max(g, 1.0) / len(machine.planes), 1e-3)
     out = []
@@ -382,23 +393,23 @@ def _modes(machine: Machine) -> list[tuple[str, str, float, str]]:
         where = f"touchdown.{k}."
         race = p.race_mass
         out.append((where + "race_mass", f"the race of {race:.3g} kg on its ball-set damping ball_damping = "
-                    f"{p.ball_damping:g} N*s/m", mode_rate(race, 0.0, p.ball_damping), "throughout"))
+                    f"{p.ball_damping:g} N*s/m", mode_step(race, 0.0, p.ball_damping), "throughout"))
         # the journal/race line contact at the rotor's weight: F = K_l d^(10/9), tangent stiffness (10/9) F / d
         depth = (load / p.line_stiffness) ** (1.0 / LINE_EXPONENT)
         contact = LINE_EXPONENT * load / depth
         out.append((where + "race_mass", f"the race of {race:.3g} kg on the journal contact ({contact:.3g} N/m at the "
                     f"rotor's weight, line_damping = {p.line_damping:g} N*s/m)",
-                    mode_rate(race, contact, p.line_damping), "while the journal touches the race"))
+                    mode_step(race, contact, p.line_damping), "while the journal touches the race"))
         m = p.mount
         if m is None:
             continue
         ring = m.mass
         out.append((where + "mount_stiffness", f"the mount ({m.stiffness:.3g} N/m, mount_damping = {m.damping:g} "
-                    f"N*s/m) on a ring of {ring:.3g} kg", mode_rate(ring, m.stiffness, m.damping + p.ball_damping),
+                    f"N*s/m) on a ring of {ring:.3g} kg", mode_step(ring, m.stiffness, m.damping + p.ball_damping),
                     "throughout" if m.deadband == 0.0 else "once the ring crosses its dead band"))
         if m.stop is not None:
             out.append((where + "stop_stiffness", f"the hard stop ({m.stop_stiffness:.3g} N/m) on a ring of "
-                        f"{ring:.3g} kg", mode_rate(ring, m.stop_stiffness + m.stiffness, m.stop_damping + m.damping),
+                        f"{ring:.3g} kg", mode_step(ring, m.stop_stiffness + m.stiffness, m.stop_damping + m.damping),
                         "while the ring rests on its stop"))
     return out
 
@@ -407,7 +418,7 @@ def stiffness_notes(machine: Machine, duration: float | None = None, names: dict
     """Warnings for the inputs that make the integration stiff; a refusal when one cannot fit the step budget.
 
     Each fast mode (a race on its ball-set damping or on the journal contact, a ring in its mount or on its
-    hard stop) lets an explicit integration take steps of about :data:`DOPRI5_STABILITY` / |lambda| only.
+    hard stop) lets an explicit integration take steps of :func:`mode_step` only.
     When that step is :data:`STIFF_RATIO` times below the run's largest step and the run would take more
     than :data:`STIFF_STEPS` steps at it, the run is stiff: said before it starts, with the step and the
     steps it implies over ``duration`` (default the machine's ``drop.duration``). When the steps exceed the
@@ -420,12 +431,11 @@ def stiffness_notes(machine: Machine, duration: float | None = None, names: dict
     names = names or {}
     fastest: dict[str, tuple] = {}
     for mode in _modes(machine):  # one sentence per input: its fastest mode
-        if mode[0] not in fastest or mode[2] > fastest[mode[0]][2]:
+        if mode[0] not in fastest or mode[2] < fastest[mode[0]][2]:
             fastest[mode[0]] = mode
     notes = []
-    for key, what, rate, when in fastest.values():
-        step = DOPRI5_STABILITY / rate if rate > 0.0 else math.inf
-        steps = duration / step
+    for key, what, step, when in fastest.values():
+        steps = duration / step if step > 0.0 else math.inf
         if step * STIFF_RATIO > sim.max_step or steps < STIFF_STEPS:
             continue
         shown = names.get(key, key)
