@@ -203,7 +203,8 @@ def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_en
 
     The temperatures take one exact step with the stretch's mean heat input (the input changes by at most
     the speed step within a stretch); the stretch is halved until no clearance moves more than
-    :data:`CLEARANCE_STEP`. Returns the stretch (:class:`auxbearing.coastdown_phases.Stretch`) and the new
+    :data:`CLEARANCE_STEP` and no part passes ``coastdown.max_temperature`` (so a run-away is found within
+    a check window of its time). Returns the stretch (:class:`auxbearing.coastdown_phases.Stretch`) and the new
     temperatures.
     """
     coast = machine.coastdown
@@ -220,7 +221,9 @@ def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_en
                               duration) for k, net in enumerate(networks)]
         moved = max(max(abs(a - b) for a, b in zip(net.clearance_changes(nt), net.clearance_changes(t0), strict=True))
                     for net, nt, t0 in zip(networks, new_temps, temps, strict=True))
-        if moved <= CLEARANCE_STEP or duration <= coast.check_window:
+        # a part passing the temperature limit ends the run: the stretch is shortened until it ends there
+        hot = max(float(np.max(nt)) for nt in new_temps) > coast.max_temperature
+        if (moved <= CLEARANCE_STEP and not hot) or duration <= coast.check_window:
             return result, new_temps
         span = 0.5 * duration
 

@@ -40,6 +40,8 @@ ROLL_SLIP = 0.02
 #: A state is steady when the mean loss torque of the windows since the last stretch is known to this fraction
 #: (standard error of the mean): a plane's loss is then measured to about that over the stretch it carries.
 STATIONARY = 0.02
+#: Fewest full-dynamics windows a stretch's losses are measured over.
+MIN_WINDOWS = 3
 #: States the reduced model represents (module docstring).
 REDUCIBLE = ("free", "rolling", "whirling", "rattling")
 _F = {name: i for i, name in enumerate(WHIRL_FIELDS)}
@@ -104,8 +106,8 @@ def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:
     """The mean of the windows since the last stretch if a stretch may carry it, or None to go on in full dynamics.
 
     ``windows`` holds, oldest first, each window's planes; the last ones in the same states as the last window
-    count. A stretch needs at least two of them, in states the reduced model represents, and each plane's mean
-    loss torque
+    count. A stretch needs at least :data:`MIN_WINDOWS` of them, in states the reduced model represents, the two
+    halves of them agreeing within twice :data:`STATIONARY` (no drift), and each plane's mean loss torque
     known to :data:`STATIONARY`: the standard error of the windows' mean within that fraction of it. A steady
     rolling or whirl agrees at once; a rattle or a journal swinging to and fro in the bottom of the bore
     (a slow pendulum whose losses change along its swing) needs as many windows as its scatter asks for, and
@@ -119,12 +121,16 @@ def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:
         run += 1
     windows = windows[-run:]
     n = len(windows)
-    if n < 2:
+    if n < MIN_WINDOWS:
         return None
     for k in range(len(states)):
         torques = np.array([w[k].torque for w in windows])
         mean = abs(float(torques.mean()))
-        if float(torques.std(ddof=1)) / math.sqrt(n) > STATIONARY * max(mean, 1e-12):
+        scale = max(mean, 1e-12)
+        if float(torques.std(ddof=1)) / math.sqrt(n) > STATIONARY * scale:
+            return None
+        # consecutive windows of a slow swing are alike: its two halves must agree as well (no drift)
+        if abs(float(torques[: n // 2].mean() - torques[n - n // 2:].mean())) > 2.0 * STATIONARY * scale:
             return None
     return [p._replace(powers=tuple(float(np.mean([w[k].powers[j] for w in windows])) for j in range(3)),
                        force=float(np.mean([w[k].force for w in windows])),

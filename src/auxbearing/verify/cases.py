@@ -99,6 +99,7 @@ class Cases:
     tables: tuple[str, ...] = ()  #: the tables the machine file gives (to say where a value came from)
     #: why the coast-down stopped short of standstill without a finding (--quick, a budget); empty: it did not
     partial_coastdown: str = ""
+    quick: bool = False  #: the quick look's shorter cases
 
 
 def verify_settings(data: dict) -> dict:
@@ -117,14 +118,30 @@ def variant(data: dict, name: str, base: Path | None, rotor: dict | None = None,
     return machine_from_mapping(tables, name, base).for_batch()  # a verdict's work is bounded by steps alone
 
 
-def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, samples: int | None = None,
-              store: Path | None = None, workers: int | None = None, scheduler: str | None = None,
-              required_s0: float = 1.0, progress: Callable[[str], None] | None = None) -> Cases:
-    """Run every case of one design (module docstring); ``samples = 0`` skips the campaign."""
-    def say(text: str) -> None:
-        if progress is not None:
-            progress(text)
+class Immediate:
+    """Runs a task at once, in this process: the executor of a verification without a cluster."""
 
+    class _Done:
+        def __init__(self, value) -> None:
+            self._value = value
+
+        def result(self):
+            return self._value
+
+    def submit(self, fn, *args, **kwargs):
+        """Run ``fn`` now; an object whose ``result()`` returns what it returned."""
+        return self._Done(fn(*args, **kwargs))
+
+
+def campaign_size(settings: dict, quick: bool, samples: int | None) -> int:
+    """Drops of a design's campaign: ``samples`` if given, the quick look's, or ``verify.campaign_samples``."""
+    if samples is not None:
+        return samples
+    return QUICK_SAMPLES if quick else int(settings["campaign_samples"])
+
+
+def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) -> Cases:
+    """The cases of one design with their machines, nothing run yet (module docstring)."""
     settings = verify_settings(data)
     machine = machine_from_mapping(data, name, base)
     drop = {}
@@ -139,37 +156,72 @@ def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, sam
     if machine.rotor.axial_force != 0.0:
         cases.machines["drop with the thrust reversed"] = variant(
             data, name, base, rotor={"axial_force": f"{float(-machine.rotor.axial_force)!r} N"}, drop=drop)
-    for case, case_machine in cases.machines.items():
-        say(case)
-        cases.drops[case] = run_machine(case_machine)
+    cases.spreads = campaign_spreads(cases.machine, settings)
+    cases.quick = quick
+    return cases
+
+
+def _coastdown_task(machine: Machine, quick: bool) -> CoastdownRun:
+    if quick:
+        return run_coastdown(machine, until_stop=False, duration=min(QUICK_COASTDOWN, machine.coastdown.max_time))
+    return run_coastdown(machine)
+
+
+def submit_cases(cases: Cases, executor) -> dict:
+    """Hand the drops and the coast-down of a planned design to ``executor`` (``submit(fn, *args)``): futures.
+
+    The coast-down starts at once, beside the drops: it integrates its own drop at the maximum speed, and its
+    result is set aside when that drop leaves the model's range (:func:`collect_cases`).
+    """
+    futures = {case: executor.submit(run_machine, machine) for case, machine in cases.machines.items()}
+    futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick)
+    return futures
+
+
+def collect_cases(cases: Cases, futures: dict) -> Cases:
+    """The runs of :func:`submit_cases` into ``cases``, with the notes they call for."""
+    for case in cases.machines:
+        cases.drops[case] = futures[case].result()
+    coastdown = futures["coast-down"].result()
     first = cases.drops["drop at the maximum speed"].summary
     if first["verdict"] != "ok":
         cases.notes.append("the coast-down was not run: the drop at the maximum speed it starts from already left "
                            f"the model's range ({first['reason']})")
-    elif quick:
-        say("coast-down with heat")
-        cases.coastdown = run_coastdown(cases.machine, until_stop=False,
-                                        duration=min(QUICK_COASTDOWN, machine.coastdown.max_time))
+        return cases
+    cases.coastdown = coastdown
+    if cases.quick:
         cases.notes.append(f"--quick: the coast-down ran for its first {QUICK_COASTDOWN:g} s only; temperatures, "
                            "clearances and life cover that part")
-        if cases.coastdown.summary["coastdown_time_s"] is None:
+        if coastdown.summary["coastdown_time_s"] is None:
             cases.partial_coastdown = "only the first part of the coast-down ran (--quick): run without --quick"
-    else:
-        say("coast-down with heat")
-        cases.coastdown = run_coastdown(cases.machine)
-        if cases.coastdown.summary["verdict"] in ("step_budget", "wall_time_budget"):
-            cases.partial_coastdown = f"the coast-down reached a budget ({cases.coastdown.summary['reason']})"
-    if samples is not None:
-        n = samples
-    elif quick:
-        n = QUICK_SAMPLES
-    else:
-        n = int(settings["campaign_samples"])
-    if n > 0:
-        say(f"campaign of {n} drops")
-        cases.spreads = campaign_spreads(cases.machine, settings)
-        cases.campaign, cases.campaign_store = _campaign(data, name, base, cases.machine, settings, n, store,
-                                                         workers, scheduler, required_s0, drop)
+    elif coastdown.summary["verdict"] in ("step_budget", "wall_time_budget"):
+        cases.partial_coastdown = f"the coast-down reached a budget ({coastdown.summary['reason']})"
+    return cases
+
+
+def run_campaign_of(cases: Cases, data: dict, name: str, base: Path | None, samples: int, store: Path | None,
+                    workers: int | None, scheduler: str | None, required_s0: float) -> None:
+    """The design's campaign over its spreads into ``cases`` (on the scheduler given, or a cluster of its own)."""
+    if samples <= 0:
+        return
+    drop = {}
+    if cases.quick:
+        drop["duration"] = f"{float(cases.machine.simulation.duration)!r} s"
+    cases.campaign, cases.campaign_store = _campaign(data, name, base, cases.machine, verify_settings(data), samples,
+                                                     store, workers, scheduler, required_s0, drop)
+
+
+def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, samples: int | None = None,
+              store: Path | None = None, workers: int | None = None, scheduler: str | None = None,
+              required_s0: float = 1.0, progress: Callable[[str], None] | None = None) -> Cases:
+    """Run every case of one design, one after another (module docstring); ``samples = 0`` skips the campaign."""
+    if progress is not None:
+        progress("drops and coast-down")
+    cases = collect_cases(plan := plan_cases(data, name, base, quick), submit_cases(plan, Immediate()))
+    n = campaign_size(verify_settings(data), quick, samples)
+    if progress is not None and n > 0:
+        progress(f"campaign of {n} drops")
+    run_campaign_of(cases, data, name, base, n, store, workers, scheduler, required_s0)
     return cases
 
 
@@ -259,6 +311,8 @@ def campaign_tables(data: dict, machine: Machine, settings: dict, samples: int, 
 
 
 def _campaign(data, name, base, machine, settings, samples, store, workers, scheduler, required_s0, drop):
+    import dask
+
     from auxbearing.campaign.config import campaign_from_mapping
     from auxbearing.campaign.run import run_campaign
     from auxbearing.campaign.statistics import campaign_statistics
@@ -268,5 +322,7 @@ def _campaign(data, name, base, machine, settings, samples, store, workers, sche
         raise InputError("verify: a campaign needs a store folder (--out)")
     campaign = campaign_from_mapping(campaign_tables(data, machine, settings, samples, drop), f"{name} campaign", base)
     run_campaign(campaign, store, scheduler=scheduler, workers=workers)
-    stats = campaign_statistics(load_results(store), required_s0=required_s0)
+    # read the store here, not on the cluster a Dask client in this process may have made the default
+    with dask.config.set(scheduler="synchronous"):
+        stats = campaign_statistics(load_results(store), required_s0=required_s0)
     return stats, str(store)

@@ -63,46 +63,70 @@ def governing(criteria: list):
     return min(with_margin, key=lambda c: c.margin) if with_margin else None
 
 
-def convergence(cases: Cases, criteria: list) -> dict | None:
-    """Re-run the governing case tighter (module docstring); None when nothing re-runnable governs."""
+def convergence(cases: Cases, criteria: list, executor=None) -> dict | None:
+    """Re-run the governing case tighter (module docstring); None when nothing re-runnable governs.
+
+    ``executor`` (``submit(fn, *args)``) runs the case; default this process.
+    """
+    return convergence_started(cases, criteria, executor)()
+
+
+def convergence_started(cases: Cases, criteria: list, executor=None):
+    """:func:`convergence` with its run handed to ``executor`` now: call the result for the comparison."""
     from auxbearing.coastdown import run_coastdown
     from auxbearing.drop import run_machine
+    from auxbearing.verify.cases import Immediate
 
+    executor = executor or Immediate()
     c = governing(criteria)
     if c is None or c.found is None:
-        return None
+        return lambda: None
     what = {"criterion": c.name, "unit": c.unit, "tolerance_factor": TIGHTER}
     if c.name in _COASTDOWN:
         if cases.coastdown is None:
-            return None
+            return lambda: None
         first = cases.coastdown
-        run = run_coastdown(_tightened(cases.machine, True), until_stop=first.summary["until_stop"],
-                            duration=None if first.summary["until_stop"] else first.summary["simulated_s"])
+        future = executor.submit(run_coastdown, _tightened(cases.machine, True), first.summary["until_stop"],
+                                 None if first.summary["until_stop"] else first.summary["simulated_s"])
         before = _coastdown_quantity(c.name, first.summary, first.history)
-        after = _coastdown_quantity(c.name, run.summary, run.history)
-        what.update(case="the coast-down (speed step halved too)", verdict=run.summary["verdict"])
+        what["case"] = "the coast-down (speed step halved too)"
+
+        def after_of(run):
+            return _coastdown_quantity(c.name, run.summary, run.history)
+
         if c.name == "peak bearing temperature":  # on an offset scale: compare the rises above ambient
             ambient = cases.machine.coastdown.ambient_temperature - 273.15
-            before, after = (None if before is None else before - ambient), (None if after is None else after - ambient)
+            before = None if before is None else before - ambient
             what["quantity"] = "hottest part's rise above ambient"
+
+            def after_of(run, plain=after_of):
+                value = plain(run)
+                return None if value is None else value - ambient
     elif c.name.startswith("static safety factor") or c.name.startswith("journal excursion"):
-        case = max(cases.drops, key=lambda k: 0.0) if not c.evidence else next(
-            (k for k in cases.drops if k in c.evidence), next(iter(cases.drops)))
-        run = run_machine(_tightened(cases.machines[case], False))
+        case = next((k for k in cases.drops if k in (c.evidence or "")), next(iter(cases.drops)))
+        future = executor.submit(run_machine, _tightened(cases.machines[case], False))
         before = _drop_quantity(c.name, cases.drops[case].summary)
-        after = _drop_quantity(c.name, run.summary)
-        what.update(case=case, verdict=run.summary["verdict"])
+        what["case"] = case
+
+        def after_of(run):
+            return _drop_quantity(c.name, run.summary)
     else:
-        return None
+        return lambda: None
     what.setdefault("quantity", c.name)
-    what.update(as_run=before, tightened=after)
-    if before is None or after is None or before == 0.0:
-        what.update(change=None, settled=None, note="the tighter run gave no value to compare")
+
+    def finish() -> dict:
+        run = future.result()
+        after = after_of(run)
+        what.update(as_run=before, tightened=after, verdict=run.summary["verdict"])
+        if before is None or after is None or before == 0.0:
+            what.update(change=None, settled=None, note="the tighter run gave no value to compare")
+            return what
+        change = (after - before) / abs(before)
+        what.update(change=change, settled=abs(change) <= SETTLED,
+                    note=(f"{what['quantity']} moves {100 * change:+.2f} % with tolerances {TIGHTER:g}x tighter"
+                          + ("" if abs(change) <= SETTLED else
+                             f": more than {100 * SETTLED:g} %, so the verdict rests on a number the numerics "
+                             "still move")))
         return what
-    change = (after - before) / abs(before)
-    what.update(change=change, settled=abs(change) <= SETTLED,
-                note=(f"{what['quantity']} moves {100 * change:+.2f} % with tolerances {TIGHTER:g}x tighter"
-                      + ("" if abs(change) <= SETTLED else
-                         f": more than {100 * SETTLED:g} %, so the verdict rests on a number the numerics still "
-                         "move")))
-    return what
+
+    return finish

@@ -64,12 +64,15 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
 
 def _check_bearing_name(spec: str, field: str) -> None:
     """Refuse a candidate that is neither a catalogue bearing nor a bearing TOML file, naming ``field``."""
-    from auxbearing.bearing import bearing_names
+    from auxbearing.bearing import bearing_names, get_bearing
 
-    if spec.lower() in (n.lower() for n in bearing_names()) or spec.lower().endswith(".toml") or Path(spec).is_file():
+    if spec.lower().endswith(".toml") or Path(spec).is_file():
         return
-    raise InputError.for_field(field, spec, "neither a catalogue bearing (" + ", ".join(bearing_names())
-                               + ") nor a bearing TOML file")
+    try:
+        get_bearing(spec)
+    except (InputError, KeyError, ValueError):
+        raise InputError.for_field(field, spec, "neither a catalogue bearing (e.g. " + ", ".join(bearing_names())
+                                   + "; `auxbearing bearings` lists them all) nor a bearing TOML file") from None
 
 
 def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
@@ -97,14 +100,29 @@ def recommended_tables(data: dict, name: str, base: Path | None, rec: dict) -> d
     return _design_tables(data, machine, x)
 
 
-def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: bool = False,
-              progress=None) -> dict:
-    """The geometry of the machine's bearing family that maximises the worst drop margin (module docstring)."""
-    from scipy.optimize import minimize
-
+def _point_summary(tables: dict, name: str, base: Path | None) -> dict:
+    """The summary of one design point's drop (a task of the search), or the reason it cannot be built."""
     from auxbearing.drop import run_machine
     from auxbearing.machine import machine_from_mapping
-    from auxbearing.verify.cases import QUICK_DROP, verify_settings
+
+    try:
+        return run_machine(machine_from_mapping(tables, name, base).for_batch(), lean=True).summary
+    except InputError as err:  # a geometry the bearing cannot have (e.g. clearance past the bore)
+        return {"invalid": str(err)}
+
+
+def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: bool = False,
+              progress=None, executor=None) -> dict:
+    """The geometry of the machine's bearing family that maximises the worst drop margin (module docstring).
+
+    ``executor`` (``submit(fn, *args)``) runs the drops; the grid's points go to it all at once.
+    """
+    from scipy.optimize import minimize
+
+    from auxbearing.machine import machine_from_mapping
+    from auxbearing.verify.cases import QUICK_DROP, Immediate, verify_settings
+
+    executor = executor or Immediate()
 
     machine = machine_from_mapping(data, name, base)
     first = machine.planes[0].bearing
@@ -123,17 +141,21 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     duration = {"duration": f"{float(min(machine.simulation.duration, QUICK_DROP))!r} s"} if quick else {}
     evaluated: list[dict] = []
 
-    def margins(x) -> dict:
+    def start(x):
         x = np.clip(x, bounds[:, 0], bounds[:, 1])
         tables = _design_tables(data, machine, x)
         tables.setdefault("drop", {}).update(duration)
-        try:
-            run = run_machine(machine_from_mapping(tables, name, base).for_batch(), lean=True)
-        except InputError as err:  # a geometry the bearing cannot have (e.g. clearance past the bore)
-            point = {"x": x, "worst": -1.0, "binding": f"invalid geometry: {err}", "margins": {}}
+        return x, executor.submit(_point_summary, tables, name, base)
+
+    def margins(x) -> dict:
+        return judged(*start(x))
+
+    def judged(x, future) -> dict:
+        summary = future.result()
+        if "invalid" in summary:
+            point = {"x": x, "worst": -1.0, "binding": f"invalid geometry: {summary['invalid']}", "margins": {}}
             evaluated.append(point)
             return point
-        summary = run.summary
         out = {}
         if summary["verdict"] != "ok":
             out["no run leaves the model's range or a limit"] = -1.0
@@ -156,10 +178,9 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
 
     levels = 2 if quick else 3
     grids = [np.linspace(lo, hi, levels) if hi > lo else np.array([lo]) for lo, hi in bounds]
-    for a in grids[0]:
-        for f in grids[1]:
-            for c in grids[2]:
-                margins(np.array([a, f, c]))
+    pending = [start(np.array([a, f, c])) for a in grids[0] for f in grids[1] for c in grids[2]]
+    for x, future in pending:
+        judged(x, future)
     best = max(evaluated, key=lambda p: p["worst"])
     if not quick:
         span = bounds[:, 1] - bounds[:, 0]

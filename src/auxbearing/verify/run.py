@@ -15,11 +15,20 @@ from pathlib import Path
 
 from auxbearing.errors import InputError
 from auxbearing.machine import machine_from_mapping, machine_table
-from auxbearing.verify.cases import Cases, run_cases, verify_settings
-from auxbearing.verify.convergence import convergence
+from auxbearing.verify.cases import (
+    Cases,
+    campaign_size,
+    collect_cases,
+    plan_cases,
+    run_campaign_of,
+    submit_cases,
+    verify_settings,
+)
+from auxbearing.verify.convergence import convergence_started
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, read_criteria, worst_margin
 from auxbearing.verify.designs import candidate_tables, recommend, recommended_tables
 from auxbearing.verify.judge import judge
+from auxbearing.verify.schedule import verification_cluster
 
 
 def _drop_rows(cases: Cases) -> list[list]:
@@ -124,28 +133,9 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         if progress is not None:
             progress(text)
 
-    design = _design(run_cases(data, name, base, quick=quick, samples=samples, store=out_dir / "campaign.zarr",
-                               workers=workers, scheduler=scheduler, required_s0=criteria["min_s0"],
-                               progress=lambda t: say(f"design: {t}")), criteria)
-    others = []
-    for i, (label, tables) in enumerate(candidate_list):
-        cases = run_cases(tables, f"{name} with {label}", base, quick=quick, samples=samples,
-                          store=out_dir / f"campaign_candidate_{i}.zarr", workers=workers, scheduler=scheduler,
-                          required_s0=criteria["min_s0"], progress=lambda t, label=label: say(f"{label}: {t}"))
-        others.append((label, _design(cases, criteria)))
-    rec = recommend(data, name, base, criteria, quick=quick, progress=say) if with_recommendation else None
-    if rec is not None and rec["passes"]:
-        # the recommendation is itself verified: every case of the design, on the recommended geometry
-        tables = recommended_tables(data, name, base, rec)
-        checked = _design(run_cases(tables, f"{name}, recommended geometry", base, quick=quick, samples=samples,
-                                    store=out_dir / "campaign_recommended.zarr", workers=workers,
-                                    scheduler=scheduler, required_s0=criteria["min_s0"],
-                                    progress=lambda t: say(f"recommended geometry: {t}")), criteria)
-        rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
-                               "reason": _reason(checked["criteria"]),
-                               "criteria": [c.as_json() for c in checked["criteria"]]}
-    say("convergence: the governing case with tolerances ten times tighter")
-    converged = convergence(design["cases"], design["criteria"])
+    with verification_cluster(scheduler, workers) as (executor, address):
+        design, others, rec, converged = _run_all(data, name, base, criteria, settings, candidate_list, quick,
+                                                  samples, out_dir, executor, address, with_recommendation, say)
     machine = design["cases"].machine
     result = {
         "machine": machine.name, "verdict": design["verdict"], "design": design, "quick": quick,
@@ -176,6 +166,55 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     result["assumptions"] = _assumptions(design["cases"], criteria, settings, quick)
     result["wall_time_s"] = time.perf_counter() - start
     return result
+
+
+def _run_all(data, name, base, criteria, settings, candidate_list, quick, samples, out_dir, executor, address,
+             with_recommendation, say):
+    """Every case of the verification on one cluster, independent ones side by side (module docstring).
+
+    The drops and coast-downs of the design and of every candidate go to the cluster at once; the campaigns
+    follow on the same cluster (their batches queue behind those runs, so no worker idles), then the geometry
+    search's grid in one batch. Once the design is judged, its governing case runs again tighter, beside
+    the recommended design's own verification.
+    """
+    n = campaign_size(settings, quick, samples)
+    designs = [("design", data, name, out_dir / "campaign.zarr")]
+    designs += [(label, tables, f"{name} with {label}", out_dir / f"campaign_candidate_{i}.zarr")
+                for i, (label, tables) in enumerate(candidate_list)]
+    planned = {}
+    for label, tables, title, store in designs:
+        cases = plan_cases(tables, title, base, quick)
+        say(f"{label}: drops and coast-down")
+        planned[label] = (cases, submit_cases(cases, executor), tables, title, store)
+    for label, (cases, _, tables, title, store) in planned.items():
+        say(f"{label}: campaign of {n} drops")
+        run_campaign_of(cases, tables, title, base, n, store, None, address, criteria["min_s0"])
+    rec = recommend(data, name, base, criteria, quick, say, executor) if with_recommendation else None
+    judged = {}
+    for label, (cases, futures, *_) in planned.items():
+        collect_cases(cases, futures)
+        judged[label] = _design(cases, criteria)
+    design = judged.pop("design")
+    converging = None
+    if rec is not None and rec["passes"]:
+        # the recommendation is itself verified: every case of the design, on the recommended geometry
+        tables = recommended_tables(data, name, base, rec)
+        title = f"{name}, recommended geometry"
+        cases = plan_cases(tables, title, base, quick)
+        futures = submit_cases(cases, executor)
+        say("convergence of the governing case, beside the recommended geometry's verification")
+        converging = convergence_started(design["cases"], design["criteria"], executor)
+        say(f"recommended geometry: campaign of {n} drops")
+        run_campaign_of(cases, tables, title, base, n, out_dir / "campaign_recommended.zarr", None, address,
+                        criteria["min_s0"])
+        checked = _design(collect_cases(cases, futures), criteria)
+        rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
+                               "reason": _reason(checked["criteria"]),
+                               "criteria": [c.as_json() for c in checked["criteria"]]}
+    else:
+        say("convergence of the governing case")
+        converging = convergence_started(design["cases"], design["criteria"], executor)
+    return design, list(judged.items()), rec, converging()
 
 
 def _reason(criteria) -> str:

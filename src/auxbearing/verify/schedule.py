@@ -1,0 +1,49 @@
+"""One Dask cluster for a whole verification: the cases of every design side by side.
+
+A verification is many independent runs: each design's drops and coast-down, its campaign, the geometry
+search's drops, the recommended design's cases and the convergence run. They go to one cluster (a local
+one of single-threaded worker processes, one per core, or the user's by address), started once, its
+workers loading the compiled kernels once; the campaigns share it through its address.
+"""
+
+from __future__ import annotations
+
+from contextlib import contextmanager
+
+
+class DaskExecutor:
+    """``submit(fn, *args)`` onto a Dask client; the futures answer ``result()``."""
+
+    def __init__(self, client) -> None:
+        self.client = client
+
+    def submit(self, fn, *args, **kwargs):
+        """A future of ``fn(*args, **kwargs)`` on the cluster (never taken from a cache: runs are not pure)."""
+        return self.client.submit(fn, *args, pure=False, **kwargs)
+
+
+def _load_kernels() -> float:
+    """Load (or compile) the machine kernels in a worker with a short drop; seconds spent."""
+    import time
+
+    from auxbearing.drop import run_machine
+    from auxbearing.machine import read_machine
+
+    start = time.perf_counter()
+    run_machine(read_machine("paper_rig").for_batch(), duration=1e-4)
+    return time.perf_counter() - start
+
+
+@contextmanager
+def verification_cluster(scheduler: str | None, workers: int | None):
+    """(executor, scheduler address) for the verification, the local cluster closed at the end."""
+    from auxbearing.campaign.run import _client
+
+    client, local = _client(scheduler, workers)
+    try:
+        client.run(_load_kernels)  # once per worker, before the first case
+        yield DaskExecutor(client), client.scheduler.address
+    finally:
+        client.close()
+        if local is not None:
+            local.close()
