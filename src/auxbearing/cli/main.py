@@ -70,6 +70,7 @@ class _Group(click.Group):
             warnings.showwarning = _one_line_warning
             try:
                 _refuse_empty_paths(self, ctx)
+                _say_when_compiling(raw)
                 return super().invoke(ctx)
             except InputError as err:
                 _fail(ctx, _named_as_typed(str(err), raw), EXIT_USER_ERROR)
@@ -91,6 +92,27 @@ class _Group(click.Group):
             except MemoryError:
                 _fail(ctx, "out of memory; shorten the run or coarsen its output (drop.max_output_points)",
                       EXIT_USER_ERROR)
+
+
+#: Commands that run the compiled kernels (the rest answer without them).
+_KERNEL_COMMANDS = ("drop", "coastdown", "campaign", "verify", "study", "static", "static-cases", "contact",
+                    "experiment")
+
+
+def _say_when_compiling(args: list[str]) -> None:
+    """Tell the user, once after an install or an upgrade, that the first run compiles the kernels first."""
+    import os
+    import sys
+
+    # on a terminal only: a script or a test reading stderr for warnings gets no extra line
+    if not args or args[0] not in _KERNEL_COMMANDS or "--help" in args or not sys.stderr.isatty():
+        return
+    from auxbearing.core import cache_folder
+
+    folder = cache_folder()
+    if not os.path.isdir(folder) or not any(os.scandir(folder)):
+        click.echo("compiling the kernels, once after an install or an upgrade (about a minute; later runs load "
+                   "them from the cache)", err=True)
 
 
 def _named_as_typed(message: str, args: list[str]) -> str:
