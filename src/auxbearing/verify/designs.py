@@ -141,14 +141,14 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     duration = {"duration": f"{float(min(machine.simulation.duration, QUICK_DROP))!r} s"} if quick else {}
     evaluated: list[dict] = []
 
-    def start(x):
+    def launch(x):
         x = np.clip(x, bounds[:, 0], bounds[:, 1])
         tables = _design_tables(data, machine, x)
         tables.setdefault("drop", {}).update(duration)
         return x, executor.submit(_point_summary, tables, name, base)
 
     def margins(x) -> dict:
-        return judged(*start(x))
+        return judged(*launch(x))
 
     def judged(x, future) -> dict:
         summary = future.result()
@@ -178,19 +178,19 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
 
     levels = 2 if quick else 3
     grids = [np.linspace(lo, hi, levels) if hi > lo else np.array([lo]) for lo, hi in bounds]
-    pending = [start(np.array([a, f, c])) for a in grids[0] for f in grids[1] for c in grids[2]]
+    pending = [launch(np.array([a, f, c])) for a in grids[0] for f in grids[1] for c in grids[2]]
     for x, future in pending:
         judged(x, future)
     best = max(evaluated, key=lambda p: p["worst"])
     if not quick:
         span = bounds[:, 1] - bounds[:, 0]
         scale = np.where(span > 0.0, span, 1.0)
-        start = (best["x"] - bounds[:, 0]) / scale
+        u0 = (best["x"] - bounds[:, 0]) / scale
 
         def cost(u):
             return -margins(bounds[:, 0] + np.clip(u, 0.0, 1.0) * scale)["worst"]
 
-        minimize(cost, start, method="Nelder-Mead", options={"maxfev": 12, "xatol": 0.02, "fatol": 1e-3})
+        minimize(cost, u0, method="Nelder-Mead", options={"maxfev": 12, "xatol": 0.02, "fatol": 1e-3})
         best = max(evaluated, key=lambda p: p["worst"])
     x = best["x"]
     at_bound = [name for name, value, (lo, hi) in zip(("contact angle", "groove ratio", "clearance"), x, bounds,
