@@ -494,6 +494,7 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
                 "damage_per_drop": life["damage_per_drop"], "drop_damage": life["drop_damage"],
                 "coastdown_damage": life["coastdown_damage"], "drops_to_failure": life["drops_to_failure"],
                 "drops_to_dent_limit": life["drops_to_dent_limit"], "dent_depth_per_drop_um": life["dent_depth_um"],
+                "dent_assumption": life["dent_assumption"],
                 "governing": life["governing"]["limit"], "allowed_drops": life["governing"]["allowed_drops"],
                 "drops_margin": life["governing"].get("margin")}
         planes.append({

@@ -81,9 +81,10 @@ def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolli
     out["damage_per_drop"] = damage
     out["drops_to_failure"] = 1.0 / damage if damage > 0.0 else math.inf
     peak = drop_plane.get("peak_ball_load_N") or 0.0
-    dent = dent_per_drop(peak, bearing)
+    dent = dent_per_drop(peak, bearing, machine.life.dent_accumulation)
     out["drops_to_dent_limit"] = float(dent["drops_to_dent_limit"])
     out["dent_depth_um"] = max(dent["inner"]["depth"], dent["outer"]["depth"]) * 1e6
+    out["dent_assumption"] = dent["assumption"]
     out["dynamic_load_rating_N"] = rating
     out["governing"] = governing(out["drops_to_failure"], out["drops_to_dent_limit"], machine.life.required_drops)
     out["fatigue"] = fatigue

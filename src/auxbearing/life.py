@@ -25,9 +25,11 @@ the moving balls that are nearest to each station, which turns the over-rolling 
 Lundberg-Palmgren's own sums over the Z ball loads (Harris & Kotzalas 2007, Ch. 11).
 
 Dent (:func:`dent_per_drop`): Palmgren's permanent set at the largest contact load of a drop,
-against ISO 76's 1e-4 D; depths of successive drops are added, as if every drop dented the same spot
-(conservative: a repeated equal load mostly shakes down elastically). Palmgren's formula has no
-yield threshold, so under this rule even drops far below 4200 MPa reach the limit after enough drops.
+against ISO 76's 1e-4 D; depths of successive drops are added, by default as if every drop dented the
+same spot (conservative: a repeated equal load mostly shakes down elastically), or, with
+``life.dent_accumulation = "spread"``, with the rotating race's dents spread round it
+(:data:`DENT_ACCUMULATION`). Palmgren's formula has no yield threshold, so under either rule even drops far
+below 4200 MPa reach the limit after enough drops.
 """
 
 from __future__ import annotations
@@ -322,7 +324,42 @@ def _worst(damage, cycles, key, pair_first=False):
             "ranges": track["ranges"][mine], "means": track["means"][mine], "counts": track["counts"][mine]}
 
 
-def dent_per_drop(peak_load, bearing: BearingGeometry) -> dict:
+#: How the dents of successive drops add up: ``same_spot``, every drop's largest dent on one spot of each race,
+#: depths added (conservative; right for the stationary outer ring, which a horizontal rotor always strikes
+#: at the bottom); ``spread``, the rotating inner race meets the drop at a random angle, so its dents fall on
+#: spots spread uniformly around the raceway (one spot a contact-ellipse width long) and a spot reaches the
+#: limit only when enough drops land on it; the outer race keeps ``same_spot``.
+DENT_ACCUMULATION = ("same_spot", "spread")
+
+
+def _drops_until_a_spot_fills(hits: float, spots: float) -> float:
+    """Drops, placed uniformly at random on ``spots`` spots, after which some spot is expected to hold ``hits``.
+
+    The occupancy of one spot after n drops is Poisson with mean n / spots (many spots); the expected number of
+    spots holding ``hits`` or more is spots P(N >= hits), and the limit is reached where it is one. Bisection
+    in n (the expected count rises with n).
+
+    >>> round(_drops_until_a_spot_fills(1.0, 100.0))
+    1
+    >>> 20 < _drops_until_a_spot_fills(5.0, 200.0) < 5 * 200
+    True
+    """
+    from scipy.stats import poisson
+
+    need = max(1, math.ceil(hits))
+    if need == 1 or spots <= 1.0:
+        return float(need)
+    lo, hi = float(need - 1), float(need) * spots
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        if spots * poisson.sf(need - 1, mid / spots) >= 1.0:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+def dent_per_drop(peak_load, bearing: BearingGeometry, accumulation: str = "same_spot") -> dict:
     """Permanent dent of the most loaded contacts of a drop and the drops to ISO 76's limit.
 
     Parameters
@@ -330,13 +367,15 @@ def dent_per_drop(peak_load, bearing: BearingGeometry) -> dict:
     peak_load : float or (float, float)
         Largest ball/raceway contact load of the drop [N], one value or (inner, outer).
     bearing : BearingGeometry
+    accumulation : {"same_spot", "spread"}
+        How successive drops' dents add up (:data:`DENT_ACCUMULATION`).
 
     Returns
     -------
     dict
-        Per race ``depth`` [m] (Palmgren, ball and raceway together, at the nominal contact angle)
-        and ``stress`` [Pa]; ``limit`` = 1e-4 D [m] (ISO 76:2006); ``drops_to_dent_limit``, assuming
-        every drop dents the same spot and depths add.
+        Per race ``depth`` [m] (Palmgren, ball and raceway together, at the nominal contact angle),
+        ``stress`` [Pa] and ``drops_to_dent_limit``; ``limit`` = 1e-4 D [m] (ISO 76:2006); the smaller race's
+        ``drops_to_dent_limit``, and the ``assumption`` behind it in words.
 
     Examples
     --------
@@ -345,6 +384,8 @@ def dent_per_drop(peak_load, bearing: BearingGeometry) -> dict:
     >>> f"{r['inner']['depth'] * 1e9:.1f} nm", round(r["drops_to_dent_limit"])
     ('114.7 nm', 5)
     """
+    if accumulation not in DENT_ACCUMULATION:
+        raise ValueError(f"accumulation = {accumulation!r}: must be one of {', '.join(DENT_ACCUMULATION)}")
     loads = np.broadcast_to(np.asarray(peak_load, dtype=float), (2,))
     if np.any(~np.isfinite(loads)) or np.any(loads < 0.0):
         raise ValueError(f"peak_load = {peak_load!r}: must be finite and >= 0 N")
@@ -353,16 +394,24 @@ def dent_per_drop(peak_load, bearing: BearingGeometry) -> dict:
     const = race_constants(bearing)
     limit = cf.ISO76_DENT_RATIO * d
     out = {"limit": limit}
-    depths = []
+    drops = []
     for race, load, ratio, rolling in zip(RACES, loads, (bearing.inner_groove_ratio, bearing.outer_groove_ratio),
                                           (gamma / (1.0 - gamma), -gamma / (1.0 + gamma)), strict=True):
         depth = float(cf.palmgren_dent_depth(load, d, 2.0 / d * (1.0 + rolling), 2.0 / d - 1.0 / (ratio * d)))
-        depths.append(depth)
-        out[race] = {"load": float(load), "depth": depth,
-                     "stress": const[race]["stress_coefficient"] * float(load) ** (1.0 / 3.0)}
-    worst = max(depths)
-    out["drops_to_dent_limit"] = limit / worst if worst > 0.0 else math.inf
-    out["assumption"] = "every drop dents the same spot and the depths add (Palmgren's set is for one loading)"
+        stress = const[race]["stress_coefficient"] * float(load) ** (1.0 / 3.0)
+        hits = limit / depth if depth > 0.0 else math.inf
+        if accumulation == "spread" and race == "inner" and math.isfinite(hits):
+            width = 2.0 * const[race]["half_width_coefficient"] * stress  # the ellipse's extent along the raceway
+            spots = 2.0 * math.pi * const[race]["radius"] / max(width, 1e-12)
+            hits = _drops_until_a_spot_fills(hits, spots)
+        drops.append(hits)
+        out[race] = {"load": float(load), "depth": depth, "stress": stress, "drops_to_dent_limit": hits}
+    out["drops_to_dent_limit"] = min(drops)
+    out["assumption"] = ("every drop dents the same spot of each race and the depths add (Palmgren's set is for one "
+                         "loading; conservative)" if accumulation == "same_spot" else
+                         "the rotating inner race's dents spread uniformly round it, one spot an ellipse width long, "
+                         "a spot reaching the limit when enough drops land on it; the stationary outer race is "
+                         "dented on one spot every drop")
     return out
 
 

@@ -184,10 +184,17 @@ class Life:
     """What the bearings must survive."""
 
     required_drops: float = default("life", "required_drops")
+    #: how the dents of successive drops add up (:data:`auxbearing.life.DENT_ACCUMULATION`)
+    dent_accumulation: str = "same_spot"
 
     def __post_init__(self) -> None:
+        from auxbearing.life import DENT_ACCUMULATION
+
         for p in LIFE:
             object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
+        if self.dent_accumulation not in DENT_ACCUMULATION:
+            raise InputError.for_field("life.dent_accumulation", self.dent_accumulation,
+                                       "must be " + " or ".join(f"'{k}'" for k in DENT_ACCUMULATION))
 
 
 @dataclass(frozen=True)
@@ -264,7 +271,8 @@ class Machine:
                "drop": {p.key: getattr(self.simulation, p.key) for p in SIMULATION},
                "coastdown": {**{p.key: getattr(self.coastdown, p.key) for p in COASTDOWN},
                              "vacuum": self.coastdown.vacuum},
-               "life": {p.key: getattr(self.life, p.key) for p in LIFE}}
+               "life": {**{p.key: getattr(self.life, p.key) for p in LIFE},
+                        "dent_accumulation": self.life.dent_accumulation}}
         return out
 
 
@@ -455,11 +463,14 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     if not isinstance(vacuum, bool):
         raise InputError.for_field("coastdown.vacuum", vacuum, "must be true or false")
     coast_values = read_table(coast, TABLES["coastdown"], "coastdown.")
-    life_values = read_table(data.get("life"), TABLES["life"], "life.")
+    life_table = dict(data.get("life") or {}) if isinstance(data.get("life") or {}, dict) else data.get("life")
+    accumulation = life_table.pop("dent_accumulation", "same_spot") if isinstance(life_table, dict) else "same_spot"
+    life_values = read_table(life_table, TABLES["life"], "life.")
     machine = Machine(name=_text(head, "name", "machine.", name), rotor=rotor, planes=tuple(planes),
                       orientation=_text(head, "orientation", "machine.", "horizontal"),
                       simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
-                      coastdown=Coastdown(**coast_values, vacuum=vacuum), life=Life(**life_values))
+                      coastdown=Coastdown(**coast_values, vacuum=vacuum),
+                      life=Life(**life_values, dent_accumulation=accumulation))
     check_combinations(data, machine)
     return machine
 

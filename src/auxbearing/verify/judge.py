@@ -88,8 +88,10 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
                  if p["allowed_drops"] is not None]
         if lives:
             allowed = min(lives)
+            dent = coast["planes"][0].get("dent_assumption")
             out.append(lower_bound("drops to failure (fatigue or dent)", allowed[0], required, "drops", source,
-                                   f"{allowed[1]}: {allowed[2]} governs"))
+                                   f"{allowed[1]}: {allowed[2]} governs" + (
+                                       f"; dents: {dent} (life.dent_accumulation)" if dent else "")))
         else:
             out.append(not_checked("drops to failure (fatigue or dent)", coast["planes"][0].get("life_note", ""), ""))
     else:
