@@ -40,7 +40,7 @@ PARAMETERS: tuple[Param, ...] = (
     Param("drop", "unbalance_phase", "angle", 0.0, "deg", "finite",
           "Angle of the unbalance from +x at the drop", "not in the paper (Sec. III names it a cause)"),
     Param("drop", "duration", "time", 0.15, "s", "positive", "Simulated time", "Sec. II.D"),
-    Param("drop", "output_step", "time", 1e-5, "us", "positive", "Uniform output interval", "issue 4"),
+    Param("drop", "output_step", "time", 1e-5, "us", "positive", "Uniform output interval", "ours"),
     Param("drop", "race_mass", "mass", 0.0125, "kg", "positive", "Inner race mass m_b", "Table II"),
     Param("drop", "race_inertia", "inertia", 7.03e-7, "kg*m**2", "positive",
           "Inner race polar moment of inertia J_b", "Table II (printed as 'of rotor', paper_notes item 5)"),

@@ -1,7 +1,7 @@
 """auxbearing verify (issue 15): a machine file in, criteria, margins, candidates, a recommendation out.
 
 One quick verification of the blower (its file gives every criterion's input: air gap, seal) with a
-candidate in the same seats is run once for the module; the undersized design is the heavy fast rotor of issue 12,
+candidate in the same seats is run once for the module; the undersized design is the heavy fast rotor example,
 whose drop at the maximum speed overloads the touchdown contact.
 """
 

@@ -1,4 +1,4 @@
-"""Drop campaigns: Monte Carlo and sensitivity over uncertain drop conditions (issue 14).
+"""Drop campaigns: Monte Carlo and sensitivity over uncertain drop conditions.
 
 A campaign file (:mod:`~auxbearing.campaign.config`) names a machine and its uncertain inputs; a
 design (:mod:`~auxbearing.campaign.sampling`) turns a seed into samples; each sample is run into a
