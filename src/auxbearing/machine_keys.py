@@ -38,7 +38,7 @@ This page is generated: `python -m auxbearing.machine_keys > docs/machine_file.m
 | `[[touchdown]]` | one per touchdown plane (one or two): bearing, clearances, mount, friction, heat |
 | `[drop]` | the drop simulation: duration, tolerances, budgets |
 | `[coastdown]` | drag of the rotor and the ambient, for `coastdown` and `verify` |
-| `[life]` | the number of drops the bearings must survive; `dent_accumulation` (`same_spot`, the default: every drop dents one spot of each race, depths added; or `spread`: the rotating inner race's dents fall round it at random, the stationary outer race's on one spot) |
+{life_row}
 | `[criteria]` | the acceptance values `verify` judges against |
 | `[verify]` | the cases and the campaign of `verify` |
 | `[[candidate]]` | bearings for the same seats (same bore, no larger outside diameter or width): `name`, `bearing` |
@@ -49,6 +49,13 @@ file (relative to the machine file) or an inline table with the keys of a bearin
 (`examples/my_bearing.toml`). A default written as "derived" is computed from the bearing or the rotor
 and stated in the reports.
 """
+
+
+#: The ``[life]`` row of the table of tables (one Markdown line, longer than a source line).
+_LIFE_ROW = ("| `[life]` | the number of drops the bearings must survive; `dent_accumulation` (`same_spot`, "
+             "the default: every drop dents one spot of each race, depths added; or `spread`: the rotating inner "
+             "race's dents fall round it at random, the stationary outer race's on one spot) |")
+_INTRO = _INTRO.replace("{life_row}", _LIFE_ROW)
 
 
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
