@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import functools
 import math
-import tomllib
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -430,17 +429,13 @@ def _catalogue_bearing(lowered: str) -> BearingGeometry | None:
 
 
 def read_toml(path: str | Path, field: str = "file") -> dict:
-    """Read a TOML file, turning a missing file, a folder or a syntax error into a one-line error.
+    """Read a TOML file, turning a missing file, a folder, a syntax error or deep nesting into a one-line error.
 
-    A file that is not UTF-8 is read in the encoding :func:`auxbearing.io.read_text` can tell, with a warning.
+    The one reader of TOML files (:func:`auxbearing.io.read_toml`), kept here under its old name.
     """
-    from auxbearing.io import read_text
+    from auxbearing.io import read_toml as read
 
-    text = read_text(path, field)
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
-        raise InputError.for_field(field, str(path), f"is not valid TOML ({err})") from None
+    return read(path, field)
 
 
 def load_bearing(spec: str | Path | BearingGeometry, field: str = "bearing", sets: bool = False):

@@ -187,7 +187,7 @@ def distribution_from_table(table: dict, param: Param, where: str) -> Distributi
 #: Rules of :mod:`auxbearing.params` as intervals a sampled value must lie in.
 RULE_RANGES = {"positive": (0.0, math.inf), "optional_positive": (0.0, math.inf),
                "nonnegative": (0.0, math.inf), "optional_nonnegative": (0.0, math.inf), "unit_interval": (0.0, 1.0),
-               "tolerance": (0.0, 1e-2)}
+               "tolerance": (0.0, 1e-2), "fraction": (0.0, 1.0)}
 
 
 def share_outside_rule(distribution: Distribution, param: Param) -> float:

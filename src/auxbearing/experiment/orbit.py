@@ -163,6 +163,8 @@ def detect_drop(t: np.ndarray, x: np.ndarray, y: np.ndarray, noise: float) -> tu
                              "drop_detection": "record starts at the drop (no levitated stretch)"}
     drop = float(t[first] - math.sqrt(2.0 * threshold / GRAVITY))
     pre = t < drop
+    if not pre.any():  # a noisy record can back-date the drop to its first sample
+        pre = t <= t[0]
     return max(drop, float(t[0])), {
         "levitated_x_m": float(np.median(x[pre])), "levitated_y_m": float(np.median(y[pre])),
         "drop_detection": f"first excursion > {threshold * 1e6:.3g} um at {t[first] * 1e3:.3f} ms, "

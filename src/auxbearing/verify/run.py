@@ -15,6 +15,7 @@ from pathlib import Path
 
 from auxbearing.errors import InputError
 from auxbearing.machine import machine_from_mapping, machine_table
+from auxbearing.machine_check import check_candidate_seat
 from auxbearing.verify.cases import (
     Cases,
     campaign_size,
@@ -118,16 +119,21 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     data, name, base = machine_table(spec)
     criteria = read_criteria(data.get("criteria"))
     settings = verify_settings(data)
+    from_option = candidates is not None
     if candidates is None:
         candidates = data.get("candidate", [])
         if not isinstance(candidates, list):
             raise InputError.for_field("candidate", candidates, "give [[candidate]] tables")
     candidate_list = candidate_tables(data, candidates)
+    design_machine = machine_from_mapping(data, name, base)
     for label, tables in candidate_list:  # refuse a bad candidate before the first drop, not after
         try:
-            machine_from_mapping(tables, name, base)
+            candidate = machine_from_mapping(tables, name, base)
         except InputError as err:
             raise InputError(f"candidate '{label}': {err}") from None
+        # a candidate must fit the design's seat: same bore, no larger outside diameter or width
+        check_candidate_seat(design_machine, candidate.planes[0].bearing,
+                             f"--candidates = {label!r}" if from_option else f"candidate '{label}'")
 
     def say(text: str) -> None:
         if progress is not None:
