@@ -43,7 +43,7 @@ import xarray as xr
 from auxbearing import __version__
 from auxbearing.ballset import ballset_state
 from auxbearing.coastdown_life import plane_life
-from auxbearing.coastdown_phases import integrate_stretch, plane_window, settled, spin_model
+from auxbearing.coastdown_phases import MAX_WINDOWS, integrate_stretch, plane_window, settled, spin_model
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
@@ -389,6 +389,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
             progress(min(1.0, session.t / t_end), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
         checked.append(windows)
+        del checked[:-MAX_WINDOWS]  # settled looks back over these at most
         carried = settled(checked)
         if verdict != OK or mode == "full" or carried is None:
             continue

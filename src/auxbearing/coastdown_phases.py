@@ -42,6 +42,9 @@ ROLL_SLIP = 0.02
 STATIONARY = 0.02
 #: Fewest full-dynamics windows a stretch's losses are measured over.
 MIN_WINDOWS = 3
+#: Most windows a check looks back over: a sliding set, so that the slow change of the losses with the falling
+#: speed over a long full-dynamics stretch is not taken for a drift.
+MAX_WINDOWS = 12
 #: States the reduced model represents (module docstring).
 REDUCIBLE = ("free", "rolling", "whirling", "rattling")
 _F = {name: i for i, name in enumerate(WHIRL_FIELDS)}
@@ -116,8 +119,8 @@ def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:
     if not windows or any(p.state not in REDUCIBLE for p in windows[-1]):
         return None
     states = [p.state for p in windows[-1]]
-    run = 1  # the windows at the end that share the last one's states
-    while run < len(windows) and [p.state for p in windows[-1 - run]] == states:
+    run = 1  # the windows at the end that share the last one's states, at most MAX_WINDOWS
+    while run < min(len(windows), MAX_WINDOWS) and [p.state for p in windows[-1 - run]] == states:
         run += 1
     windows = windows[-run:]
     n = len(windows)
