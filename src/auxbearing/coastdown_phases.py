@@ -47,6 +47,10 @@ MIN_WINDOWS = 3
 MAX_WINDOWS = 12
 #: States the reduced model represents (module docstring).
 REDUCIBLE = ("free", "rolling", "whirling", "rattling")
+#: The reduced model carries a rolling and a rattling plane alike (a race coupled to its journal at the ratio it
+#: has, the window's mean loss torque): a journal that bounces now and then in the bottom of its bore moves
+#: between the two from window to window, and those windows count together; their losses' scatter decides.
+_FAMILY = {"free": "free", "rolling": "coupled", "rattling": "coupled", "whirling": "whirling"}
 _F = {name: i for i, name in enumerate(WHIRL_FIELDS)}
 
 
@@ -108,8 +112,9 @@ def plane_window(machine: Machine, k: int, records: np.ndarray, onsets: int, pow
 def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:
     """The mean of the windows since the last stretch if a stretch may carry it, or None to go on in full dynamics.
 
-    ``windows`` holds, oldest first, each window's planes; the last ones in the same states as the last window
-    count. A stretch needs at least :data:`MIN_WINDOWS` of them, in states the reduced model represents, the two
+    ``windows`` holds, oldest first, each window's planes; the last ones whose planes are in the same states as
+    the last window's count (rolling and rattling as one: the reduced model carries both alike). A stretch
+    needs at least :data:`MIN_WINDOWS` of them, in states the reduced model represents, the two
     halves of them agreeing within twice :data:`STATIONARY` (no drift), and each plane's mean loss torque
     known to :data:`STATIONARY`: the standard error of the windows' mean within that fraction of it. A steady
     rolling or whirl agrees at once; a rattle or a journal swinging to and fro in the bottom of the bore
@@ -118,15 +123,16 @@ def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:
     """
     if not windows or any(p.state not in REDUCIBLE for p in windows[-1]):
         return None
-    states = [p.state for p in windows[-1]]
-    run = 1  # the windows at the end that share the last one's states, at most MAX_WINDOWS
-    while run < min(len(windows), MAX_WINDOWS) and [p.state for p in windows[-1 - run]] == states:
+    families = [_FAMILY[p.state] for p in windows[-1]]
+    run = 1  # the windows at the end in the last one's families of states, at most MAX_WINDOWS
+    while (run < min(len(windows), MAX_WINDOWS)
+           and [_FAMILY.get(p.state) for p in windows[-1 - run]] == families):
         run += 1
     windows = windows[-run:]
     n = len(windows)
     if n < MIN_WINDOWS:
         return None
-    for k in range(len(states)):
+    for k in range(len(families)):
         torques = np.array([w[k].torque for w in windows])
         mean = abs(float(torques.mean()))
         scale = max(mean, 1e-12)
