@@ -217,6 +217,11 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
         rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
                                "reason": _reason(checked["criteria"]),
                                "criteria": [c.as_json() for c in checked["criteria"]]}
+        if checked["verdict"] == "fail":
+            # a geometry whose own verification fails is not recommended, however well its drops went
+            rec["passes"] = False
+            rec["note"] = (f"the search's best geometry passes the drop criteria but fails its own verification: "
+                           f"{rec['verification']['reason']}")
     else:
         say("convergence of the governing case")
         converging = convergence_started(design["cases"], design["criteria"], executor)
