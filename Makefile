@@ -31,7 +31,7 @@ study: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks
-	$(TEST_ENV) $(BIN)/python -m pytest
+	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadgroup
 
 quick: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks

@@ -10,8 +10,6 @@ of the coast-down issue gives the same table to 30 s and to standstill, made by 
 
 import copy
 import math
-import tomllib
-from importlib import resources
 
 import pytest
 
@@ -70,20 +68,24 @@ def test_reduced_model_agrees_with_full_dynamics(case):
 
 
 def _blower_with_drop(duration: str):
-    data = tomllib.loads(resources.files("auxbearing.catalog").joinpath("machines/blower.toml").read_text())
+    """The blower braked harder (0.2 N m of drag) and run to 500 rpm: the same handover after the drop window,
+    at a minute of computing for the pair instead of three."""
+    data, _, base = machine_table("blower")
     data = copy.deepcopy(data)
     data["drop"]["duration"] = duration
+    data["coastdown"].update(drag_torque="0.2 N*m", stop_speed="500 rpm")
     for key in ("criteria", "candidate"):
         data.pop(key)
-    return machine_from_mapping(data, "blower")
+    return machine_from_mapping(data, "blower", base)
 
 
 @pytest.mark.slow
 def test_time_to_standstill_does_not_depend_on_the_drop_window():
-    """The drop window's length only moves where full dynamics hands over (measured: 223.74 s with 0.1 s,
-    223.72 s with 0.2 s); before the reduced model waited for the races to roll, it moved the standstill time
-    of a machine braked by rolling resistance by a factor of 2.4."""
+    """The drop window's length only moves where full dynamics hands over. Measured here: 79.41 s with 0.1 s and
+    0.4 s alike; the shipped blower to 1 rpm 223.43 s (0.1 s) and 223.32 s (0.4 s), to 200 rpm 212.16 s and
+    212.03 s. Before the reduced model waited for the races to roll, a machine braked by rolling resistance
+    alone moved its standstill time by a factor of 2.4 between windows of 0.1 s and 0.5 s."""
     short = run_coastdown(_blower_with_drop("0.1 s")).summary
-    long = run_coastdown(_blower_with_drop("0.4 s")).summary
+    long = run_coastdown(_blower_with_drop("0.3 s")).summary
     assert short["reached_standstill"] and long["reached_standstill"]
-    assert short["coastdown_time_s"] == pytest.approx(long["coastdown_time_s"], rel=0.02)
+    assert short["coastdown_time_s"] == pytest.approx(long["coastdown_time_s"], rel=0.01)
