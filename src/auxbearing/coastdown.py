@@ -194,8 +194,9 @@ def _window_powers(machine: Machine, y, ledger, length: float) -> dict:
 def _window_planes(machine: Machine, watch, powers: dict) -> list:
     """Each plane's state over the window just run (:func:`auxbearing.coastdown_phases.plane_window`)."""
     n = int(watch.window_count[0])
-    return [plane_window(machine, k, watch.whirl[:n, k], int(watch.onsets[k]), powers[k])
-            for k in range(len(machine.planes))]
+    planes = [plane_window(machine, k, watch.whirl[:n, k], int(watch.onsets[k]), powers[k])
+              for k in range(len(machine.planes))]
+    return [w._replace(load=_window_load(machine, k, w)) for k, w in enumerate(planes)]
 
 
 def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_end: float):
@@ -382,7 +383,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         windows = _window_planes(machine, watch, powers)
         for k, w in enumerate(windows):
             revs = abs(w.race_speed) * length / (2.0 * math.pi)
-            overrolling[k].append((revs, _window_load(machine, k, w)))
+            overrolling[k].append((revs, w.load))
         verdict, reason = limits.update(temps, session.t)
         record(0)
         if progress is not None:
@@ -397,7 +398,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             continue  # at standstill: the loop's top ends the run
         for w in carried:
             counts["states"][w.state] = counts["states"].get(w.state, 0) + 1
-        loads = [_window_load(machine, k, w) for k, w in enumerate(carried)]
+        loads = [w.load for w in carried]
         stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end)
         session.set_speeds(stretch.rotor_speed, stretch.race_speeds)
         for k in range(len(networks)):

@@ -67,6 +67,8 @@ class PlaneWindow(NamedTuple):
     whirl_speed: float  #: mean whirl speed of the journal centre [rad/s]
     slip: float  #: mean contact slip over the journal's surface speed [-]
     powers: tuple  #: mean heat powers (contact, bearing, mount) [W]
+    #: ISO 281 equivalent load on the bearing [N] (set by the coast-down, which knows the bearing's factors)
+    load: float = 0.0
 
     @property
     def torque(self) -> float:
@@ -143,8 +145,19 @@ def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:
             return None
     return [p._replace(powers=tuple(float(np.mean([w[k].powers[j] for w in windows])) for j in range(3)),
                        force=float(np.mean([w[k].force for w in windows])),
-                       axial_force=float(np.mean([w[k].axial_force for w in windows])))
+                       axial_force=float(np.mean([w[k].axial_force for w in windows])),
+                       load=mean_equivalent_load([w[k].load for w in windows]))
             for k, p in enumerate(windows[-1])]
+
+
+def mean_equivalent_load(loads) -> float:
+    """Load that does the damage of windows of equal revolutions at loads P_i: P_m = (sum P_i^3 / n)^(1/3) [N].
+
+    Palmgren-Miner over ISO 281:2007 Eq. (1), whose life goes as P^-3 for a ball bearing. A stretch carries the
+    windows' loads; their plain mean fell 2-10 % short of full dynamics' damage on a rattle.
+    """
+    values = np.abs(np.asarray(loads, float))
+    return float(np.mean(values ** 3) ** (1.0 / 3.0)) if values.size else 0.0
 
 
 def _viscous(plane, speed: float) -> float:
