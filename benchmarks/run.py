@@ -3,9 +3,9 @@
 Run: make bench   (or .venv/bin/python benchmarks/run.py [--only NAME ...] [--skip NAME ...])
 
 A benchmark that fails is reported and the others still run; the exit status says whether all passed.
-Speeds are measured and printed, never asserted. The whole set takes roughly 15-25 minutes on the
-2-core machine (the campaign's 1000 drops, the blower's coast-down and the empty-cache compilation
-take most of it).
+Speeds are measured and printed, never asserted. The whole set takes roughly 40-60 minutes on the
+2-core machine (the two blower verifications, the campaign's 1000 drops, the blower's coast-down and the
+empty-cache compilation take most of it).
 """
 
 import argparse
@@ -17,7 +17,7 @@ from pathlib import Path
 
 HERE = Path(__file__).parent
 BENCHMARKS = ("bench_hertz.py", "bench_static.py", "bench_machine.py", "bench_drop.py", "bench_coastdown.py",
-              "bench_campaign.py")
+              "bench_campaign.py", "bench_verify.py")
 
 
 def main() -> int:

@@ -453,6 +453,10 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                 raise InputError(str(err)) from None
         else:
             bearing = read_bearing_spec(_text(table, "bearing", where, ""), base, where + "bearing")
+        if not isinstance(bearing, BearingGeometry):
+            # a matched set's statics and ratings exist (auxbearing.bearings); its rows in the drop do not yet
+            raise InputError(f"{where}bearing = {table.get('bearing')!r}: a matched set (duplex pair) is not yet "
+                             "modelled in a machine; give one bearing (its statics and ratings: auxbearing bearings)")
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
         planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")

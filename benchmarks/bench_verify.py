@@ -1,0 +1,93 @@
+"""The whole verification of the shipped blower against one blower drop, with the cluster's two workers and one.
+
+In one process, after a short drop that compiles or loads the kernels:
+
+1. one 0.2 s drop of the blower (``run_machine``), best of three: the unit the target is counted in (the
+   verification within 150 of these drops' wall time);
+2. ``verify("blower")`` on a local cluster of ``--workers`` (default 2, then 1: the cases side by side
+   against one after another on the same code), each with its wall time, the CPU time of this process and
+   of its worker processes, and the wall time between consecutive progress messages (the schedule's phases:
+   cases submitted, campaigns one after another, the geometry search, the recommended design and the
+   convergence re-run). The verdict is printed too: it must not change with the number of workers.
+
+    python benchmarks/bench_verify.py [--quick] [--workers 2 --workers 1] [--machine blower]
+
+A full blower verification takes 5-15 minutes a run on the 2-core machine; ``--quick`` measures the quick
+verification instead.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import tempfile
+import time
+from itertools import pairwise
+from pathlib import Path
+
+from auxbearing.drop import run_machine
+from auxbearing.machine import read_machine
+from auxbearing.verify.run import verify
+
+
+def load() -> str:
+    one, five, fifteen = os.getloadavg()
+    return f"load average {one:.2f} / {five:.2f} / {fifteen:.2f} (1/5/15 min) on {os.cpu_count()} cores"
+
+
+def one_drop(machine_name: str) -> float:
+    machine = read_machine(machine_name)
+    run_machine(machine, duration=0.01)  # kernels compiled or loaded
+    best = float("inf")
+    for _ in range(3):
+        start = time.perf_counter()
+        run_machine(machine, duration=0.2)
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def one_verification(machine_name: str, workers: int, quick: bool) -> dict:
+    phases: list[tuple[float, str]] = []
+    cpu0, child0, wall0 = time.process_time(), children_cpu(), time.perf_counter()
+    with tempfile.TemporaryDirectory() as out:
+        result = verify(machine_name, Path(out), quick=quick, workers=workers,
+                        progress=lambda text: phases.append((time.perf_counter(), text)))
+    wall = time.perf_counter() - wall0
+    marks = [(t - wall0, text) for t, text in phases] + [(wall, "end")]
+    split = [(text, later - t) for (t, text), (later, _) in pairwise(marks)]
+    return {"wall": wall, "cpu": time.process_time() - cpu0, "workers_cpu": children_cpu() - child0,
+            "verdict": result["verdict"], "reason": result["reason"], "split": split}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--machine", default="blower")
+    parser.add_argument("--quick", action="store_true", help="the quick verification instead of the full one")
+    parser.add_argument("--workers", type=int, action="append", help="cluster sizes to compare (default 2, 1)")
+    args = parser.parse_args()
+    print(load())
+    drop = one_drop(args.machine)
+    print(f"one 0.2 s {args.machine} drop: {drop:.3f} s wall (best of 3)")
+    runs = {}
+    for workers in args.workers or [2, 1]:
+        run = runs[workers] = one_verification(args.machine, workers, args.quick)
+        print(f"\nverify --machine {args.machine}{' --quick' if args.quick else ''} on {workers} worker(s): "
+              f"{run['wall']:.1f} s wall = {run['wall'] / drop:.0f} drops (target: 150), CPU {run['cpu']:.1f} s "
+              f"here + {run['workers_cpu']:.1f} s in the workers; {run['verdict'].upper()}: {run['reason']}")
+        for text, seconds in run["split"]:
+            print(f"  {seconds:8.1f} s  {text}")
+        print(load())
+    if len(runs) > 1:
+        (a, ra), (b, rb) = list(runs.items())[:2]
+        print(f"\n{a} workers against {b}: wall ratio {rb['wall'] / ra['wall']:.2f}; verdicts "
+              f"{'the same' if ra['verdict'] == rb['verdict'] else 'DIFFER'} ({ra['verdict']}, {rb['verdict']})")
+
+
+if __name__ == "__main__":
+    main()
