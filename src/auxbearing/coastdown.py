@@ -329,6 +329,17 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     checked: list = []  # each full window's planes since the last stretch
     stopped_at = None
 
+    to_standstill = until_stop and duration is None
+    speed0 = max(abs(float(session.y[cm.OMEGA])), coast.stop_speed)
+
+    def done() -> float:
+        # to standstill: the share of the speed lost (coastdown.max_time is only a bound); else of the time
+
+        if to_standstill:
+            left = (abs(float(session.y[cm.OMEGA])) - coast.stop_speed) / max(speed0 - coast.stop_speed, 1e-300)
+            return min(1.0, max(0.0, 1.0 - left))
+        return min(1.0, session.t / t_end)
+
     def record(mode_code: int) -> None:
         y = session.y
         history.append({"time": session.t, "mode": mode_code, "rotor_speed": float(y[cm.OMEGA]),
@@ -388,7 +399,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         record(0)
         if progress is not None:
             rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
-            progress(min(1.0, session.t / t_end), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
+            progress(done(), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
         checked.append(windows)
         del checked[:-MAX_WINDOWS]  # settled looks back over these at most
         carried = settled(checked)
@@ -415,7 +426,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         verdict, reason = limits.update(temps, session.t)
         record(1)
         if progress is not None:
-            progress(min(1.0, session.t / t_end),
+            progress(done(),
                      f"t = {session.t:.2f} s, {abs(stretch.rotor_speed) * 30 / math.pi:.0f} rpm")
     if verdict == OK and until_stop and stopped_at is None and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
         stopped_at = session.t

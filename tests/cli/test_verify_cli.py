@@ -78,6 +78,17 @@ def test_verify_prints_the_verdict_and_its_reason_first(blower_verified):
 
 
 @pytest.mark.slow
+def test_verify_in_a_log_gives_one_line_a_criterion(blower_verified):
+    # CliRunner's console is 80 columns wide, as a log is: no table wrapped over several lines a criterion
+    out, output = blower_verified
+    criteria = json.loads((out / "verify.json").read_text())["criteria"]
+    lines = output.splitlines()
+    for c in criteria:
+        line = next(x for x in lines if x.lstrip().startswith(("pass ", "FAIL ", "not checked ")) and c["name"] in x)
+        assert line.split()[0] in ("pass", "FAIL", "not")
+
+
+@pytest.mark.slow
 @needs_chromium
 def test_verify_report_loads_every_figure_and_shows_no_paper_number(blower_verified, tmp_path):
     out, _ = blower_verified

@@ -16,6 +16,10 @@ from auxbearing.errors import InputError
 EXIT_STATUS = {"pass": 0, "fail": 1, "incomplete": 3}
 
 
+#: Columns from which the verdict is a table; narrower consoles (a log is 80) get one line a criterion.
+WIDE_TABLE = 110
+
+
 @click.command("verify")
 @click.option("--machine", "machine_spec", required=True, metavar="FILE|NAME",
               help="A machine TOML file or an example machine (`auxbearing machines`).")
@@ -50,7 +54,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
 
     from auxbearing.io import atomic_output_dir, save_dataset, write_json
     from auxbearing.report.verify_figures import build_figures
-    from auxbearing.report.verify_html import render, verdict_reason, verdict_rows
+    from auxbearing.report.verify_html import render, verdict_rows
     from auxbearing.verify.run import verify
 
     if campaign_samples is not None and not 0 <= campaign_samples <= 100000:
@@ -72,7 +76,6 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
 
             result = verify(machine_spec, tmp, specs, quick=quick, samples=campaign_samples, workers=workers,
                             scheduler=scheduler, with_recommendation=not no_recommendation, progress=say)
-        result["reason"] = verdict_reason(result["design"]["criteria"])
         cases = result["design"]["cases"]
         for i, run in enumerate(cases.drops.values()):
             save_dataset(run.dataset, tmp / f"drop_{i}.nc", {"machine": cases.machine.describe()})
@@ -95,7 +98,13 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         table.add_row(*[str(v) for v in row])
     console = Console()
     console.print(f"{result['verdict'].upper()}: {result['reason']}", highlight=False)
-    console.print(table)
+    if console.width >= WIDE_TABLE:
+        console.print(table)
+    else:  # a log or a narrow terminal: one line a criterion instead of a table wrapped over five
+        console.print(f"Verification of {result['machine']}: {result['verdict'].upper()}", highlight=False)
+        for name, required, found, margin, status in rows:
+            console.print(f"  {status:>11}  {name}: {found} against {required}"
+                          + (f" (margin {margin})" if margin != "-" else ""), highlight=False, soft_wrap=True)
     if result["candidates"]:
         console.print("Candidates ranked by worst margin: " + ", ".join(result["ranking"]), highlight=False)
     if result["recommendation"]:

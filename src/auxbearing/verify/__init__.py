@@ -1,1 +1,17 @@
-"""Verification of a machine's touchdown bearings: cases, criteria, candidates, a recommendation."""
+"""Verification of a machine's touchdown bearings: cases, criteria, candidates, a recommendation.
+
+``from auxbearing.verify import verify``: the command line's ``auxbearing verify`` as a function
+(:func:`auxbearing.verify.run.verify`), returning the verdict, the criteria with their margins, the
+candidates and the recommendation as a dict (the command line writes it as verify.json and report.html).
+"""
+
+__all__ = ["verify"]
+
+
+def __getattr__(name: str):
+    # the verification pulls in Dask and the kernels: imported when asked for, not with the package
+    if name == "verify":
+        from auxbearing.verify.run import verify
+
+        return verify
+    raise AttributeError(f"module 'auxbearing.verify' has no attribute {name!r}")

@@ -155,6 +155,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     ranked = sorted([(machine.planes[0].bearing.name + " (the design)", design), *others],
                     key=lambda item: ranking_key(item[1]["criteria"]))
     result["margins"] = MARGINS
+    result["reason"] = _reason(design["criteria"])
     result["candidate_rows"] = [[i + 1, label, d["verdict"], f"{100 * d['worst_margin']:+.1f} %"
                                  if math.isfinite(d["worst_margin"]) else "-",
                                  "; ".join(c.name for c in d["criteria"] if c.passed is False) or "-"]
