@@ -71,6 +71,18 @@ def _client(scheduler: str | None, workers: int | None):
     return Client(cluster), cluster
 
 
+def on_every_worker(client, fn, *args) -> dict:
+    """``fn(*args)`` once on each worker, as tasks pinned to it; {worker address: result}.
+
+    Not ``Client.run``: that is a message with the connection's time limit, and a worker compiling the kernels
+    after a fresh install on a busy machine outlasts it (seen: a legal campaign refused with a timeout). The
+    restriction is loose: a task whose worker died (and came back under a new address) runs on another.
+    """
+    workers = list(client.scheduler_info(n_workers=-1)["workers"])
+    futures = {w: client.submit(fn, *args, workers=[w], allow_other_workers=True, pure=False) for w in workers}
+    return {w: f.result() for w, f in futures.items()}
+
+
 def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = None, workers: int | None = None,
                  progress: Callable[[Progress], None] | None = None) -> dict:
     """Run every sample of ``campaign`` not yet in ``store``; returns counts and timing.
@@ -134,7 +146,7 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
                                        "s; start some (dask worker ADDRESS)") from None
         out["workers"] = len(client.scheduler_info(n_workers=-1)["workers"])
         try:
-            warm = client.run(warm_up, campaign)
+            warm = on_every_worker(client, warm_up, campaign)
         except InputError:
             raise
         except Exception as err:  # nothing can run there: say so in one line instead of failing every sample

@@ -37,11 +37,11 @@ def _load_kernels() -> float:
 @contextmanager
 def verification_cluster(scheduler: str | None, workers: int | None):
     """(executor, scheduler address) for the verification, the local cluster closed at the end."""
-    from auxbearing.campaign.run import _client
+    from auxbearing.campaign.run import _client, on_every_worker
 
     client, local = _client(scheduler, workers)
     try:
-        client.run(_load_kernels)  # once per worker, before the first case
+        on_every_worker(client, _load_kernels)  # once per worker, before the first case
         yield DaskExecutor(client), client.scheduler.address
     finally:
         client.close()
