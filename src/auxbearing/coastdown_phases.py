@@ -16,9 +16,11 @@ from the window's whirl records (:data:`auxbearing.core.watch.WHIRL_FIELDS`) and
 * ``unsettled``: dry whip, a slipping backward whirl, or a window that changes class.
 
 A stretch is handed to the reduced model (:mod:`auxbearing.core.spin`) only when every plane is free,
-rolling, whirling or rattling in every window since the last stretch (at least two), and the mean of their
-loss torques is known to :data:`STATIONARY` (:func:`settled`); that mean is carried. A sliding race stays in full
-dynamics until it rolls: the reduced model has no state for the race's own speed while it is driven.
+rolling, whirling or rattling (rolling and rattling counted alike) in the last :data:`MIN_WINDOWS` to
+:data:`MAX_WINDOWS` windows since the last stretch, and the mean of their loss torques is known to
+:data:`STATIONARY` (:func:`settled`); that mean is carried, with the cube mean of their loads for the
+over-rolling. A sliding race stays in full dynamics until it rolls: the reduced model has no state for the
+race's own speed while it is driven.
 """
 
 from __future__ import annotations
