@@ -334,7 +334,6 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
 
     def done() -> float:
         # to standstill: the share of the speed lost (coastdown.max_time is only a bound); else of the time
-
         if to_standstill:
             left = (abs(float(session.y[cm.OMEGA])) - coast.stop_speed) / max(speed0 - coast.stop_speed, 1e-300)
             return min(1.0, max(0.0, 1.0 - left))
