@@ -31,7 +31,7 @@ study: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks
-	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadgroup --durations=15
+	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadfile --durations=15
 
 quick: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks

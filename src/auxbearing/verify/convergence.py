@@ -4,8 +4,10 @@ The governing criterion is the failing one, or else the one with the smallest ma
 the coast-down) runs again with the integration's relative and absolute tolerances divided by
 :data:`TIGHTER` and, for a coast-down, a reduced-model speed step halved (finer stretches between the
 full-dynamics checks); the governing quantity's change is reported, and a change beyond
-:data:`SETTLED` says the verdict rests on a number the numerics still move. A campaign's probability has
-its confidence interval as its own evidence and is not re-run.
+:data:`SETTLED` says the verdict rests on a number the numerics still move. When a run leaving the model's
+range governs, that run is repeated and the time of its stop compared (a tighter run that stops otherwise,
+or not at all, says so). A campaign's probability has its confidence interval as its own evidence and is
+not re-run.
 """
 
 from __future__ import annotations
@@ -110,6 +112,24 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
 
         def after_of(run):
             return _drop_quantity(c.name, run.summary)
+    elif c.name.startswith("no run leaves the model's range"):
+        # a run that stopped governs: re-run it tighter and compare when it stops (and that it stops alike)
+        stopped = [k for k, run in cases.drops.items() if run.summary["verdict"] != "ok"]
+        if stopped:
+            case, first = stopped[0], cases.drops[stopped[0]]
+            future = executor.submit(run_machine, _tightened(cases.machines[case], False))
+        elif cases.coastdown is not None and cases.coastdown.summary["verdict"] != "ok":
+            case, first = "the coast-down (speed step halved too)", cases.coastdown
+            future = executor.submit(run_coastdown, _tightened(cases.machine, True), first.summary["until_stop"],
+                                     None if first.summary["until_stop"] else first.summary["simulated_s"])
+        else:
+            return lambda: None
+        stop = first.summary["verdict"]
+        before = float(first.summary["simulated_s"])
+        what.update(case=case, unit="s", quantity=f"time of the stop ({stop.replace('_', ' ')})")
+
+        def after_of(run):
+            return float(run.summary["simulated_s"]) if run.summary["verdict"] == stop else None
     else:
         return lambda: None
     what.setdefault("quantity", c.name)
@@ -118,6 +138,11 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
         run = future.result()
         after = after_of(run)
         what.update(as_run=before, tightened=after, verdict=run.summary["verdict"])
+        if after is None and what["quantity"].startswith("time of the stop"):
+            what.update(change=None, settled=False,
+                        note=f"the tighter run ends '{run.summary['verdict']}' instead: the verdict rests on a stop "
+                             "the numerics move")
+            return what
         if before is None or after is None or before == 0.0:
             what.update(change=None, settled=None, note="the tighter run gave no value to compare")
             return what
