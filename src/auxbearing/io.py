@@ -279,15 +279,18 @@ def _owner_is_gone(folder: Path) -> bool:
         pid_number = int(pid)
     except (OSError, ValueError):
         return False  # no marker (not ours, or being made this instant): leave it
-    if host != socket.gethostname():
-        return False
+    return host == socket.gethostname() and not process_alive(pid_number)
+
+
+def process_alive(pid: int) -> bool:
+    """Whether a process of this host runs under ``pid`` (a live one of another user counts)."""
     try:
-        os.kill(pid_number, 0)
+        os.kill(pid, 0)
     except ProcessLookupError:
-        return True
-    except PermissionError:  # a live process of another user
         return False
-    return False
+    except PermissionError:
+        return True
+    return True
 
 
 def remove_stale_scratch(target: str | Path) -> list[Path]:

@@ -243,10 +243,13 @@ def test_scratch_of_a_live_run_is_kept_and_of_a_dead_one_removed(tmp_path):
 
 @pytest.mark.slow
 def test_ctrl_c_leaves_no_folder_and_no_traceback(tmp_path):
-    proc = _subprocess(["drop", "--duration", "1", "--out", "o", "--quiet"], tmp_path)
+    proc = _subprocess(["drop", "--duration", "3", "--out", "o", "--quiet"], tmp_path)
     try:
         assert _wait_for(lambda: _scratch(tmp_path, "o"), 120)
-        time.sleep(0.5)
+        # into the integration (about 6 s of this 3 s drop): an interrupt while the interpreter is still importing
+        # or numba loading a cached kernel can be printed as "Exception ignored" by CPython itself (seen on a
+        # loaded machine, where those last longer); that race is known and not what this test is about
+        time.sleep(3.0)
     finally:
         proc.send_signal(signal.SIGINT)
         _, err = proc.communicate(timeout=120)

@@ -39,6 +39,7 @@ from auxbearing.campaign.config import Campaign
 from auxbearing.campaign.evaluate import COASTDOWN_LIMITS, OUT_OF_RANGE, TIMING, VERDICTS, WHIRL_CODES, output_variables
 from auxbearing.campaign.sampling import Design
 from auxbearing.errors import InputError
+from auxbearing.io import process_alive
 
 ZARR_FORMAT = 2
 #: Attribute that marks a campaign store (its value is the campaign's fingerprint).
@@ -298,16 +299,6 @@ def _lock_owner(lock: Path) -> tuple[str, int, str] | None:
         return None
 
 
-def _alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:  # a live process of another user
-        return True
-    return True
-
-
 @contextlib.contextmanager
 def store_lock(path: str | Path) -> Iterator[Path]:
     """Hold the lock of the store at ``path`` while writing it (module docstring); yields the lock file.
@@ -340,7 +331,7 @@ def store_lock(path: str | Path) -> Iterator[Path]:
         finally:
             draft.unlink(missing_ok=True)
         owner = _lock_owner(lock)
-        if owner is not None and (owner[0] != host or _alive(owner[1])):
+        if owner is not None and (owner[0] != host or process_alive(owner[1])):
             where = "this host" if owner[0] == host else f"host {owner[0]}"
             since = f" since {owner[2]}" if owner[2] else ""
             hint = "" if owner[0] == host else (f"; if that process has ended, delete the lock file '{lock}' by "
