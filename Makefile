@@ -35,7 +35,7 @@ test: $(STAMP)
 
 quick: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks
-	$(TEST_ENV) $(BIN)/python -m pytest -m "not slow"
+	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadfile -m "not slow"
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
