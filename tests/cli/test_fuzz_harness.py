@@ -115,10 +115,37 @@ def _alarm(signum, frame):
     raise _Timeout
 
 
+_WARM: list[bool] = []
+
+
+def warm_kernels() -> None:
+    """Load (or, on a fresh machine, compile) the drop and coast-down kernels once per test process.
+
+    A case's time limit is for the input handling under test; the first compile of the kernels (about a
+    minute of CPU on a fresh machine, longer with two test workers compiling at once) is not part of it.
+    """
+    if _WARM:
+        return
+    from auxbearing.cli.main import cli
+
+    runner = CliRunner()
+    for args in (["drop", "--machine", "paper_rig", "--duration", "0.1 ms", "--quiet"],
+                 ["coastdown", "--machine", "paper_rig", "--duration", "0.01", "--quiet"]):
+        with tempfile.TemporaryDirectory() as scratch:
+            old = os.getcwd()
+            os.chdir(scratch)
+            try:
+                runner.invoke(cli, args, catch_exceptions=True)
+            finally:
+                os.chdir(old)
+    _WARM.append(True)
+
+
 def run_in_process(c: Case, folder: Path, limit: float = IN_PROCESS_LIMIT) -> Outcome:
     """Run a case with click's test runner in ``folder`` (which becomes the working folder)."""
     from auxbearing.cli.main import cli
 
+    warm_kernels()
     write_files(folder, c.files)
     before = snapshot(folder)
     old = os.getcwd()
