@@ -40,7 +40,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from auxbearing import __version__
+from auxbearing import __version__, interrupt
 from auxbearing.ballset import ballset_state
 from auxbearing.coastdown_life import plane_life
 from auxbearing.coastdown_phases import MAX_WINDOWS, integrate_stretch, plane_window, settled, spin_model
@@ -387,6 +387,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         if status == ig.STEP_UNDERFLOW:
             verdict, reason = "integration_failed", f"the integration could not go on at t = {session.t:.4g} s"
             break
+        interrupt.check()
         powers = _window_powers(machine, session.y, ledger, length)
         temps = [net.step(limits.temps[k], _heat_per_node(net, *powers[k]), length) for k, net in enumerate(networks)]
         omega_mean = 0.5 * (omega_start + float(session.y[cm.OMEGA]))

@@ -22,7 +22,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from auxbearing import __version__
+from auxbearing import __version__, interrupt
 from auxbearing.ballset import ballset_state
 from auxbearing.bearing import BearingGeometry, load_bearing
 from auxbearing.core import drive, probes
@@ -146,6 +146,7 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
     verdict = OK
     wall = 0.0
     while True:
+        interrupt.check()  # before every chunk: a Ctrl-C that a library swallowed still stops the run
         start = time.perf_counter()
         status = drive.advance(model.machine, watch, y, duration, settings, memory, grid)
         wall += time.perf_counter() - start

@@ -16,6 +16,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import NamedTuple
 
+from auxbearing import interrupt
 from auxbearing.campaign.config import Campaign
 from auxbearing.campaign.evaluate import evaluate_batch, warm_up
 from auxbearing.campaign.sampling import design
@@ -174,6 +175,7 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
                 finally:
                     future.release()
                 write_batch(store, a, arrays)
+                interrupt.check()  # a Ctrl-C that a Dask callback swallowed
                 new += b - a
                 done += b - a
                 if progress is not None:

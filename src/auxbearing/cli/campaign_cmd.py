@@ -59,6 +59,7 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
     """
     import signal
 
+    from auxbearing import interrupt
     from auxbearing.campaign.config import read_campaign
     from auxbearing.campaign.run import CampaignInterrupted, run_campaign
     from auxbearing.campaign.sampling import balance_note
@@ -69,10 +70,8 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
     campaign = read_campaign(config)
     warn(*campaign.notes, balance_note(campaign))
 
-    def terminate(signum, frame):  # SIGTERM ends like Ctrl-C: the cluster is shut down, the store kept
-        raise KeyboardInterrupt
-
-    previous = signal.signal(signal.SIGTERM, terminate)
+    # SIGTERM ends like Ctrl-C: the cluster is shut down, the store kept
+    previous = signal.signal(signal.SIGTERM, interrupt.handler)
     try:
         with ProgressReporter(f"campaign {campaign.name}", quiet) as reporter:
             result = run_campaign(campaign, store, scheduler, workers,

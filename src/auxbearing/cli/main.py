@@ -66,7 +66,9 @@ class _Group(click.Group):
 
     def invoke(self, ctx: click.Context):
         raw = [*ctx._protected_args, *ctx.args]  # click empties both once the command is found
-        with warnings.catch_warnings():
+        from auxbearing.interrupt import watching
+
+        with warnings.catch_warnings(), watching():
             warnings.showwarning = _one_line_warning
             try:
                 _refuse_empty_paths(self, ctx)
