@@ -29,14 +29,14 @@ from pathlib import Path
 
 import numpy as np
 
-from auxbearing.bearing import read_toml
+from auxbearing.analysis.drop import run_machine
+from auxbearing.bearings.geometry import read_toml
 from auxbearing.campaign.config import apply_sample, campaign_from_mapping
 from auxbearing.campaign.evaluate import evaluate_sample, warm_up
 from auxbearing.campaign.run import cores, run_campaign
 from auxbearing.campaign.sampling import design
 from auxbearing.campaign.store import load_results
-from auxbearing.drop import run_machine
-from auxbearing.machine import machine_from_mapping
+from auxbearing.machine.model import machine_from_mapping
 
 HERE = Path(__file__).resolve().parent
 DEFAULT_CONFIG = HERE.parent / "examples" / "campaign_paper_rig.toml"

@@ -27,8 +27,8 @@ from itertools import pairwise
 
 import numpy as np
 
-from auxbearing.coastdown import run_coastdown
-from auxbearing.machine import read_machine
+from auxbearing.analysis.coastdown import run_coastdown
+from auxbearing.machine.model import read_machine
 
 #: Speed bands of the split, as fractions of the drop speed.
 BANDS = np.array([0.0, 0.25, 0.5, 0.75, 1.0 + 1e-9])

@@ -8,7 +8,7 @@
    recorded time (0.286 s, of which 0.037 s the integration) is printed beside it.
 2. Compilation in a fresh process with an empty numba cache (``NUMBA_CACHE_DIR`` a new temporary
    folder), then the start-up of a second process that loads that cache: import, the drop kernels
-   (``auxbearing.drop._warm_up``), the first ``run_drop`` after them (it compiles or loads what the
+   (``auxbearing.analysis.drop._warm_up``), the first ``run_drop`` after them (it compiles or loads what the
    outputs use), each as wall and CPU time of the process, and the whole process's wall time.
 3. ``auxbearing --help`` and ``auxbearing drop --help``: wall time of the command, best of 5.
 
@@ -37,7 +37,7 @@ DROP_TIMER = """
 import json, sys, time
 import auxbearing
 try:
-    from auxbearing.drop import run_drop
+    from auxbearing.analysis.drop import run_drop
 except ImportError:
     from auxbearing.analysis.drop import run_drop
 run_drop("QJ202")
@@ -57,8 +57,8 @@ import json, time
 def now():
     return time.perf_counter(), time.process_time()
 t0 = now()
-from auxbearing import drop
-from auxbearing.machine import paper_rig
+from auxbearing.analysis import drop
+from auxbearing.machine.model import paper_rig
 t1 = now()
 drop._warm_up(paper_rig().kernel())
 t2 = now()

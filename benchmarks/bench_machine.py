@@ -12,7 +12,7 @@ In one process, on the example machines ``paper_rig`` (one plane) and ``paper_ri
    sqrt(n_finite / n) so that scipy's RMS error norm over all states equals ours over the finite ones
    (the same error test); the same largest step and first step. Its peak contact force comes from its
    dense output on a 1 us grid, refined on a 1 ns grid around the largest value;
-3. ours: ``auxbearing.drop.run_machine(machine, lean=True)`` (everything a campaign asks of a drop),
+3. ours: ``auxbearing.analysis.drop.run_machine(machine, lean=True)`` (everything a campaign asks of a drop),
    and the bare compiled driver ``auxbearing.core.drive.advance`` alone; best of ``--repeats``.
 
 Prints wall times, RHS evaluations, the ratio (target >= 100x), the peak contact force of each (target:
@@ -35,11 +35,11 @@ from pathlib import Path
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from auxbearing.analysis.drop import integrate_machine, run_machine, start_driver
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
-from auxbearing.drop import integrate_machine, run_machine, start_driver
-from auxbearing.machine import read_machine
+from auxbearing.machine.model import read_machine
 from numpy_machine import make_rhs, normal_forces
 
 HERE = Path(__file__).parent
@@ -161,8 +161,8 @@ def heavy_fast_rotor(repeats: int) -> None:
     run_machine(machine, 1e-3)
     wall, _, run = best_of(repeats, lambda: run_machine(machine))
     s = run.summary
-    code = ("import time; t = time.perf_counter(); from auxbearing.drop import run_machine; "
-            "from auxbearing.machine import read_machine; r = run_machine(read_machine('heavy_fast_rotor')); "
+    code = ("import time; t = time.perf_counter(); from auxbearing.analysis.drop import run_machine; "
+            "from auxbearing.machine.model import read_machine; r = run_machine(read_machine('heavy_fast_rotor')); "
             "print(r.summary['verdict'], time.perf_counter() - t)")
     fresh = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     print(f"\nheavy fast rotor: verdict {s['verdict']} at t = {s['simulated_s'] * 1e3:.2f} ms of "

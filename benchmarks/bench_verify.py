@@ -26,8 +26,8 @@ import time
 from itertools import pairwise
 from pathlib import Path
 
-from auxbearing.drop import run_machine
-from auxbearing.machine import read_machine
+from auxbearing.analysis.drop import run_machine
+from auxbearing.machine.model import read_machine
 from auxbearing.verify.run import verify
 
 

@@ -14,18 +14,18 @@ except PackageNotFoundError:  # running from a source tree without installation
     __version__ = "0.0.0+unknown"
 
 _LAZY = {
-    "BearingGeometry": "auxbearing.bearing",
-    "bearing_from_mapping": "auxbearing.bearing",
-    "get_bearing": "auxbearing.bearing",
-    "load_bearing": "auxbearing.bearing",
-    "ConvergenceError": "auxbearing.errors",
-    "InputError": "auxbearing.errors",
-    "Material": "auxbearing.materials",
-    "get_material": "auxbearing.materials",
-    "Machine": "auxbearing.machine",
-    "read_machine": "auxbearing.machine",
-    "run_machine": "auxbearing.drop",
-    "run_drop": "auxbearing.drop",
+    "BearingGeometry": "auxbearing.bearings.geometry",
+    "bearing_from_mapping": "auxbearing.bearings.geometry",
+    "get_bearing": "auxbearing.bearings.geometry",
+    "load_bearing": "auxbearing.bearings.geometry",
+    "ConvergenceError": "auxbearing.common.errors",
+    "InputError": "auxbearing.common.errors",
+    "Material": "auxbearing.bearings.materials",
+    "get_material": "auxbearing.bearings.materials",
+    "Machine": "auxbearing.machine.model",
+    "read_machine": "auxbearing.machine.model",
+    "run_machine": "auxbearing.analysis.drop",
+    "run_drop": "auxbearing.analysis.drop",
 }
 
 __all__ = ["__version__", *sorted(_LAZY)]

@@ -170,7 +170,7 @@ CANDIDATES = [
          files={"m.toml": machine(tables=_WIDE.format(width="11 mm").replace('"35 mm"', '"40 mm"'))}),
     case("cand-option-bore-too-large", "verify --machine m.toml --candidates QJ208 --out v", "--candidates",
          "QJ208", "bore", files={"m.toml": machine()},
-         note="needs verify to call auxbearing.machine_check.check_candidate_seat on --candidates"),
+         note="needs verify to call auxbearing.machine.check.check_candidate_seat on --candidates"),
 ]
 
 NESTING = [

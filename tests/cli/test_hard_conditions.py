@@ -228,7 +228,7 @@ def test_a_killed_run_leaves_scratch_that_the_next_run_removes(tmp_path):
 def test_scratch_of_a_live_run_is_kept_and_of_a_dead_one_removed(tmp_path):
     import socket
 
-    from auxbearing.io import SCRATCH_OWNER, remove_stale_scratch
+    from auxbearing.common.io import SCRATCH_OWNER, remove_stale_scratch
 
     live, dead, foreign = tmp_path / ".o.partial-live", tmp_path / ".o.partial-dead", tmp_path / ".o.partial-x"
     for folder in (live, dead, foreign):

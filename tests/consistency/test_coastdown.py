@@ -11,8 +11,8 @@ from importlib import resources
 
 import pytest
 
-from auxbearing.coastdown import run_coastdown
-from auxbearing.machine import machine_from_mapping, read_machine
+from auxbearing.analysis.coastdown import run_coastdown
+from auxbearing.machine.model import machine_from_mapping, read_machine
 
 
 def _paper_rig(**coastdown):

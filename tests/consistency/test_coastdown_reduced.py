@@ -1,6 +1,6 @@
 """The coast-down's reduced model against full dynamics, on every shipped example and verify candidate.
 
-The reduced model (auxbearing.core.spin, states chosen by auxbearing.coastdown_phases) must reproduce full
+The reduced model (auxbearing.core.spin, states chosen by auxbearing.analysis.coastdown_phases) must reproduce full
 dynamics where it runs: over the same simulated time, the rotor's speed within 2 % (of the speed lost) and
 every part's peak temperature within 2 K, the smallest clearances within 2 % of their change, the damage per
 drop within 2 %. Full dynamics costs 5-10 s of computing per simulated second on these machines, so the
@@ -13,8 +13,8 @@ import math
 
 import pytest
 
-from auxbearing.coastdown import run_coastdown
-from auxbearing.machine import machine_from_mapping, machine_table, read_machine
+from auxbearing.analysis.coastdown import run_coastdown
+from auxbearing.machine.model import machine_from_mapping, machine_table, read_machine
 from auxbearing.verify.designs import candidate_tables
 
 #: Simulated seconds of the comparison in the test suite.

@@ -1,7 +1,7 @@
 """Duplex sets against the single row's statics and closed forms (consistency checks).
 
 * A back-to-back pair without preload under pure axial load: one row carries it, exactly as the single
-  bearing's statics (auxbearing.statics) solve it; with preload, above lift-off, the same with the
+  bearing's statics (auxbearing.analysis.statics) solve it; with preload, above lift-off, the same with the
   shaft's displacement shifted by the preload push.
 * Under pure radial load: the set equals twice one row at the preload's axial displacement.
 * The preload from an axial offset against Harris & Kotzalas (2007, Ch. 7): delta_a = A sin(alpha -
@@ -15,13 +15,13 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.ballset import ballset_params, hertz_tables
+from auxbearing.analysis.life import dynamic_load_rating, static_load_rating
+from auxbearing.analysis.statics import load_distribution
+from auxbearing.bearings.ballset import ballset_params, hertz_tables
 from auxbearing.bearings.duplex import duplex_set, offset_for_preload, row_axial_force
 from auxbearing.bearings.duplex_statics import load_distribution as set_distribution
 from auxbearing.bearings.duplex_statics import set_reaction, solve_set
 from auxbearing.core.ballset import accumulate
-from auxbearing.life import dynamic_load_rating, static_load_rating
-from auxbearing.statics import load_distribution
 
 
 def test_unpreloaded_db_under_axial_load_is_one_row():

@@ -12,11 +12,11 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.ballset import hertz_tables
+from auxbearing.analysis.life import static_load_rating
+from auxbearing.bearings.ballset import hertz_tables
 from auxbearing.bearings.hybrid import hybrid
+from auxbearing.bearings.materials import get_material
 from auxbearing.bearings.ratings import compliance_ratio
-from auxbearing.life import static_load_rating
-from auxbearing.materials import get_material
 
 
 def _etas():

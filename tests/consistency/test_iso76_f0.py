@@ -8,10 +8,10 @@
 import numpy as np
 import pytest
 
-from auxbearing.bearing import BearingGeometry
+from auxbearing.analysis.contact import ball_contact
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.bearings.materials import Material
 from auxbearing.bearings.ratings import ISO76_F0, ISO76_F0_STEP, ISO76_STRESS, f0_exact, static_load_rating_si
-from auxbearing.contact import ball_contact
-from auxbearing.materials import Material
 
 
 def test_table_equals_hertz_at_the_nodes():

@@ -20,7 +20,7 @@ import auxbearing
 
 RUN = """
 from auxbearing import get_bearing
-from auxbearing.statics import load_distribution
+from auxbearing.analysis.statics import load_distribution
 ds = load_distribution(get_bearing("QJ202"), radial=1000.0)
 print(repr(float(ds.radial_displacement[0])))
 """

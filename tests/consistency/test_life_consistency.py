@@ -1,4 +1,4 @@
-"""Self-consistency of auxbearing.life and auxbearing.core.fatigue (identities, not published numbers).
+"""Self-consistency of auxbearing.analysis.life and auxbearing.core.fatigue (identities, not published numbers).
 
 * A bearing under the constant load of its ISO rating (zero-clearance epsilon = 0.5 radial load
   zone, P = F_r) for N revolutions collects N / L10 through the whole drop path: kinematics,
@@ -18,9 +18,16 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
+from auxbearing.analysis.life import (
+    count_cycles,
+    dent_per_drop,
+    drop_damage,
+    dynamic_load_rating,
+    governing,
+    race_constants,
+)
+from auxbearing.analysis.statics import ISO76_BALL_STRESS, SJOVALL_JR_HALF, STRIBECK_CONSTANT
 from auxbearing.core import fatigue as cf
-from auxbearing.life import count_cycles, dent_per_drop, drop_damage, dynamic_load_rating, governing, race_constants
-from auxbearing.statics import ISO76_BALL_STRESS, SJOVALL_JR_HALF, STRIBECK_CONSTANT
 
 
 def stribeck_drop(name, revs=20, samples=20000, pairs_loaded=None, fraction=0.3, mode="cage"):

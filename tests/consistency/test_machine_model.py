@@ -12,14 +12,14 @@ import math
 import numpy as np
 import pytest
 
-from auxbearing.ballset import ballset_params
+from auxbearing.analysis.drop import run_machine
+from auxbearing.analysis.statics import solve_cases
+from auxbearing.bearings.ballset import ballset_params
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
-from auxbearing.drop import run_machine
-from auxbearing.machine import machine_from_mapping, machine_names, read_machine
-from auxbearing.statics import solve_cases
+from auxbearing.machine.model import machine_from_mapping, machine_names, read_machine
 
 G = 9.80665
 

@@ -10,7 +10,7 @@ import pytest
 from scipy.optimize import brentq
 
 from auxbearing import get_bearing
-from auxbearing.ballset import ballset_params, ballset_state
+from auxbearing.bearings.ballset import ballset_params, ballset_state
 from auxbearing.paper import drop_paper as dp
 
 

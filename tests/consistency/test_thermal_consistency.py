@@ -8,9 +8,9 @@ from scipy.integrate import solve_ivp
 from scipy.special import ellipkm1
 
 from auxbearing import get_bearing
+from auxbearing.analysis.thermal import BALLS, HOUSING, INNER_RACE, JOURNAL, OUTER_RACE, build_network
 from auxbearing.core import bearing_friction as bf
 from auxbearing.core import thermal
-from auxbearing.thermal import BALLS, HOUSING, INNER_RACE, JOURNAL, OUTER_RACE, build_network
 
 
 def random_network(seed, n=5):
@@ -136,7 +136,7 @@ def test_vacuum_has_no_convection_and_radiation_is_the_only_exit():
 
 def test_contact_conductance_scales_with_cube_root_of_load():
     """a, b grow as Q^(1/3) at fixed ellipticity and G as the semi-axes, so 8x load doubles G."""
-    from auxbearing.thermal import ball_race_conductance
+    from auxbearing.analysis.thermal import ball_race_conductance
     bearing = get_bearing("QJ202")
     low = ball_race_conductance(bearing, [50.0] * 4, "outer")
     assert ball_race_conductance(bearing, [400.0] * 4, "outer") == pytest.approx(2.0 * low, rel=1e-9)

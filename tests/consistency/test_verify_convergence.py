@@ -7,7 +7,7 @@ same time, and the evidence must say which run, what stopped it and by how much 
 
 import pytest
 
-from auxbearing.machine import machine_table
+from auxbearing.machine.model import machine_table
 from auxbearing.verify.cases import Immediate, collect_cases, plan_cases, submit_cases
 from auxbearing.verify.convergence import convergence
 from auxbearing.verify.criteria import read_criteria

@@ -14,14 +14,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from auxbearing import drop as ad
 from auxbearing import get_bearing
-from auxbearing.ballset import ballset_params, ballset_state
+from auxbearing.analysis import drop as ad
+from auxbearing.bearings.ballset import ballset_params, ballset_state
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
-from auxbearing.machine import planar_machine
+from auxbearing.machine.model import planar_machine
 
 BEARINGS = ("QJ202", "7202")
 

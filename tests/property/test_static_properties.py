@@ -4,9 +4,9 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from auxbearing import ballset as bs
 from auxbearing import get_bearing
-from auxbearing.statics import solve_cases
+from auxbearing.analysis.statics import solve_cases
+from auxbearing.bearings import ballset as bs
 
 QJ202 = get_bearing("QJ202")
 BEARINGS = {

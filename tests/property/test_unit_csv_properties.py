@@ -7,7 +7,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from auxbearing.unit_csv import Column, read_unit_csv
+from auxbearing.common.unit_csv import Column, read_unit_csv
 
 # unit -> SI value of one unit (independent of pint: the definitions of the units)
 FORCE = {"N": 1.0, "kN": 1e3, "mN": 1e-3, "lbf": 4.4482216152605}

@@ -7,7 +7,7 @@ golden.json holds the same case (``static --bearing QJ202 --axial 500 --radial 1
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing import statics as an
+from auxbearing.analysis import statics as an
 
 QJ202 = get_bearing("QJ202")
 

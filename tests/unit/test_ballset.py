@@ -1,13 +1,13 @@
-"""The one ball-set model: the pair kernel (auxbearing.core.ballset) and its array face (auxbearing.ballset)."""
+"""One ball-set model: the pair kernel (auxbearing.core.ballset) and its array face (auxbearing.bearings.ballset)."""
 
 import math
 
 import numpy as np
 import pytest
 
-from auxbearing import ballset as bs
 from auxbearing import get_bearing
-from auxbearing.contact import raceway_contact
+from auxbearing.analysis.contact import raceway_contact
+from auxbearing.bearings import ballset as bs
 from auxbearing.core import ballset as cb
 
 QJ202 = get_bearing("QJ202")

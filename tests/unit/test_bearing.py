@@ -6,8 +6,8 @@ from pathlib import Path
 import pytest
 
 from auxbearing import InputError, get_bearing, load_bearing
-from auxbearing.bearing import bearing_from_mapping, bearing_names
-from auxbearing.materials import get_material, material_names
+from auxbearing.bearings.geometry import bearing_from_mapping, bearing_names
+from auxbearing.bearings.materials import get_material, material_names
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "my_bearing.toml"
 

@@ -9,8 +9,8 @@ import pytest
 from auxbearing.campaign.config import apply_sample, campaign_from_mapping
 from auxbearing.campaign.distributions import Distribution
 from auxbearing.campaign.sampling import design, unit_design
-from auxbearing.errors import InputError
-from auxbearing.machine import machine_from_mapping
+from auxbearing.common.errors import InputError
+from auxbearing.machine.model import machine_from_mapping
 
 
 def base(**campaign):

@@ -17,7 +17,7 @@ from auxbearing.campaign.store import (
     read_attrs,
     write_batch,
 )
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 
 def small(seed=1, samples=6, batch=2, duration="2 ms"):
@@ -29,9 +29,9 @@ def small(seed=1, samples=6, batch=2, duration="2 ms"):
 
 
 def test_verdict_codes_cover_the_drop_verdicts():
-    from auxbearing import drop
+    from auxbearing.analysis import drop
+    from auxbearing.analysis.whirl import BACKWARD, CLASSES
     from auxbearing.core.watch import STOP_NAMES
-    from auxbearing.whirl import BACKWARD, CLASSES
 
     assert set(ev.OUT_OF_RANGE) == set(STOP_NAMES.values())
     for verdict in (drop.OK, drop.STEP_BUDGET, drop.WALL_BUDGET, drop.INTEGRATION_FAILED):
@@ -97,12 +97,12 @@ def test_records_of_refused_and_failing_samples(monkeypatch):
     assert ev.VERDICTS[bad["verdict"]] == "invalid_input"
     assert bad["reason"].startswith("touchdown.0.sliding_friction") and np.isnan(bad["peak_ball_stress"]).all()
 
-    import auxbearing.drop
+    import auxbearing.analysis.drop
 
     def broken(*args, **kwargs):
         raise RuntimeError("boom\nsecond line")
 
-    monkeypatch.setattr(auxbearing.drop, "run_machine", broken)
+    monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", broken)
     record = ev.evaluate_sample(c, [0.0, 0.2])
     assert ev.VERDICTS[record["verdict"]] == "error" and record["reason"] == "RuntimeError: boom second line"
     assert record["sample_time"] >= 0.0
@@ -122,7 +122,7 @@ def test_out_of_range_run_is_a_record_with_its_verdict():
 
 @pytest.mark.slow
 def test_coastdown_campaign_records_heat_and_life(tmp_path):
-    pytest.importorskip("auxbearing.coastdown")
+    pytest.importorskip("auxbearing.analysis.coastdown")
     from auxbearing.campaign.statistics import campaign_statistics
 
     c = campaign_from_mapping({

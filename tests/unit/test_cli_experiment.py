@@ -8,8 +8,8 @@ import pytest
 import xarray as xr
 from click.testing import CliRunner
 
+from auxbearing.analysis.drop import DropCase
 from auxbearing.cli.main import cli
-from auxbearing.drop import DropCase
 from auxbearing.experiment.synth import SensorModel, synthesize, write_csv
 
 

@@ -3,9 +3,9 @@
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.errors import InputError
-from auxbearing.life import _drops_until_a_spot_fills, dent_per_drop
-from auxbearing.machine import machine_from_mapping
+from auxbearing.analysis.life import _drops_until_a_spot_fills, dent_per_drop
+from auxbearing.common.errors import InputError
+from auxbearing.machine.model import machine_from_mapping
 
 MACHINE = {"machine": {"name": "m"}, "rotor": {"mass": "1.48 kg", "polar_inertia": "3.88e-4 kg*m^2",
                                                "speed": "6000 rpm"},

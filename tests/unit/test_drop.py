@@ -7,10 +7,10 @@ import pytest
 import xarray as xr
 
 from auxbearing import InputError, get_bearing
-from auxbearing import drop as ad
-from auxbearing.drop_params import from_mapping, read_config
-from auxbearing.io import save_dataset
-from auxbearing.machine import planar_machine
+from auxbearing.analysis import drop as ad
+from auxbearing.analysis.drop_params import from_mapping, read_config
+from auxbearing.common.io import save_dataset
+from auxbearing.machine.model import planar_machine
 
 QJ202 = get_bearing("QJ202")
 
@@ -68,7 +68,7 @@ def test_a_non_finite_run_ends_with_a_verdict_not_a_hang():
 
 def test_journal_orbit_raises_instead_of_padding_a_failed_run():
     """The driver the experiment fit uses: a failed integration raises (never padded and fitted)."""
-    from auxbearing.errors import ConvergenceError
+    from auxbearing.common.errors import ConvergenceError
 
     machine = planar_machine(QJ202, ad.Rotor(), ad.DropCase(gravity=1e300, duration=1e-3))
     with pytest.raises(ConvergenceError, match="ended with"):

@@ -10,9 +10,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from auxbearing import get_bearing
-from auxbearing.ballset import ballset_params, ballset_state
-from auxbearing.drop import DropCase, Rotor, run_drop
-from auxbearing.errors import InputError
+from auxbearing.analysis.drop import DropCase, Rotor, run_drop
+from auxbearing.bearings.ballset import ballset_params, ballset_state
+from auxbearing.common.errors import InputError
 from auxbearing.experiment.io import read_csv, read_measured, read_netcdf
 from auxbearing.experiment.orbit import (
     Preprocessing,
@@ -24,7 +24,7 @@ from auxbearing.experiment.orbit import (
     preprocess,
 )
 from auxbearing.experiment.run import peak_table
-from auxbearing.machine import planar_machine
+from auxbearing.machine.model import planar_machine
 
 HEADER = "time [s], x [um], y [um], speed [rpm]\n"
 

@@ -1,12 +1,12 @@
-"""A Ctrl-C that a library swallowed still stops the run at its next safe point (auxbearing.interrupt)."""
+"""A Ctrl-C that a library swallowed still stops the run at its next safe point (auxbearing.common.interrupt)."""
 
 import signal
 
 import pytest
 
-from auxbearing import interrupt
-from auxbearing.drop import run_machine
-from auxbearing.machine import read_machine
+from auxbearing.analysis.drop import run_machine
+from auxbearing.common import interrupt
+from auxbearing.machine.model import read_machine
 
 
 def test_a_swallowed_interrupt_stops_the_drop_at_its_next_chunk():

@@ -7,17 +7,17 @@ import math
 
 import pytest
 
-from auxbearing.bearing import get_bearing
-from auxbearing.errors import InputError
-from auxbearing.io import MAX_TOML_DEPTH, nesting_depth, read_toml
-from auxbearing.machine import machine_from_mapping, machine_table, read_machine
-from auxbearing.machine_check import (
+from auxbearing.bearings.geometry import get_bearing
+from auxbearing.common.errors import InputError
+from auxbearing.common.io import MAX_TOML_DEPTH, nesting_depth, read_toml
+from auxbearing.common.units import Quantity
+from auxbearing.machine.check import (
     check_candidate_seat,
     check_machine_document,
     mode_step,
     stiffness_notes,
 )
-from auxbearing.units import Quantity
+from auxbearing.machine.model import machine_from_mapping, machine_table, read_machine
 
 
 def paper() -> dict:
@@ -33,7 +33,7 @@ def refused(data: dict, *words: str) -> str:
 
 
 def test_the_examples_pass_whole():
-    from auxbearing.machine import machine_names
+    from auxbearing.machine.model import machine_names
 
     for name in machine_names():
         data, title, base = machine_table(name)
@@ -160,7 +160,7 @@ def test_stiffness_is_said_before_the_run_and_refused_past_the_budget():
 
 def test_the_reference_says_what_the_reader_does():
     from auxbearing.campaign.config import CAMPAIGN_KEYS
-    from auxbearing.machine_keys import markdown
+    from auxbearing.machine.keys import markdown
 
     text = markdown()
     assert "a bare number there is refused" in text and "a bare number is SI" not in text

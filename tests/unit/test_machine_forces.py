@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
+from auxbearing.analysis.drop_params import DropCase, Rotor
 from auxbearing.core import machine as cm
 from auxbearing.core.probes import plane_diagnostics
-from auxbearing.drop_params import DropCase, Rotor
-from auxbearing.machine import planar_machine
+from auxbearing.machine.model import planar_machine
 
 QJ202 = get_bearing("QJ202")
 P0 = cm.N_ROTOR  # first state of plane 0
@@ -88,7 +88,7 @@ def test_rolling_resistance_brakes_the_race_and_stops_at_rest():
 
 def test_ball_set_force_on_the_race_is_the_shared_kernel():
     """The race feels exactly the resultant of the one ball-set kernel (Eq. 22, NOTES item 4)."""
-    from auxbearing.ballset import ballset_state
+    from auxbearing.bearings.ballset import ballset_state
 
     km = _kernel(gravity=0.0, ball_damping=0.0, rolling_friction=0.0)
     for xb, yb in ((3e-6, -4e-6), (-1e-6, 2e-6), (0.0, -1e-5)):
@@ -105,7 +105,7 @@ def test_free_fall_of_the_journal():
 
 def test_gyroscopic_terms_do_no_work():
     """The tilt equations' J_p Omega terms are orthogonal to the tilt rates (Friswell et al. 2010 Eq. 3.63)."""
-    from auxbearing.machine import read_machine
+    from auxbearing.machine.model import read_machine
 
     km = read_machine("paper_rig_two_planes").with_simulation(gravity=0.0).kernel()
     y = km.y0.copy()

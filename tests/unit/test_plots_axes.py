@@ -8,9 +8,9 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from auxbearing import get_bearing
-from auxbearing.contact import contact_map
+from auxbearing.analysis.contact import contact_map
+from auxbearing.analysis.statics import load_distribution
 from auxbearing.plots import contact, experiment, static
-from auxbearing.statics import load_distribution
 
 LOADS = np.array([0.0, 200.0, 400.0])
 

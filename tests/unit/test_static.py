@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from auxbearing import ConvergenceError, InputError, get_bearing
-from auxbearing import ballset as bs
-from auxbearing import statics as an
+from auxbearing.analysis import statics as an
+from auxbearing.bearings import ballset as bs
 from auxbearing.core import statics as cs
 
 QJ202 = get_bearing("QJ202")

@@ -7,10 +7,10 @@ import pytest
 import xarray as xr
 from click.testing import CliRunner
 
+from auxbearing.analysis.static_cases import case_rows, load_cases, read_load_cases, worst_case
+from auxbearing.analysis.statics import load_distribution, solve_loads
 from auxbearing.cli.main import cli
-from auxbearing.errors import InputError
-from auxbearing.static_cases import case_rows, load_cases, read_load_cases, worst_case
-from auxbearing.statics import load_distribution, solve_loads
+from auxbearing.common.errors import InputError
 
 DUTY = """# duty cycle
 axial [N], radial [kN], moment [N*m]

@@ -7,8 +7,8 @@ import pytest
 from click.testing import CliRunner
 
 from auxbearing.cli.main import cli
-from auxbearing.errors import InputError
-from auxbearing.io import atomic_output_dir
+from auxbearing.common.errors import InputError
+from auxbearing.common.io import atomic_output_dir
 from auxbearing.paper.claims import VERDICTS
 from auxbearing.paper.study_config import load_study_config
 

@@ -14,7 +14,7 @@ import pytest
 from click.testing import CliRunner
 
 from auxbearing.cli.main import cli
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 from auxbearing.paper.study import run_study
 from auxbearing.paper.study_config import default_config, load_study_config
 from auxbearing.report.model import OWN_STUDY, OWN_WITH_PAPER, PAPER_STUDY

@@ -6,10 +6,7 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.core import bearing_friction as bf
-from auxbearing.errors import InputError
-from auxbearing.materials import Material, get_material
-from auxbearing.thermal import (
+from auxbearing.analysis.thermal import (
     BALLS,
     HOUSING,
     INNER_RACE,
@@ -20,6 +17,9 @@ from auxbearing.thermal import (
     natural_convection_coefficient,
     rotating_cylinder_coefficient,
 )
+from auxbearing.bearings.materials import Material, get_material
+from auxbearing.common.errors import InputError
+from auxbearing.core import bearing_friction as bf
 
 QJ202 = get_bearing("QJ202")  # 15 x 35 x 11 mm, 11 balls of 6 mm, 42CrMo rings, GCr15 balls
 
@@ -139,6 +139,6 @@ def test_materials_carry_thermal_data():
 
 
 def test_friction_coefficients_cover_the_bearing_types():
-    from auxbearing.bearing import BEARING_TYPES
+    from auxbearing.bearings.geometry import BEARING_TYPES
     assert set(bf.SKF_FRICTION_COEFFICIENT) == set(BEARING_TYPES)
     assert bf.sliding_friction_power(0.3, 100.0, -20.0) == pytest.approx(600.0)

@@ -6,8 +6,8 @@ does at every point of its search, so the test needs no integration.
 
 from types import SimpleNamespace
 
-import auxbearing.drop
-from auxbearing.machine import machine_table
+import auxbearing.analysis.drop
+from auxbearing.machine.model import machine_table
 from auxbearing.verify.criteria import read_criteria
 from auxbearing.verify.designs import recommend
 
@@ -18,7 +18,7 @@ def _whirling_drop(machine, lean=False, **_):
 
 
 def test_no_passing_geometry_is_no_recommendation(monkeypatch):
-    monkeypatch.setattr(auxbearing.drop, "run_machine", _whirling_drop)
+    monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", _whirling_drop)
     data, name, base = machine_table("paper_rig")
     rec = recommend(data, name, base, read_criteria(None), quick=True)
     assert rec["passes"] is False and rec["worst_margin"] == -1.0
@@ -31,7 +31,7 @@ def test_a_passing_geometry_is_recommended_without_a_note(monkeypatch):
         planes = [{"s0": 5.0, "backward_whirl_onset_ms": None, "shoulder_use": 0.5} for _ in machine.planes]
         return SimpleNamespace(summary={"verdict": "ok", "planes": planes})
 
-    monkeypatch.setattr(auxbearing.drop, "run_machine", calm_drop)
+    monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", calm_drop)
     data, name, base = machine_table("paper_rig")
     rec = recommend(data, name, base, read_criteria(None), quick=True)
     assert rec["passes"] is True and rec["note"] is None and rec["worst_margin"] > 0.0
@@ -47,7 +47,7 @@ def _smooth_drop(machine, lean=False, **_):
 
 
 def test_the_full_search_polishes_the_grid_and_verifies_nothing_it_cannot_build(monkeypatch):
-    monkeypatch.setattr(auxbearing.drop, "run_machine", _smooth_drop)
+    monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", _smooth_drop)
     data, name, base = machine_table("paper_rig")
     rec = recommend(data, name, base, read_criteria({"min_s0": 2.0}), quick=False)
     assert rec["passes"] and rec["evaluations"] > 27  # the 3x3x3 grid, then the Nelder-Mead polish

@@ -1,4 +1,4 @@
-"""Validation of the rainflow counting path of auxbearing.life against ASTM E1049's worked example.
+"""Validation of the rainflow counting path of auxbearing.analysis.life against ASTM E1049's worked example.
 
 Source: ASTM E1049-85 (reapproved 2011), "Standard Practices for Cycle Counting in Fatigue
 Analysis", 5.4.4 rainflow counting, Fig. 6: the load history A..I = -2, 1, -3, 5, -1, 3, -4, 4, -2
@@ -18,7 +18,7 @@ from itertools import pairwise
 import numpy as np
 import pytest
 
-from auxbearing.life import count_cycles
+from auxbearing.analysis.life import count_cycles
 
 HISTORY = [-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0, -2.0]
 ASTM_TABLE = {1: 0.0, 2: 0.0, 3: 0.5, 4: 1.5, 5: 0.0, 6: 0.5, 7: 0.0, 8: 1.0, 9: 0.5, 10: 0.0}

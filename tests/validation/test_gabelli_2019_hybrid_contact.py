@@ -21,9 +21,9 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.ballset import ballset_params
+from auxbearing.analysis.life import dynamic_load_rating, static_load_rating
+from auxbearing.bearings.ballset import ballset_params
 from auxbearing.core.ballset import pair_stress
-from auxbearing.life import dynamic_load_rating, static_load_rating
 
 
 @pytest.mark.parametrize("name", ["6205", "7208", "QJ208", "6320"])

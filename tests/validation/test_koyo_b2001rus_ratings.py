@@ -20,8 +20,8 @@ bearing of the same standard design (observed <= 0.3 %).
 import pytest
 
 from auxbearing import get_bearing
+from auxbearing.analysis.life import dynamic_load_rating
 from auxbearing.core.fatigue import dynamic_load_rating as iso281_rating
-from auxbearing.life import dynamic_load_rating
 
 INCH = 25.4e-3
 # (name, ball diameter [m], pitch diameter [m], Z, KOYO C [N])

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing import statics as an
+from auxbearing.analysis import statics as an
 
 QJ202 = get_bearing("QJ202")
 # Many small balls on a large pitch circle: the discrete ball sums approach Sjovall's integrals.

@@ -29,10 +29,10 @@ import math
 import pytest
 
 from auxbearing import get_bearing
+from auxbearing.analysis.life import dynamic_load_rating
 from auxbearing.bearings.ratings import static_load_rating, static_load_rating_si
 from auxbearing.bearings.series import SKF_RATING_FACTOR, fit_ball_set, published_ratings, series_entries
 from auxbearing.core.fatigue import dynamic_load_rating as iso281_rating
-from auxbearing.life import dynamic_load_rating
 
 INCH = 25.4e-3
 # (name, d, D [m], ball diameter [m], pitch diameter [m], Z, SKF C, SKF C0 [N]): published ball sets

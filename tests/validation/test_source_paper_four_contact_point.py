@@ -31,13 +31,13 @@ import math
 import numpy as np
 import pytest
 
-from auxbearing import drop as ad
 from auxbearing import get_bearing
-from auxbearing import statics as an
-from auxbearing.contact import ball_contact, contact_map, type_comparison
+from auxbearing.analysis import drop as ad
+from auxbearing.analysis import statics as an
+from auxbearing.analysis.contact import ball_contact, contact_map, type_comparison
 from auxbearing.core import hertz
 from auxbearing.core.hertz import line_contact_constant
-from auxbearing.machine import planar_machine
+from auxbearing.machine.model import planar_machine
 from auxbearing.paper import drop_paper as dp
 
 STEEL_207 = 2 * (1 - 0.3**2) / 207e9

@@ -19,7 +19,7 @@ import re
 from dataclasses import dataclass
 from functools import cache
 
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: Words that make a name a hybrid (silicon-nitride balls): "hybrid", or SKF's /HC5 suffix.
 HYBRID_WORDS = ("hybrid", "hc5")
@@ -96,7 +96,7 @@ def resolve_single(base: str, field: str = "bearing"):
     >>> resolve_single("7208 BECBP").name, resolve_single("7202 BEP").name, resolve_single("qj202").name
     ('7208', '7202-40', 'QJ202')
     """
-    from auxbearing.bearing import get_catalogue_entry
+    from auxbearing.bearings.geometry import get_catalogue_entry
     from auxbearing.bearings.series import series_entries
 
     toml = _toml_entries()
@@ -194,8 +194,8 @@ def entries(types=None, bore_range=None) -> list[dict]:
     >>> [r["name"] for r in rows]
     ['QJ208', 'QJ308']
     """
-    from auxbearing.bearing import get_catalogue_entry
     from auxbearing.bearings import ratings
+    from auxbearing.bearings.geometry import get_catalogue_entry
     from auxbearing.bearings.series import series_data, series_entries
     from auxbearing.catalog import bearing_table
 

@@ -35,8 +35,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from auxbearing.bearing import BearingGeometry
-from auxbearing.errors import InputError
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.common.errors import InputError
 
 #: Arrangements and their rows' facing (row at -z, row at +z); see the module notes.
 ARRANGEMENTS: dict[str, tuple[str, tuple[float, float]]] = {
@@ -202,7 +202,7 @@ def row_axial_force(row: BearingGeometry, displacement: float) -> float:
     >>> round(row_axial_force(get_bearing("7208"), 5e-6))
     593
     """
-    from auxbearing.ballset import ballset_params
+    from auxbearing.bearings.ballset import ballset_params
     from auxbearing.core.ballset import accumulate
 
     force = np.zeros(5)
@@ -266,7 +266,7 @@ def duplex_set(row: BearingGeometry, arrangement: str, preload: object = None, s
     (1000, 23.0)
     """
     from auxbearing.bearings.ratings import static_load_rating
-    from auxbearing.units import ureg
+    from auxbearing.common.units import ureg
 
     arrangement = str(arrangement).upper()
     if arrangement not in ARRANGEMENTS:
@@ -310,7 +310,7 @@ def _length(field: str, value: object) -> float:
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         out = float(value)
     else:
-        from auxbearing.units import to_si
+        from auxbearing.common.units import to_si
 
         out = to_si(field, value, "length")
     if not math.isfinite(out) or out < 0.0:

@@ -17,14 +17,14 @@ import math
 import numpy as np
 
 from auxbearing.bearings.duplex import DuplexSet
-from auxbearing.errors import ConvergenceError, InputError
+from auxbearing.common.errors import ConvergenceError, InputError
 
 DEFAULT_TOL = 1e-9
 MAX_ITER = 200
 
 
 def _params(pair: DuplexSet):
-    from auxbearing.ballset import ballset_params
+    from auxbearing.bearings.ballset import ballset_params
 
     return ballset_params(pair.row)
 
@@ -187,7 +187,7 @@ def load_distribution(pair: DuplexSet, axial=0.0, radial=0.0, moment=0.0, tilt: 
                       tol: float = DEFAULT_TOL):
     """Load distribution of both rows under (Fa, Fr, M) on the shaft, one case per broadcast value.
 
-    Loads as :func:`auxbearing.statics.load_distribution` (Fx = Fr, My = -M); numbers in N and N m.
+    Loads as :func:`auxbearing.analysis.statics.load_distribution` (Fx = Fr, My = -M); numbers in N and N m.
 
     Returns
     -------
@@ -206,8 +206,8 @@ def load_distribution(pair: DuplexSet, axial=0.0, radial=0.0, moment=0.0, tilt: 
     import xarray as xr
 
     from auxbearing import __version__
-    from auxbearing.ballset import ballset_state
-    from auxbearing.statics import safety_factor
+    from auxbearing.analysis.statics import safety_factor
+    from auxbearing.bearings.ballset import ballset_state
 
     fa, fr, mm = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, float)) for v in (axial, radial, moment)))
     if tilt not in ("free", "fixed"):

@@ -10,8 +10,8 @@ contact (lower; ISO 20056-2's slightly higher permissible stress was not retriev
 
 from __future__ import annotations
 
-from auxbearing.bearing import BearingGeometry
-from auxbearing.materials import Material, get_material
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.bearings.materials import Material, get_material
 
 #: The ceramic of hybrid bearings (catalogue entry with its source in catalog/materials.toml).
 HYBRID_BALL_MATERIAL = "Si3N4"

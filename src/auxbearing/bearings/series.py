@@ -39,10 +39,10 @@ from dataclasses import dataclass, field
 from functools import cache
 from importlib import resources
 
-from auxbearing.bearing import BearingGeometry
 from auxbearing.bearings import ratings
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.bearings.materials import get_material
 from auxbearing.core import fatigue as cf
-from auxbearing.materials import get_material
 
 #: SKF Explorer over plain ISO 281: SKF C / ISO 281 C of the SKF 6203 (CWRU, 8 x 6.746 mm on 28.50 mm:
 #: 1.0422), 6205 (CWRU, 9 x 7.940 mm on 39.04 mm: 1.0554) and 6206 (eng-tools.dev, 9 x 9.525 mm on 46 mm:

@@ -16,7 +16,7 @@ laid over it (``[drop] duration = "20 ms"`` shortens every run), and::
     low = "0 deg"
     high = "360 deg"
 
-Every mistake is one :class:`~auxbearing.errors.InputError` line naming the key: an unknown table or
+Every mistake is one :class:`~auxbearing.common.errors.InputError` line naming the key: an unknown table or
 key, a dotted key that names nothing, a distribution with impossible parameters, a distribution whose
 bounded support breaks the input's rule, or a central sample that is no valid machine.
 """
@@ -31,10 +31,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from auxbearing.campaign.distributions import Distribution, distribution_from_table, share_outside_rule
-from auxbearing.errors import InputError
-from auxbearing.machine_check import FACE_KEYS, MACHINE_FILE_TABLES, MOUNT_KEYS
-from auxbearing.machine_params import TABLES, TOUCHDOWN_TEXT
-from auxbearing.params import Param, did_you_mean, si_unit, unknown
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import Param, did_you_mean, si_unit, unknown
+from auxbearing.machine.check import FACE_KEYS, MACHINE_FILE_TABLES, MOUNT_KEYS
+from auxbearing.machine.params import TABLES, TOUCHDOWN_TEXT
 
 SAMPLERS = ("sobol", "lhs", "random", "saltelli")
 ANALYSES = ("drop", "coastdown")
@@ -147,7 +147,7 @@ class Campaign:
 
 def read_campaign(path: str | Path) -> Campaign:
     """A campaign from a TOML file (module docstring)."""
-    from auxbearing.io import read_toml
+    from auxbearing.common.io import read_toml
 
     path = Path(path)
     return campaign_from_mapping(read_toml(path), path.stem, path.parent)
@@ -169,8 +169,8 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
     import tomllib
     from importlib import resources
 
-    from auxbearing.io import read_toml
-    from auxbearing.machine import machine_names
+    from auxbearing.common.io import read_toml
+    from auxbearing.machine.model import machine_names
 
     tables: dict = {}
     spec = head.get("machine")
@@ -218,7 +218,7 @@ def resolve_key(key: object, n_planes: int, where: str) -> tuple[str, str, tuple
     >>> resolve_key("touchdown.1.sliding_friction", 1, "campaign.input.0")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: campaign.input.0.key = 'touchdown.1.sliding_friction': names nothing: \
+    auxbearing.common.errors.InputError: campaign.input.0.key = 'touchdown.1.sliding_friction': names nothing: \
 the machine has 1 touchdown plane (touchdown.0)
     """
     if not isinstance(key, str) or not key.strip():
@@ -300,7 +300,7 @@ def apply_sample(tables: dict, inputs: tuple[CampaignInput, ...], values, as_qua
     With ``as_quantity`` the values go in as unit-library quantities (the same conversion and checks,
     without parsing text: what the workers use).
 
-    >>> from auxbearing.machine_params import TABLES
+    >>> from auxbearing.machine.params import TABLES
     >>> from auxbearing.campaign.distributions import Distribution
     >>> phase = CampaignInput("rotor.unbalance_phase", "rotor", "unbalance_phase", (),
     ...                       TABLES["rotor"]["unbalance_phase"], Distribution("uniform", (0.0, 6.0)))
@@ -314,7 +314,7 @@ def apply_sample(tables: dict, inputs: tuple[CampaignInput, ...], values, as_qua
             out.setdefault(inp.section, {})
     out["touchdown"] = [dict(t) for t in tables.get("touchdown", [])]
     if as_quantity:
-        from auxbearing.units import Quantity
+        from auxbearing.common.units import Quantity
     for inp, value in zip(inputs, values, strict=True):
         value = float(value)
         unit = inp.unit
@@ -333,12 +333,12 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     """A checked :class:`Campaign` from the tables of a campaign file (module docstring).
 
     The campaign's machine (the file's machine tables laid over ``campaign.machine``) is checked whole, as
-    every command checks a machine file (:func:`auxbearing.machine_check.check_machine_document`), with the
+    every command checks a machine file (:func:`auxbearing.machine.check.check_machine_document`), with the
     file's own ``[criteria]``, ``[verify]`` and ``[[candidate]]`` tables. ``check_machine=False`` is for that
     check itself, which reads a ``[campaign]`` table of a machine file through this function.
     """
-    from auxbearing.machine import machine_from_mapping
-    from auxbearing.machine_check import check_machine_document, check_tables
+    from auxbearing.machine.check import check_machine_document, check_tables
+    from auxbearing.machine.model import machine_from_mapping
 
     check_tables(data, MACHINE_FILE_TABLES)
     head = data.get("campaign")

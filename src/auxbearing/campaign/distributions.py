@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from auxbearing.errors import InputError
-from auxbearing.params import Param, check, convert, si_unit
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import Param, check, convert, si_unit
 
 #: Parameter keys of each kind (besides ``key`` and ``distribution``), in the order they are held.
 KINDS: dict[str, tuple[str, ...]] = {
@@ -134,7 +134,7 @@ def distribution_from_table(table: dict, param: Param, where: str) -> Distributi
 
     Examples
     --------
-    >>> from auxbearing.machine_params import TABLES
+    >>> from auxbearing.machine.params import TABLES
     >>> d = distribution_from_table({"distribution": "uniform", "low": "0 deg", "high": "360 deg"},
     ...                             TABLES["rotor"]["unbalance_phase"], "campaign.input.0")
     >>> d.kind, round(d.params[1], 4)
@@ -143,7 +143,7 @@ def distribution_from_table(table: dict, param: Param, where: str) -> Distributi
     ...                         TABLES["touchdown"]["sliding_friction"], "campaign.input.1")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: campaign.input.1.std = -0.1: must be > 0
+    auxbearing.common.errors.InputError: campaign.input.1.std = -0.1: must be > 0
     """
     raw_kind = table.get("distribution")
     if not isinstance(raw_kind, str):
@@ -184,7 +184,7 @@ def distribution_from_table(table: dict, param: Param, where: str) -> Distributi
     return Distribution(kind, tuple(numbers[k] for k in names))
 
 
-#: Rules of :mod:`auxbearing.params` as intervals a sampled value must lie in.
+#: Rules of :mod:`auxbearing.common.params` as intervals a sampled value must lie in.
 RULE_RANGES = {"positive": (0.0, math.inf), "optional_positive": (0.0, math.inf),
                "nonnegative": (0.0, math.inf), "optional_nonnegative": (0.0, math.inf), "unit_interval": (0.0, 1.0),
                "tolerance": (0.0, 1e-2), "fraction": (0.0, 1.0)}

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from auxbearing.campaign.config import Campaign, apply_sample
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: The drop's stops at the edge of the model's range (:data:`auxbearing.core.watch.STOP_NAMES`).
 OUT_OF_RANGE = ("journal_contact_overstress", "ball_stress_beyond_elastic", "contact_ellipse_over_shoulder",
@@ -22,11 +22,11 @@ OUT_OF_RANGE = ("journal_contact_overstress", "ball_stress_beyond_elastic", "con
 #: Runs that ended without a result: the two budgets, a failed integration, and the campaign's own two
 #: (a sampled value the machine refuses, an exception in the model).
 FAILED = ("step_budget", "wall_time_budget", "integration_failed", "invalid_input", "error")
-#: A coast-down's own ends (:mod:`auxbearing.coastdown`): the design fails in them, a result.
+#: A coast-down's own ends (:mod:`auxbearing.analysis.coastdown`): the design fails in them, a result.
 COASTDOWN_LIMITS = ("thermal_runaway", "radial_clearance_closed", "internal_clearance_preload")
 #: Verdict codes in the store: 0 is a sample not run yet; the store keeps this list in its attributes.
 VERDICTS = ("pending", "ok", *OUT_OF_RANGE, *FAILED, *COASTDOWN_LIMITS)
-#: Whirl codes: 0 when there is no run; then :data:`auxbearing.whirl.CLASSES` in order.
+#: Whirl codes: 0 when there is no run; then :data:`auxbearing.analysis.whirl.CLASSES` in order.
 WHIRL_CODES = ("unknown", "none", "forward", "backward_rolling", "dry_whip", "backward")
 BACKWARD_CLASSES = ("backward_rolling", "dry_whip", "backward")
 #: Longest reason kept per sample [characters] (reasons are one line).
@@ -60,7 +60,7 @@ WHIRL_OUTPUTS: dict[str, tuple[str, str, str]] = {
     "whirl": ("i1", "", "Whirl class at the end (index into the store's 'whirl_classes' attribute)"),
     "backward_whirl": ("f8", "", "1 when the plane whirls backward at the end or had sustained backward whirl"),
 }
-#: Per-plane outputs of a coast-down (auxbearing.coastdown): name -> (dtype, units, long name, summary key).
+#: Per-plane outputs of a coast-down (auxbearing.analysis.coastdown): name -> (dtype, units, long name, summary key).
 COASTDOWN_PLANE_OUTPUTS: dict[str, tuple[str, str, str, str]] = {
     "max_temperature": ("f8", "degC", "Highest temperature of any part of the plane", "max_temperature_C"),
     "damage_per_drop": ("f8", "", "Fatigue damage of one drop and its coast-down (Miner sum)", "damage_per_drop"),
@@ -92,9 +92,9 @@ def _prepared(campaign: Campaign) -> dict:
     """The campaign's machine tables with every quantity converted once to an SI quantity."""
     key = campaign.fingerprint()
     if key not in _PREPARED:
-        from auxbearing.machine_params import TABLES
-        from auxbearing.params import convert, si_unit
-        from auxbearing.units import Quantity
+        from auxbearing.common.params import convert, si_unit
+        from auxbearing.common.units import Quantity
+        from auxbearing.machine.params import TABLES
 
         def convert_table(section: str, table: dict) -> dict:
             out = dict(table)
@@ -146,7 +146,7 @@ def _record_from_summary(summary: dict, record: dict, n_planes: int) -> None:
 
 
 def _coastdown_record(result, record: dict, n_planes: int) -> None:
-    """Fill a record from a coast-down (``auxbearing.coastdown.run_coastdown``).
+    """Fill a record from a coast-down (``auxbearing.analysis.coastdown.run_coastdown``).
 
     The drop's outputs come from its drop window; the verdict, times and energy audit from the whole run;
     per plane the hottest part, the damage per drop and the drops the limits allow.
@@ -193,7 +193,7 @@ def evaluate_sample(campaign: Campaign, values) -> dict:
     >>> VERDICTS[r["verdict"]], r["reason"][:28]
     ('invalid_input', 'touchdown.0.sliding_friction')
     """
-    from auxbearing.machine import machine_from_mapping
+    from auxbearing.machine.model import machine_from_mapping
 
     start = time.perf_counter()
     record = empty_record(campaign)
@@ -204,11 +204,11 @@ def evaluate_sample(campaign: Campaign, values) -> dict:
         # a campaign's outcome must not depend on how busy the computer is: steps bound its work, not the clock
         machine = machine_from_mapping(tables, campaign.name, base).for_batch()
         if campaign.analysis == "coastdown":
-            from auxbearing.coastdown import run_coastdown
+            from auxbearing.analysis.coastdown import run_coastdown
 
             _coastdown_record(run_coastdown(machine), record, n)
         else:
-            from auxbearing.drop import run_machine
+            from auxbearing.analysis.drop import run_machine
 
             _record_from_summary(run_machine(machine, lean=True).summary, record, n)
     except InputError as err:
@@ -234,8 +234,8 @@ def evaluate_batch(campaign: Campaign, values: np.ndarray) -> dict[str, np.ndarr
 def warm_up(campaign: Campaign) -> float:
     """Load (or compile) the kernels in this process with one short run; seconds spent."""
     start = time.perf_counter()
-    from auxbearing.drop import run_machine
-    from auxbearing.machine import machine_from_mapping
+    from auxbearing.analysis.drop import run_machine
+    from auxbearing.machine.model import machine_from_mapping
 
     base = None if campaign.base is None else Path(campaign.base)
     tables = apply_sample(_prepared(campaign), campaign.inputs,

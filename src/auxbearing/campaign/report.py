@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from auxbearing.campaign.statistics import QUANTILES, campaign_statistics, sample_outputs, verdict_masks
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 PROBABILITIES = ("p_backward_whirl", "p_backward_whirl_at_end", "p_out_of_range", "p_s0_below_required",
                  "p_s0_below_required_or_out_of_range")
@@ -50,7 +50,7 @@ def whirl_map_keys(ds, keys: tuple[str, str] | None) -> tuple[str, str] | None:
 
 def write_report(ds, folder: Path, whirl_map: tuple[str, str] | None = None) -> dict:
     """Write the statistics and figures of a loaded campaign store into ``folder``; returns the statistics."""
-    from auxbearing.io import save_figure, write_json
+    from auxbearing.common.io import save_figure, write_json
     from auxbearing.plots.campaign import plot_histograms, plot_scatter_matrix, plot_whirl_map
 
     keys = whirl_map_keys(ds, whirl_map)

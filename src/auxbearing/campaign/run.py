@@ -16,12 +16,12 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import NamedTuple
 
-from auxbearing import interrupt
 from auxbearing.campaign.config import Campaign
 from auxbearing.campaign.evaluate import evaluate_batch, warm_up
 from auxbearing.campaign.sampling import design
 from auxbearing.campaign.store import pending_batches, prepare_store, store_lock, write_batch
-from auxbearing.errors import InputError
+from auxbearing.common import interrupt
+from auxbearing.common.errors import InputError
 
 #: How long a campaign waits for a scheduler to have its first worker [s].
 WORKER_WAIT = 60.0

@@ -4,7 +4,7 @@ Probabilities carry Wilson score intervals, quantiles percentile-bootstrap inter
 given as Sobol' indices through SALib on a Saltelli design, Spearman rank correlations otherwise.
 
 Backward whirl counts when a plane whirls backward at the end or had sustained backward whirl at some
-time (:mod:`auxbearing.whirl`); ``p_backward_whirl_at_end`` counts the first kind only.
+time (:mod:`auxbearing.analysis.whirl`); ``p_backward_whirl_at_end`` counts the first kind only.
 
 Which runs count: a probability of a drop outcome (backward whirl, s0 below the required value) is
 taken over the runs that ended ``ok``, since a run stopped outside the model's range has no valid

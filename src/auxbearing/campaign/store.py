@@ -38,8 +38,8 @@ import numpy as np
 from auxbearing.campaign.config import Campaign
 from auxbearing.campaign.evaluate import COASTDOWN_LIMITS, OUT_OF_RANGE, TIMING, VERDICTS, WHIRL_CODES, output_variables
 from auxbearing.campaign.sampling import Design
-from auxbearing.errors import InputError
-from auxbearing.io import process_alive
+from auxbearing.common.errors import InputError
+from auxbearing.common.io import process_alive
 
 ZARR_FORMAT = 2
 #: Attribute that marks a campaign store (its value is the campaign's fingerprint).
@@ -50,8 +50,8 @@ DESIGN_CHUNK = 4096
 
 def _display(param) -> tuple[str, float]:
     """Display unit of an input and the factor from SI to it (1 when it has none)."""
-    from auxbearing.params import si_unit
-    from auxbearing.units import Quantity
+    from auxbearing.common.params import si_unit
+    from auxbearing.common.units import Quantity
 
     unit, si = param.display_unit, si_unit(param.dimension)
     if not unit or unit == si or not si:

@@ -26,8 +26,8 @@ def _bore_range(text: str | None):
     """'40', '40 mm', '30-60', '30-60 mm', '30..60mm' -> (low, high) in m; plain numbers are mm."""
     if text is None:
         return None
-    from auxbearing.errors import InputError
-    from auxbearing.units import to_si
+    from auxbearing.common.errors import InputError
+    from auxbearing.common.units import to_si
 
     raw = str(text).strip().replace("..", "-")
     unit = "".join(ch for ch in raw if ch.isalpha()) or "mm"
@@ -53,7 +53,7 @@ def _bore_range(text: str | None):
 def bearings_command(types, bore, sources, as_json):
     """The catalogue command (see the help text)."""
     from auxbearing.bearings.catalogue import entries, parse_type
-    from auxbearing.materials import get_material, material_names
+    from auxbearing.bearings.materials import get_material, material_names
 
     kinds = [parse_type(t) for group in types for t in group.split(",") if t.strip()]
     rows = entries(types=kinds or None, bore_range=_bore_range(bore))

@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option, warn
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: Exit status after Ctrl-C / SIGTERM (128 + SIGINT), as shells report it.
 EXIT_INTERRUPTED = 130
@@ -59,12 +59,12 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
     """
     import signal
 
-    from auxbearing import interrupt
     from auxbearing.campaign.config import read_campaign
     from auxbearing.campaign.run import CampaignInterrupted, run_campaign
     from auxbearing.campaign.sampling import balance_note
     from auxbearing.campaign.statistics import campaign_statistics, headline
     from auxbearing.campaign.store import load_results
+    from auxbearing.common import interrupt
 
     workers = _workers(workers_text, scheduler)
     campaign = read_campaign(config)
@@ -139,7 +139,7 @@ def campaign_report_command(store, out_dir, whirl_map, as_json):
     from auxbearing.campaign.report import whirl_map_keys, write_report
     from auxbearing.campaign.statistics import headline
     from auxbearing.campaign.store import load_results
-    from auxbearing.io import atomic_output_dir
+    from auxbearing.common.io import atomic_output_dir
 
     ds = load_results(store)
     whirl_map_keys(ds, tuple(whirl_map) if whirl_map else None)  # a wrong key fails before anything is written

@@ -12,7 +12,7 @@ import click
 
 from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option, option_named, warn
 from auxbearing.cli.drop_checks import MAX_BALL_CONTACTS
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 
 @click.command("coastdown")
@@ -45,17 +45,17 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     from rich.console import Console
     from rich.table import Table
 
+    from auxbearing.analysis.coastdown import run_coastdown
+    from auxbearing.analysis.coastdown_life import cycles_of_worst_contact
     from auxbearing.cli.drop_checks import (
         check_ball_contacts,
         machine_input_names,
         plausibility,
         stiffness_warnings,
     )
-    from auxbearing.coastdown import run_coastdown
-    from auxbearing.coastdown_life import cycles_of_worst_contact
-    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
-    from auxbearing.machine import read_machine
-    from auxbearing.units import to_si
+    from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.common.units import to_si
+    from auxbearing.machine.model import read_machine
 
     with option_named("--machine", "machine"), option_named("--machine", "file", value=machine_spec):
         machine = read_machine(machine_spec)

@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 
 from auxbearing.catalog import bearing_names
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 
 class BudgetExceeded(RuntimeError):
@@ -50,7 +50,7 @@ def json_option():
 
 def checked_out_dir(ctx: click.Context, param: click.Parameter, value: Path | None) -> Path | None:
     """Click callback: refuse an output folder that cannot be made before the command does any work."""
-    from auxbearing.io import check_output_dir
+    from auxbearing.common.io import check_output_dir
 
     # An InputError here reaches the group's one-line handler (click parses inside Group.invoke).
     return None if value is None else check_output_dir(value, max(param.opts, key=len))
@@ -73,7 +73,7 @@ def out_option(default: str):
 
 def quantity(field: str, text: str | None, dimension: str, default_unit: str | None = None) -> float | None:
     """A command-line value with an optional unit, in SI (None stays None)."""
-    from auxbearing.units import to_si
+    from auxbearing.common.units import to_si
 
     if text is None:
         return None
@@ -82,12 +82,12 @@ def quantity(field: str, text: str | None, dimension: str, default_unit: str | N
 
 def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: str | None = None,
                     option: str = "--bearing"):
-    """Load a bearing (a :class:`~auxbearing.bearing.BearingGeometry`) and apply the common overrides.
+    """Load a bearing (a :class:`~auxbearing.bearings.geometry.BearingGeometry`) and apply the common overrides.
 
     Errors name the options as typed (``option``, ``--contact-angle``, ``--groove-ratio``) with the values as typed.
     """
-    from auxbearing.bearing import load_bearing
-    from auxbearing.units import to_si
+    from auxbearing.bearings.geometry import load_bearing
+    from auxbearing.common.units import to_si
 
     bearing = load_bearing(spec, option)
     changes: dict = {}
@@ -114,7 +114,7 @@ def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: s
 
 def echo_json(obj: object) -> None:
     """Print a JSON document."""
-    from auxbearing.io import dumps
+    from auxbearing.common.io import dumps
 
     click.echo(dumps(obj))
 

@@ -16,7 +16,7 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: Default budget of a contact sweep: grid points (contact angles x groove ratios). Each point holds 14
 #: numbers and the figures draw every one, so 250 000 points are ~30 MB and a few seconds.
@@ -59,8 +59,8 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.contact import ball_contact, ellipse_checks
-    from auxbearing.statics import stress_warning
+    from auxbearing.analysis.contact import ball_contact, ellipse_checks
+    from auxbearing.analysis.statics import stress_warning
     bearing = resolve_bearing(bearing_spec, contact_angle, groove_ratio)
     load = _ball_load(ball_load)
     result = ball_contact(bearing, load, method=method)
@@ -109,8 +109,8 @@ def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, max
     """
     import numpy as np
 
-    from auxbearing.contact import PAPER_CONTACT, contact_map, type_comparison
-    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.analysis.contact import PAPER_CONTACT, contact_map, type_comparison
+    from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
     bearing = resolve_bearing(bearing_spec)
     load = _ball_load(ball_load)
@@ -152,7 +152,7 @@ def _grid(name: str, triple: tuple[float, float, float], valid, rule: str, budge
     """START..STOP by STEP, checked, never past STOP; its length is known before anything is allocated."""
     import numpy as np
 
-    from auxbearing.contact import sweep_grid
+    from auxbearing.analysis.contact import sweep_grid
 
     start, stop, step = triple
     typed = " ".join(f"{v:g}" for v in triple)
@@ -173,7 +173,7 @@ def _points_outside_hertz(bearing, ds) -> int:
     """Grid points whose ellipse is as large as the ball or reaches past the shoulder (as in :func:`ellipse_checks`)."""
     import numpy as np
 
-    from auxbearing.machine import SHOULDER_FRACTION
+    from auxbearing.machine.model import SHOULDER_FRACTION
 
     a = ds["semi_major"].values  # race x angle x ratio
     groove = ds["groove_ratio"].values[None, None, :] * bearing.ball_diameter

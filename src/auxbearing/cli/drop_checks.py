@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from auxbearing.cli.common import BudgetExceeded
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: Default budget of ball contact pairs (balls x pairs) per touchdown plane of a drop. Every integration step
 #: evaluates each pair; the paper's QJ202 has 22 and a 0.15 s drop takes ~0.5 s, while 12 000 pairs (6000 balls)
@@ -47,9 +47,9 @@ def check_budget(machine, duration: float, blame: str, raise_with: str) -> None:
 def stiffness_warnings(machine, duration: float, prefix: str = "", names: dict | None = None) -> list[str]:
     """Warnings for a stiff run, said before it starts; a refusal when it cannot fit its step budget.
 
-    :func:`auxbearing.machine_check.stiffness_notes` with each sentence prefixed (``"--machine = 'm.toml': "``).
+    :func:`auxbearing.machine.check.stiffness_notes` with each sentence prefixed (``"--machine = 'm.toml': "``).
     """
-    from auxbearing.machine_check import stiffness_notes
+    from auxbearing.machine.check import stiffness_notes
 
     try:
         return [prefix + note for note in stiffness_notes(machine, duration, names)]
@@ -68,10 +68,10 @@ def plausibility(machine, typed: dict) -> list[str]:
     """Warnings for legal inputs whose results would mean little (``typed`` names each input).
 
     An unbalance beyond the clearance, a clearance large against the journal; a line-contact constant no
-    material has is refused (:class:`~auxbearing.errors.InputError`).
+    material has is refused (:class:`~auxbearing.common.errors.InputError`).
     """
     from auxbearing.core.hertz import line_contact_constant
-    from auxbearing.machine import JOURNAL_COMPLIANCE
+    from auxbearing.machine.model import JOURNAL_COMPLIANCE
 
     notes = []
     rotor = machine.rotor
@@ -151,7 +151,7 @@ def sink_check(bearing, machine, case_ball_constant, typed: str) -> None:
     """Refuse a ball constant under which the rotor's weight alone would sink the race into its balls."""
     import numpy as np
 
-    from auxbearing.statics import SINK_LIMIT_FRACTION, sink_estimate
+    from auxbearing.analysis.statics import SINK_LIMIT_FRACTION, sink_estimate
 
     if case_ball_constant is None:
         return
@@ -168,7 +168,7 @@ def race_sink_warning(ds, bearing) -> str | None:
     """A sentence when the race moved into its balls further than an elastic steel contact can (planar view)."""
     import numpy as np
 
-    from auxbearing.statics import SINK_WARNING_FRACTION
+    from auxbearing.analysis.statics import SINK_WARNING_FRACTION
 
     moved = float(np.max(np.hypot(ds["race_x"].values - ds["ring_x"].values,
                                   ds["race_y"].values - ds["ring_y"].values), initial=0.0))

@@ -1,8 +1,8 @@
 """``auxbearing drop``, ``auxbearing machines`` and ``auxbearing drop-compare``.
 
 ``drop --machine FILE_OR_NAME`` runs a machine (rigid rotor on one or two touchdown planes,
-:mod:`auxbearing.machine`); without it, ``drop`` runs the source paper's planar drop (Sec. II.D,
-Fig. 9-11), whose rotor and drop parameters of :data:`auxbearing.drop_params.PARAMETERS` are options
+:mod:`auxbearing.machine.model`); without it, ``drop`` runs the source paper's planar drop (Sec. II.D,
+Fig. 9-11), whose rotor and drop parameters of :data:`auxbearing.analysis.drop_params.PARAMETERS` are options
 (generated from that table, so help, unit and default cannot drift apart) and keys of the
 ``[rotor]`` / ``[drop]`` tables of a ``--config`` TOML file; options win over the file. Heavy
 libraries are imported inside the commands, so ``--help`` answers at once.
@@ -16,6 +16,7 @@ from pathlib import Path
 
 import click
 
+from auxbearing.analysis.drop_params import PARAMETERS, Param, check, convert, display_value
 from auxbearing.cli.common import (
     ProgressReporter,
     bearing_option,
@@ -41,8 +42,7 @@ from auxbearing.cli.drop_checks import (
     sink_check,
     stiffness_warnings,
 )
-from auxbearing.drop_params import PARAMETERS, Param, check, convert, display_value
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: Option names that differ from the parameter key ("--friction" is the issue's name for mu_1).
 _OPTION_NAMES = {
@@ -102,7 +102,7 @@ def quiet_option():
 
 def build_inputs(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
     """Bearing, Rotor and DropCase from catalogue/TOML/options (options win); errors name options as typed."""
-    from auxbearing.drop_params import DropCase, Rotor, read_config
+    from auxbearing.analysis.drop_params import DropCase, Rotor, read_config
 
     if config is None:
         bearing, rotor_kw, drop_kw = None, {}, {}
@@ -150,7 +150,7 @@ def _options_as_typed(params: dict):
 
 def paper_machine(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
     """The paper's drop as :func:`build_inputs` gives it and its machine, built before any work is done."""
-    from auxbearing.machine import planar_machine
+    from auxbearing.machine.model import planar_machine
 
     bearing, rotor, case = build_inputs(ctx, bearing_spec, config, params)
     with _options_as_typed(params):
@@ -210,7 +210,7 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_conta
     """
     wall = None
     if max_wall_time is not None:
-        from auxbearing.units import to_si
+        from auxbearing.common.units import to_si
 
         wall = to_si("--max-wall-time", max_wall_time, "time", "s")
         if not 0.0 < wall <= 1e6:
@@ -244,10 +244,10 @@ def _paper_drop(ctx, bearing_spec, config, params, wall, max_contacts, out_dir, 
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.drop import run_drop
-    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.analysis.drop import run_drop
+    from auxbearing.analysis.statics import stress_warning
+    from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.paper.drop_paper import PAPER_DROP
-    from auxbearing.statics import stress_warning
 
     bearing, rotor, case, machine = paper_machine(ctx, bearing_spec, config, params)
     blame = next((f"--{_option_name(p)} = {params[(p.section, p.key)]!r}" for p in PARAMETERS
@@ -317,10 +317,10 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.drop import run_machine
-    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
-    from auxbearing.machine import read_machine
-    from auxbearing.units import to_si
+    from auxbearing.analysis.drop import run_machine
+    from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.common.units import to_si
+    from auxbearing.machine.model import read_machine
 
     with option_named("--machine", "machine"), option_named("--machine", "file", value=spec):
         machine = read_machine(spec)
@@ -389,7 +389,7 @@ def machines_command(as_json):
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.machine import machine_names, read_machine
+    from auxbearing.machine.model import machine_names, read_machine
 
     rows = []
     for name in machine_names():
@@ -462,7 +462,7 @@ def drop_compare_command(ctx, config, params, bearings, clearances, frictions, p
     from auxbearing.paper.drop_paper import PAPER_DROP, drop_compare
 
     if config is not None:
-        from auxbearing.bearing import read_toml
+        from auxbearing.bearings.geometry import read_toml
 
         if "bearing" in read_toml(config, "--config"):
             raise InputError.for_field("--config", str(config), "its [bearing] table does not apply: drop-compare "

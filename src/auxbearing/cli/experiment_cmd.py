@@ -15,11 +15,11 @@ import click
 
 from auxbearing.catalog import bearing_names
 from auxbearing.cli.common import echo_json, json_option, option_named, out_option, quantity, resolve_bearing, warn
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 
 def _offset(text: str) -> str | tuple[float, float]:
-    from auxbearing.units import to_si
+    from auxbearing.common.units import to_si
     if text in ("auto", "fit", "start"):
         return text
     parts = text.split(",")
@@ -48,8 +48,8 @@ def _positive(option: str, text: str | None, dimension: str, unit: str) -> float
 
 def _units(items: tuple[str, ...]) -> dict[str, str]:
     """``--unit CHANNEL=UNIT`` items, each channel known and each unit of its channel's dimension."""
+    from auxbearing.common.unit_csv import unit_scale
     from auxbearing.experiment.io import CHANNELS, channel_name
-    from auxbearing.unit_csv import unit_scale
 
     out = {}
     for item in items:
@@ -105,13 +105,13 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from auxbearing.drop import DropCase, Rotor, read_config
+    from auxbearing.analysis.drop import DropCase, Rotor, read_config
+    from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.common.units import to_si
     from auxbearing.experiment.fit import FitOptions
     from auxbearing.experiment.io import read_measured
     from auxbearing.experiment.orbit import Preprocessing
     from auxbearing.experiment.run import run_experiment
-    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
-    from auxbearing.units import to_si
     unit_map = _units(units)
     cfg_bearing, rotor_kw, drop_kw = None, {}, {}
     if config is not None:
@@ -162,7 +162,7 @@ def _frequency(text: str) -> float:
     """A cutoff frequency in Hz ('8 kHz', '8000'); units.SI_UNITS has no frequency, so pint directly."""
     import pint
 
-    from auxbearing.units import ureg
+    from auxbearing.common.units import ureg
     try:
         q = ureg.Quantity(text.strip())
         value = float(q.to("Hz").magnitude) if isinstance(q, pint.Quantity) and not q.dimensionless else float(

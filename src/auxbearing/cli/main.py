@@ -15,7 +15,7 @@ import warnings
 import click
 
 from auxbearing.cli.common import BudgetExceeded
-from auxbearing.errors import ConvergenceError, InputError
+from auxbearing.common.errors import ConvergenceError, InputError
 
 EXIT_USER_ERROR = 2
 
@@ -66,7 +66,7 @@ class _Group(click.Group):
 
     def invoke(self, ctx: click.Context):
         raw = [*ctx._protected_args, *ctx.args]  # click empties both once the command is found
-        from auxbearing.interrupt import watching
+        from auxbearing.common.interrupt import watching
 
         with warnings.catch_warnings(), watching():
             warnings.showwarning = _one_line_warning

@@ -18,9 +18,9 @@ from auxbearing.cli.common import (
     resolve_bearing,
     warn,
 )
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
-#: The choices of :data:`auxbearing.statics.AXIAL_CONDITIONS` and ``TILT_CONDITIONS``, repeated here so that
+#: The choices of :data:`auxbearing.analysis.statics.AXIAL_CONDITIONS` and ``TILT_CONDITIONS``, repeated here so that
 #: ``--help`` needs no numerics (a test keeps them equal).
 AXIAL_CONDITIONS = ("free", "located")
 TILT_CONDITIONS = ("free", "fixed")
@@ -64,7 +64,7 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.statics import (
+    from auxbearing.analysis.statics import (
         load_distribution,
         summary,
         validity_warnings,
@@ -187,8 +187,7 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
     from rich.table import Table
 
     from auxbearing import __version__
-    from auxbearing.io import atomic_output_dir, save_dataset, write_json
-    from auxbearing.static_cases import (
+    from auxbearing.analysis.static_cases import (
         FIVE_DOF,
         RESULT_COLUMNS,
         case_rows,
@@ -197,6 +196,7 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
         worst_case,
         write_rows_csv,
     )
+    from auxbearing.common.io import atomic_output_dir, save_dataset, write_json
     bearing = resolve_bearing(bearing_spec)
     data, lines = read_load_cases(loads_path, field="--loads", max_cases=max_cases)
     n = len(lines)
@@ -255,13 +255,15 @@ def _blame(typed: dict, loads: dict, ball_constant: str | None) -> str:
 
 
 def _refuse_sinking(bearing, loads, ball_constant, blame) -> None:
-    """Refuse load cases no elastic contact can carry, before any solve (:func:`auxbearing.statics.sink_estimate`).
+    """Refuse load cases no elastic contact can carry, before any solve.
+
+    The estimate is :func:`auxbearing.analysis.statics.sink_estimate`.
 
     ``blame(k)`` says which input of case k to name.
     """
     import numpy as np
 
-    from auxbearing.statics import SINK_LIMIT_FRACTION, sink_estimate
+    from auxbearing.analysis.statics import SINK_LIMIT_FRACTION, sink_estimate
 
     sink = sink_estimate(bearing, loads, ball_constant)
     limit = SINK_LIMIT_FRACTION * bearing.ball_diameter
@@ -277,7 +279,7 @@ def _sink_warning(bearing, ds, case: int) -> str | None:
     """A sentence when the solved rings moved further into the balls than an elastic steel contact can."""
     import math
 
-    from auxbearing.statics import SINK_WARNING_FRACTION
+    from auxbearing.analysis.statics import SINK_WARNING_FRACTION
 
     c = ds.isel(case=case)
     moved = math.hypot(float(c["axial_displacement"]), math.hypot(float(c["displacement_x"]),

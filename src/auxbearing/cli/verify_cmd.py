@@ -10,7 +10,7 @@ from pathlib import Path
 import click
 
 from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: Exit status by verdict (2 is bad input, as for every command): a script can gate on it.
 EXIT_STATUS = {"pass": 0, "fail": 1, "incomplete": 3}
@@ -52,7 +52,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.io import atomic_output_dir, save_dataset, write_json
+    from auxbearing.common.io import atomic_output_dir, save_dataset, write_json
     from auxbearing.report.verify_figures import build_figures
     from auxbearing.report.verify_html import render, verdict_rows
     from auxbearing.verify.run import verify

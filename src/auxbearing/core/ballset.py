@@ -28,7 +28,7 @@ coefficients with sigma_max = C(alpha) Q^(1/3) (Eq. 4-8) and the semi-major-axis
 a = c_a(alpha) Q^(1/3) (Eq. 4) depend on the loaded contact angle. They are tabulated on |alpha| in
 [0, 90] deg with their slopes and read by cubic Hermite interpolation (:func:`table`), so the
 Newton Jacobian is continuous. The tables are built outside the core
-(:func:`auxbearing.ballset.ballset_params`).
+(:func:`auxbearing.bearings.ballset.ballset_params`).
 """
 
 from __future__ import annotations
@@ -131,7 +131,7 @@ def pair(sign, axial, radial, bs, pd, need_angle):
     Examples
     --------
     >>> from auxbearing import get_bearing
-    >>> from auxbearing.ballset import ballset_params
+    >>> from auxbearing.bearings.ballset import ballset_params
     >>> bs = ballset_params(get_bearing("QJ202"))
     >>> q, alpha, *_ = pair(1.0, 0.0, 5e-6, bs, 0.0, False)
     >>> round(q, 3), round(math.degrees(alpha), 3)
@@ -172,7 +172,7 @@ def pair_stress(q, alpha, bs):
     Examples
     --------
     >>> from auxbearing import get_bearing
-    >>> from auxbearing.ballset import ballset_params
+    >>> from auxbearing.bearings.ballset import ballset_params
     >>> s_i, s_o = pair_stress(610.4, math.radians(35.0), ballset_params(get_bearing("QJ202")))
     >>> round(s_i / 1e6, 1), round(s_o / 1e6, 1)
     (2610.2, 2186.2)

@@ -2,7 +2,7 @@
 
 The source paper's drop (Sec. II.D, Eq. 17-26, read as docs/paper_notes.md items 1-9) is the
 planar special case: one plane at the mass centre with tilt and axial motion locked. Everything is
-SI; the packing of user inputs into the NamedTuples below happens in :mod:`auxbearing.machine`.
+SI; the packing of user inputs into the NamedTuples below happens in :mod:`auxbearing.machine.model`.
 
 Rotor (a rigid body, small tilts; Friswell, Penny, Garvey & Lees, *Dynamics of Rotating Machines*,
 2010, Sec. 3.5, Eq. 3.63-3.66 for the gyroscopic rigid rotor). Generalised coordinates are the
@@ -441,7 +441,7 @@ def rhs(t, y, m, out):
 
     Examples
     --------
-    >>> from auxbearing.machine import paper_rig
+    >>> from auxbearing.machine.model import paper_rig
     >>> from auxbearing.core.machine import N_STATE, VY
     >>> import numpy as np
     >>> model = paper_rig().kernel()

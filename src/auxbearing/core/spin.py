@@ -1,6 +1,6 @@
 """The coast-down's reduced model: the spin speeds of rotor and races under the losses a window measured (SI).
 
-A settled stretch of a coast-down (:mod:`auxbearing.coastdown_phases` says which states qualify) keeps
+A settled stretch of a coast-down (:mod:`auxbearing.analysis.coastdown_phases` says which states qualify) keeps
 only the slow quantities: the rotor's spin speed Omega, each race's spin speed and the energy integrals.
 Each touchdown plane is either *coupled* to the rotor (its race rolls on the journal, so
 w_race = rho Omega with the ratio rho the last window measured: rolling without slip, rho = r/R, or a

@@ -342,7 +342,7 @@ def solve_batch(loads, free, params, guesses, use_guess, tol, max_iter):
     --------
     >>> import numpy as np
     >>> from auxbearing import get_bearing
-    >>> from auxbearing.ballset import ballset_params
+    >>> from auxbearing.bearings.ballset import ballset_params
     >>> u, res, its, status = solve_batch(np.array([[500.0, 1000.0, 0.0, 0.0, 0.0]]), np.ones(5, np.bool_),
     ...                                   ballset_params(get_bearing("QJ202")), np.zeros((1, 5)), False, 1e-9, 100)
     >>> int(status[0]), round(float(u[0, 1]) * 1e6, 2)

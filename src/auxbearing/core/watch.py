@@ -8,7 +8,7 @@
 * contact onsets (impacts) and the first contact time, by bisection on the dense output;
 * whirl windows: per plane, the turning of the journal about the bearing centre, its mean radius,
   the contact time, the mean contact force and the spin speeds, integrated over windows of fixed
-  length (bounded memory, whatever the run's length) and classified by :mod:`auxbearing.whirl`;
+  length (bounded memory, whatever the run's length) and classified by :mod:`auxbearing.analysis.whirl`;
 * the model's range, :class:`~auxbearing.core.machine.Limits` (a run that leaves it stops; the
   code, plane, time and value are kept): a journal contact force whose peak pressure passes the journal
   and race material's limit (the conformal contact of :func:`auxbearing.core.hertz.journal_contact`),

@@ -2,7 +2,7 @@
 
 The paper (Sec. III) blames the gap between its measured and simulated stress partly on "the
 angle of imbalance eccentricity at the moment of dropping" and on unknown parameters. Here the
-simulation of :mod:`auxbearing.drop` (:func:`~auxbearing.drop.journal_orbit` and
+simulation of :mod:`auxbearing.analysis.drop` (:func:`~auxbearing.analysis.drop.journal_orbit` and
 :func:`run_drop`) is made to match the measurement by least squares:
 
 * parameters: sliding friction mu_1, clearance s, unbalance phase at the drop, and (nuisance)
@@ -33,11 +33,11 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
-from auxbearing.bearing import BearingGeometry
-from auxbearing.drop import DropCase, Rotor, journal_orbit, run_drop
-from auxbearing.errors import InputError
+from auxbearing.analysis.drop import DropCase, Rotor, journal_orbit, run_drop
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.common.errors import InputError
 from auxbearing.experiment.orbit import lowpass
-from auxbearing.machine import planar_machine
+from auxbearing.machine.model import planar_machine
 
 #: Fitted parameters: (name, unit shown, factor SI -> shown, central-difference step [SI]).
 FIT_PARAMETERS = (
@@ -77,7 +77,7 @@ def simulate_states(bearing: BearingGeometry, rotor: Rotor, case: DropCase, dura
                     step: float) -> np.ndarray:
     """Journal centre (x, y) on the grid k * step, 0 <= k * step <= duration (short runs for the fit) [m].
 
-    The one drop driver (:func:`auxbearing.drop.journal_orbit`) without the Dataset that
+    The one drop driver (:func:`auxbearing.analysis.drop.journal_orbit`) without the Dataset that
     :func:`run_drop` builds; a simulation that fails raises instead of being padded and fitted.
     """
     return journal_orbit(planar_machine(bearing, rotor, replace(case, duration=duration)), duration, step)

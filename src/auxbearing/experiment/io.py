@@ -25,12 +25,12 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from auxbearing.errors import InputError
-from auxbearing.io import existing_file
-from auxbearing.params import with_article
-from auxbearing.unit_csv import MAX_MAGNITUDE, Column, read_unit_csv, unit_scale
+from auxbearing.common.errors import InputError
+from auxbearing.common.io import existing_file
+from auxbearing.common.params import with_article
+from auxbearing.common.unit_csv import MAX_MAGNITUDE, Column, read_unit_csv, unit_scale
 
-#: Dimension of each channel (keys of :data:`auxbearing.units.SI_UNITS`), required or not.
+#: Dimension of each channel (keys of :data:`auxbearing.common.units.SI_UNITS`), required or not.
 CHANNELS = {"time": ("time", True), "x": ("length", True), "y": ("length", True),
             "speed": ("angular_speed", False)}
 _ALIASES = {"t": "time", "omega": "speed", "rpm": "speed", "spin": "speed"}

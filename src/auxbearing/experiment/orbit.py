@@ -11,7 +11,7 @@ module is our reading, built on the same models as the drop simulation (Sec. II.
 2. orbit -> force -> stress (:func:`contact_from_orbit`): the journal's excursion beyond the
    clearance circle, e = |O| - s, is shared in series by the rotor/race line contact
    (F = K_l delta^(10/9), Eq. 19, Palmgren's K_l) and the ball set carrying the race
-   (:func:`auxbearing.ballset.ballset_state`, Eq. 10-16 and 22, THE ball-set model of the
+   (:func:`auxbearing.bearings.ballset.ballset_state`, Eq. 10-16 and 22, THE ball-set model of the
    simulation). The race displacement u is not measured: we take it quasi-static, u along the
    contact normal with K_l (e - u)^(10/9) = F_ball(u), solved per sample by bisection. The
    race (12.5 g on a ball set of ~1e8 N/m) rings at ~10 kHz, above the ~2.5 kHz of an impact,
@@ -19,7 +19,7 @@ module is our reading, built on the same models as the drop simulation (Sec. II.
    added to the force from the filtered rate. Ball loads and the max ball stress (paper_notes item 9)
    follow from u through the same ball-set model;
 3. whirl from the complex spectrum of x + i y
-   (:func:`auxbearing.whirl.spectral_whirl`), impacts by counting
+   (:func:`auxbearing.analysis.whirl.spectral_whirl`), impacts by counting
    contact episodes with hysteresis.
 
 Readers: :mod:`auxbearing.experiment.io`. Fit of the uncertain parameters:
@@ -38,9 +38,9 @@ import numpy as np
 import xarray as xr
 from scipy import optimize, signal
 
-from auxbearing.ballset import ballset_state
-from auxbearing.errors import InputError
-from auxbearing.whirl import spectral_whirl
+from auxbearing.analysis.whirl import spectral_whirl
+from auxbearing.bearings.ballset import ballset_state
+from auxbearing.common.errors import InputError
 
 #: Standard gravity [m/s^2], to back-date the drop from the first clear movement (free fall).
 GRAVITY = 9.80665
@@ -316,7 +316,7 @@ def contact_from_orbit(x: np.ndarray, y: np.ndarray, clearance: float, line_stif
 
         K_l (e - u)^(10/9) = F_b(u),   F_b(u) = -F_ball(u n) . n    (Eq. 19 and Eq. 22)
 
-    with F_ball the ball-set force of :func:`auxbearing.ballset.ballset_state` on the inner
+    with F_ball the ball-set force of :func:`auxbearing.bearings.ballset.ballset_state` on the inner
     ring displaced by u n. The left side falls and the right side rises with u on [0, e], so
     bisection brackets the root. The contact force adds the line-contact damping of Eq. 19,
     C_l d(e - u)/dt (central differences), and is clipped at zero (a contact never pulls).
@@ -330,7 +330,7 @@ def contact_from_orbit(x: np.ndarray, y: np.ndarray, clearance: float, line_stif
     line_stiffness : float
         K_l [N/m^(10/9)].
     ball_params : ndarray
-        :func:`auxbearing.ballset.ballset_params` of the bearing.
+        :func:`auxbearing.bearings.ballset.ballset_params` of the bearing.
     line_damping : float
         C_l [N s/m]; 0 gives the elastic force only.
     dt : float, optional
@@ -348,7 +348,7 @@ def contact_from_orbit(x: np.ndarray, y: np.ndarray, clearance: float, line_stif
     Examples
     --------
     >>> from auxbearing import get_bearing
-    >>> from auxbearing.ballset import ballset_params
+    >>> from auxbearing.bearings.ballset import ballset_params
     >>> out = contact_from_orbit(np.array([0.0]), np.array([-210e-6]), 200e-6, 1.463e9,
     ...                          ballset_params(get_bearing("QJ202")))
     >>> f, u = float(out["elastic_force"][0]), float(out["race_displacement"][0])

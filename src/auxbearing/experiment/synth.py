@@ -2,7 +2,7 @@
 
 No measured drop of a QJ202 or 7202 is public (the paper's Fig. 13 is only a picture), so the
 example data of ``auxbearing/catalog/experiments/`` are made here: the drop simulation of
-:mod:`auxbearing.drop` with known parameters, then what a test rig adds on top -- a
+:mod:`auxbearing.analysis.drop` with known parameters, then what a test rig adds on top -- a
 levitated stretch before the drop, a sensor offset (sensor zero off the bearing centre), white
 noise, the sensors' anti-alias low-pass (causal, so it also delays the signal), sampling and
 rounding. The files say SYNTHETIC in their header and give the true parameters, so the
@@ -22,8 +22,8 @@ from pathlib import Path
 import numpy as np
 from scipy import signal
 
-from auxbearing.bearing import BearingGeometry, load_bearing
-from auxbearing.drop import DropCase, Rotor, run_drop
+from auxbearing.analysis.drop import DropCase, Rotor, run_drop
+from auxbearing.bearings.geometry import BearingGeometry, load_bearing
 
 #: Folder of the shipped example data (inside the package, next to the catalogue).
 EXAMPLE_DIR = Path(__file__).resolve().parents[1] / "catalog" / "experiments"
@@ -79,7 +79,7 @@ def synthesize(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = N
     Parameters
     ----------
     bearing, rotor, case :
-        As :func:`auxbearing.drop.run_drop`; default case: Table II with
+        As :func:`auxbearing.analysis.drop.run_drop`; default case: Table II with
         :data:`TRUE_CASE`.
     sensor : SensorModel, optional
     duration : float

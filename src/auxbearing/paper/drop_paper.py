@@ -1,6 +1,6 @@
 """The paper's drop comparison: QJ202 against 7202 with Table II, and how it moves with s, mu, phase.
 
-Source paper Sec. II.D (text after Fig. 11). Runs :func:`auxbearing.drop.run_drop` for
+Source paper Sec. II.D (text after Fig. 11). Runs :func:`auxbearing.analysis.drop.run_drop` for
 each bearing and sweep point, checks that the peaks do not hang on the integration tolerance or
 the friction regularisation, and lists every input the paper leaves out (:data:`UNSTATED`).
 """
@@ -17,9 +17,9 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
-from auxbearing.bearing import BearingGeometry, load_bearing
-from auxbearing.drop import DropCase, Rotor, run_drop
-from auxbearing.drop_params import from_mapping
+from auxbearing.analysis.drop import DropCase, Rotor, run_drop
+from auxbearing.analysis.drop_params import from_mapping
+from auxbearing.bearings.geometry import BearingGeometry, load_bearing
 
 #: Source paper Sec. II.D (text after Fig. 11): peak collision force and peak bearing stress.
 PAPER_DROP = {
@@ -204,7 +204,7 @@ def sweep_dataset(result: dict) -> xr.Dataset:
 
 
 def _write_compare(out_dir: Path, result: dict, datasets: dict, rotor: Rotor, case: DropCase) -> list[str]:
-    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress, plot_sweep
 
     inputs = {"rotor": rotor.describe(), "drop": case.describe()}

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from auxbearing.drop import DropCase, Rotor, from_mapping
+from auxbearing.analysis.drop import DropCase, Rotor, from_mapping
 from auxbearing.experiment.run import run_experiment
 from auxbearing.experiment.synth import EXAMPLE_DIR
 from auxbearing.paper.claims import CANNOT_CHECK, Assumption, Claim

@@ -1,6 +1,6 @@
 """The paper's static study (source paper Sec. II.C, Fig. 6-8) plus the Stribeck check.
 
-Built on :func:`auxbearing.statics.load_distribution`; the loads the paper does not
+Built on :func:`auxbearing.analysis.statics.load_distribution`; the loads the paper does not
 print are named constants below, each with the reason for its value.
 """
 
@@ -10,8 +10,8 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
-from auxbearing.bearing import BearingGeometry, load_bearing
-from auxbearing.statics import STRIBECK_CONSTANT, load_distribution, stribeck_comparison
+from auxbearing.analysis.statics import STRIBECK_CONSTANT, load_distribution, stribeck_comparison
+from auxbearing.bearings.geometry import BearingGeometry, load_bearing
 
 #: Fig. 6 loads. The paper prints only "(d) Radial force is 1000N"; the axial sweep is at that
 #: radial load and the radial sweep at 500 N axial load (our choice: with zero axial load the
@@ -119,7 +119,7 @@ def static_study(out_dir=None, bearing_4pt: BearingGeometry | str = "QJ202",
 
 
 def _write_study(result: dict, out_dir, four: BearingGeometry, angular: BearingGeometry) -> None:
-    from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+    from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
 
     inputs = {"bearing_4pt": four.describe(), "bearing_ac": angular.describe(),
               "fig6_radial_loads_N": FIG6_RADIAL_LOADS, "fig6_fixed_axial_N": FIG6_FIXED_AXIAL,

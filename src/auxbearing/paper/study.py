@@ -18,7 +18,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from auxbearing import __version__
-from auxbearing.io import atomic_output_dir, save_dataset, save_figure, write_json
+from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
 from auxbearing.paper.claims import HOLDS
 from auxbearing.paper.study_config import StudyConfig
 from auxbearing.paper.study_contact import run_contact_stage

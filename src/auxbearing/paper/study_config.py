@@ -34,9 +34,9 @@ from pathlib import Path
 
 import numpy as np
 
-from auxbearing.bearing import BearingGeometry, bearing_from_mapping, get_bearing, read_toml
-from auxbearing.errors import InputError
-from auxbearing.units import to_si
+from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping, get_bearing, read_toml
+from auxbearing.common.errors import InputError
+from auxbearing.common.units import to_si
 
 SECTIONS = ("study", "bearing", "comparison_bearing", "rotor", "drop")
 #: Tables a study file might be expected to take but that no stage reads, with the reason.
@@ -67,7 +67,7 @@ class StudyConfig:
     @property
     def own_bearings(self) -> bool:
         """True when the bearings, rotor or drop differ from the paper's (a study of the user's own bearings)."""
-        from auxbearing.drop_params import DropCase, Rotor, from_mapping
+        from auxbearing.analysis.drop_params import DropCase, Rotor, from_mapping
 
         base = default_config()
         if self.bearing != base.bearing or self.comparison != base.comparison:
@@ -86,13 +86,13 @@ class StudyConfig:
 
     def angle_grid(self) -> np.ndarray:
         """Contact angles of the sweep [deg] (never past the stop)."""
-        from auxbearing.contact import sweep_grid
+        from auxbearing.analysis.contact import sweep_grid
 
         return sweep_grid(*self.contact_angles_deg)
 
     def ratio_grid(self) -> np.ndarray:
         """Groove ratios of the sweep [-] (never past the stop)."""
-        from auxbearing.contact import sweep_grid
+        from auxbearing.analysis.contact import sweep_grid
 
         return sweep_grid(*self.groove_ratios)
 
@@ -171,7 +171,7 @@ def _same(a: object, b: object) -> bool:
 
 def _check_drop_tables(sections: dict) -> None:
     """The [rotor] and [drop] tables as the drop stage will read them, checked now (not after an hour of stages)."""
-    from auxbearing.drop_params import DropCase, Rotor, from_mapping
+    from auxbearing.analysis.drop_params import DropCase, Rotor, from_mapping
 
     Rotor(**from_mapping(sections.get("rotor"), "rotor"))
     DropCase(**from_mapping(sections.get("drop"), "drop"))

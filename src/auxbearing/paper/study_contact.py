@@ -12,12 +12,12 @@ import math
 import numpy as np
 import xarray as xr
 
-from auxbearing.bearing import BearingGeometry
-from auxbearing.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
+from auxbearing.analysis.contact import PAPER_CONTACT, ball_contact, contact_map, type_comparison
+from auxbearing.analysis.statics import safety_factor, stress_warning
+from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.paper.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS, Assumption, Claim, within
 from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
 from auxbearing.report.model import PAPER_STUDY, Figure, Framing, Section, retitle
-from auxbearing.statics import safety_factor, stress_warning
 
 #: Stress penalty that defines the "design window" of contact angle: the largest angle whose
 #: inner-race max stress under the same radial ball load exceeds the minimum (at the smallest

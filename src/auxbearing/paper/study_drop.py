@@ -9,14 +9,14 @@ from __future__ import annotations
 
 import math
 
-from auxbearing.bearing import BearingGeometry
-from auxbearing.drop import DropCase, Rotor, from_mapping
-from auxbearing.drop_params import PARAMETERS, display_value
+from auxbearing.analysis.drop import DropCase, Rotor, from_mapping
+from auxbearing.analysis.drop_params import PARAMETERS, display_value
+from auxbearing.analysis.statics import ISO76_BALL_STRESS, stress_warning
+from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.paper.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.paper.drop_paper import PAPER_DROP, SWEEPS, drop_compare, sweep_dataset
 from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress, plot_sweep
 from auxbearing.report.model import PAPER_STUDY, Figure, Framing, Section, retitle, slug
-from auxbearing.statics import ISO76_BALL_STRESS, stress_warning
 
 #: Peak values are judged against the paper within this fraction: the paper leaves the clearance,
 #: the rotor radius and the unbalance phase unstated, and the sweep shows each moves the peaks

@@ -9,7 +9,8 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from auxbearing.bearing import BearingGeometry
+from auxbearing.analysis.statics import ISO76_BALL_STRESS, safety_factor, stress_warning, validity_warnings_all
+from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.paper.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.paper.static_paper import (
     FIG6_AXIAL_LOADS,
@@ -21,7 +22,6 @@ from auxbearing.paper.static_paper import (
     static_study,
 )
 from auxbearing.report.model import PAPER_STUDY, Figure, Framing, Section, retitle
-from auxbearing.statics import ISO76_BALL_STRESS, safety_factor, stress_warning, validity_warnings_all
 
 #: Radial load at which the summary compares the two bearings [N]: the load of the paper's Fig. 6 (d).
 SUMMARY_RADIAL_LOAD = 1000.0

@@ -170,7 +170,7 @@ def plot_whirl_map(ds, x_key: str, y_key: str, ax=None, bins: int | None = None)
     keys = [str(k) for k in ds["input"].values]
     for key in (x_key, y_key):
         if key not in keys:
-            from auxbearing.errors import InputError
+            from auxbearing.common.errors import InputError
 
             raise InputError.for_field("--whirl-map", key, "not an input of this campaign; inputs: " + ", ".join(keys))
     x, xlabel = _input(ds, x_key)

@@ -1,6 +1,6 @@
 """Figures of a coast-down: speeds, temperatures and clearances over time, stress cycles of the worst contact.
 
-Each function takes the history of :func:`auxbearing.coastdown.run_coastdown` (or its life results) and
+Each function takes the history of :func:`auxbearing.analysis.coastdown.run_coastdown` (or its life results) and
 ``ax=None``: given an axes it draws there and returns its figure, otherwise it makes a new
 :class:`matplotlib.figure.Figure`. Stretches carried by the reduced model are shaded.
 """

@@ -1,6 +1,6 @@
 """Figures of the contact study in the manner of Fig. 2 and Fig. 3 of the source paper.
 
-Each function takes the Dataset of :func:`auxbearing.contact.contact_map`. A function that
+Each function takes the Dataset of :func:`auxbearing.analysis.contact.contact_map`. A function that
 draws one panel takes ``ax=None``: given an axes it draws there and returns that axes'
 figure, otherwise it makes a new :class:`matplotlib.figure.Figure`. The two-panel figures
 take ``fig=None`` and are built from the one-panel functions. Nothing global changes.
@@ -61,7 +61,7 @@ def plot_contact_angle_cut(ds: xr.Dataset, quantity: str = "max_stress", groove_
     Parameters
     ----------
     ds : xarray.Dataset
-        :func:`auxbearing.contact.contact_map`.
+        :func:`auxbearing.analysis.contact.contact_map`.
     quantity : {"max_stress", "approach"}
     groove_ratio : float, optional
         Groove radius coefficient of the cut [-]; the nearest grid value, default the middle one.
@@ -82,7 +82,7 @@ def plot_groove_ratio_cut(ds: xr.Dataset, quantity: str = "max_stress", contact_
     Parameters
     ----------
     ds : xarray.Dataset
-        :func:`auxbearing.contact.contact_map`.
+        :func:`auxbearing.analysis.contact.contact_map`.
     quantity : {"max_stress", "approach"}
     contact_angle_deg : float, optional
         Contact angle of the cut [deg]; the nearest grid value, default the middle one.

@@ -1,7 +1,7 @@
 """Figures of a drop: orbit, contact force, speeds, stress, tilt, whirl timeline; the paper's sweep.
 
-Each function takes the Dataset (and summary) of :func:`auxbearing.drop.run_machine` or
-:func:`auxbearing.drop.run_drop`. A function that draws one panel takes ``ax=None``: given an
+Each function takes the Dataset (and summary) of :func:`auxbearing.analysis.drop.run_machine` or
+:func:`auxbearing.analysis.drop.run_drop`. A function that draws one panel takes ``ax=None``: given an
 axes, it draws there and returns its figure; otherwise it makes a new
 :class:`matplotlib.figure.Figure`. Nothing global (pyplot state, rcParams) is touched.
 """
@@ -42,7 +42,7 @@ def _summary(ds: xr.Dataset) -> dict:
 
 
 def _plane(ds: xr.Dataset, k: int) -> xr.Dataset:
-    """Plane k of a machine run, or the planar view of a one-plane run (:func:`auxbearing.drop.planar_view`)."""
+    """Plane k of a machine run, or a one-plane run's planar view (:func:`auxbearing.analysis.drop.planar_view`)."""
     return ds.isel(plane=k) if "plane" in ds.dims else ds
 
 

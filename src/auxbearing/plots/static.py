@@ -12,8 +12,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from auxbearing.analysis.statics import ISO76_BALL_STRESS
 from auxbearing.plots._axes import axes_for, figure_for
-from auxbearing.statics import ISO76_BALL_STRESS
 
 _MARKERS = "osd^v<>"
 #: Load levels a displacement panel draws by default (evenly picked from the grid).
@@ -42,7 +42,7 @@ def plot_contact_angle_profile(sweep: xr.Dataset, pair: int = 1, ax=None) -> Fig
     Parameters
     ----------
     sweep : xarray.Dataset
-        :func:`auxbearing.statics.load_distribution` over several cases.
+        :func:`auxbearing.analysis.statics.load_distribution` over several cases.
     pair : {1, 2}
         Contact pair of the four-point ball.
     ax : matplotlib.axes.Axes, optional

@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 
 def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     """Section key -> [(figure, caption)] for :func:`auxbearing.report.verify_html.render`."""
-    from auxbearing.coastdown_life import cycles_of_worst_contact
+    from auxbearing.analysis.coastdown_life import cycles_of_worst_contact
     from auxbearing.plots import coastdown as pc
     from auxbearing.plots import drop as pd
     from auxbearing.plots.machine import plot_machine

@@ -22,11 +22,11 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from auxbearing.coastdown import CoastdownRun, run_coastdown
-from auxbearing.drop import MachineRun, run_machine
-from auxbearing.errors import InputError
-from auxbearing.machine import Machine, machine_from_mapping
-from auxbearing.params import Param, by_key, read_table
+from auxbearing.analysis.coastdown import CoastdownRun, run_coastdown
+from auxbearing.analysis.drop import MachineRun, run_machine
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import Param, by_key, read_table
+from auxbearing.machine.model import Machine, machine_from_mapping
 
 #: A drop at low speed runs at this fraction of the maximum (ours: the bottom of a typical operating range).
 LOW_SPEED_FRACTION = 0.25

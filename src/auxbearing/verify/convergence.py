@@ -75,8 +75,8 @@ def convergence(cases: Cases, criteria: list, executor=None) -> dict | None:
 
 def convergence_started(cases: Cases, criteria: list, executor=None):
     """:func:`convergence` with its run handed to ``executor`` now: call the result for the comparison."""
-    from auxbearing.coastdown import run_coastdown
-    from auxbearing.drop import run_machine
+    from auxbearing.analysis.coastdown import run_coastdown
+    from auxbearing.analysis.drop import run_machine
     from auxbearing.verify.cases import Immediate
 
     executor = executor or Immediate()

@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from auxbearing.params import Param, by_key, read_table
+from auxbearing.common.params import Param, by_key, read_table
 
 CRITERIA: tuple[Param, ...] = (
     Param("criteria", "min_s0", "dimensionless", 1.0, "", "positive",

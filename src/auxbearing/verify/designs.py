@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 CONTACT_ANGLE_RANGE = (math.radians(15.0), math.radians(45.0))  #: source paper Sec. IV
 GROOVE_RATIO_RANGE = (0.505, 0.53)  #: ours: the paper's 0.51-0.52 widened to what makers grind
@@ -64,7 +64,7 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
 
 def _check_bearing_name(spec: str, field: str) -> None:
     """Refuse a candidate that is neither a catalogue bearing nor a bearing TOML file, naming ``field``."""
-    from auxbearing.bearing import bearing_names, get_bearing
+    from auxbearing.bearings.geometry import bearing_names, get_bearing
 
     if spec.lower().endswith(".toml") or Path(spec).is_file():
         return
@@ -93,7 +93,7 @@ def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
 
 def recommended_tables(data: dict, name: str, base: Path | None, rec: dict) -> dict:
     """The machine file's tables with the recommended geometry (:func:`recommend`'s result) in every plane."""
-    from auxbearing.machine import machine_from_mapping
+    from auxbearing.machine.model import machine_from_mapping
 
     machine = machine_from_mapping(data, name, base)
     x = np.array([math.radians(rec["contact_angle_deg"]), rec["inner_groove_ratio"], rec["clearance_factor"]])
@@ -102,8 +102,8 @@ def recommended_tables(data: dict, name: str, base: Path | None, rec: dict) -> d
 
 def _point_summary(tables: dict, name: str, base: Path | None) -> dict:
     """The summary of one design point's drop (a task of the search), or the reason it cannot be built."""
-    from auxbearing.drop import run_machine
-    from auxbearing.machine import machine_from_mapping
+    from auxbearing.analysis.drop import run_machine
+    from auxbearing.machine.model import machine_from_mapping
 
     try:
         return run_machine(machine_from_mapping(tables, name, base).for_batch(), lean=True).summary
@@ -119,7 +119,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     """
     from scipy.optimize import minimize
 
-    from auxbearing.machine import machine_from_mapping
+    from auxbearing.machine.model import machine_from_mapping
     from auxbearing.verify.cases import QUICK_DROP, Immediate, verify_settings
 
     executor = executor or Immediate()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+from auxbearing.analysis.whirl import BACKWARD
 from auxbearing.verify.cases import Cases
 from auxbearing.verify.criteria import (
     Criterion,
@@ -14,7 +15,6 @@ from auxbearing.verify.criteria import (
     upper_bound,
     yes_no,
 )
-from auxbearing.whirl import BACKWARD
 
 
 def _drop_planes(cases: Cases):
@@ -62,14 +62,14 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
                           else f"{c}, {n}: {w} at the end"
                           for c, n, o, w in whirls), not whirls,
                       "Jiang & Ulbrich 2005 and Jiang 2007: backward whirl and dry whip destroy touchdown bearings",
-                      "whirl judged window by window (auxbearing.whirl)"))
+                      "whirl judged window by window (auxbearing.analysis.whirl)"))
     coast = cases.coastdown.summary if cases.coastdown is not None else None
     if coast is not None:
         hottest = max((max(p["max_temperature_C"].values()), p["name"]) for p in coast["planes"])
         out.append(temperature_bound("peak bearing temperature", hottest[0], criteria["max_temperature"] - 273.15,
                                      cases.machine.coastdown.ambient_temperature - 273.15,
                                      origin("max_temperature", criteria), f"coast-down, {hottest[1]}"))
-        from auxbearing.coastdown import _preload_stress
+        from auxbearing.analysis.coastdown import _preload_stress
 
         stresses = []
         for k, p in enumerate(coast["planes"]):
@@ -202,7 +202,7 @@ def _unsettled(c: Criterion, why: str) -> Criterion:
 
 
 def _ballset(cases: Cases, k: int):
-    from auxbearing.ballset import ballset_params
+    from auxbearing.bearings.ballset import ballset_params
 
     plane = cases.machine.planes[k]
     return ballset_params(plane.bearing, plane.ball_constant)

@@ -13,9 +13,9 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from auxbearing.errors import InputError
-from auxbearing.machine import machine_from_mapping, machine_table
-from auxbearing.machine_check import check_candidate_seat
+from auxbearing.common.errors import InputError
+from auxbearing.machine.check import check_candidate_seat
+from auxbearing.machine.model import machine_from_mapping, machine_table
 from auxbearing.verify.cases import (
     Cases,
     campaign_size,

@@ -26,8 +26,8 @@ def _load_kernels() -> float:
     """Load (or compile) the machine kernels in a worker with a short drop; seconds spent."""
     import time
 
-    from auxbearing.drop import run_machine
-    from auxbearing.machine import read_machine
+    from auxbearing.analysis.drop import run_machine
+    from auxbearing.machine.model import read_machine
 
     start = time.perf_counter()
     run_machine(read_machine("paper_rig").for_batch(), duration=1e-4)

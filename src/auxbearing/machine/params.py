@@ -1,4 +1,4 @@
-"""Every input of a machine file: one :class:`~auxbearing.params.Param` row per key, with unit and source.
+"""Every input of a machine file: one :class:`~auxbearing.common.params.Param` row per key, with unit and source.
 
 The tables of a machine TOML file are ``[machine]``, ``[rotor]``, one ``[[touchdown]]`` per plane and
 ``[drop]`` (how the run is made); the keys of ``[[touchdown]]`` that the source paper's drop also has
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from auxbearing.params import Param, by_key
+from auxbearing.common.params import Param, by_key
 
 G0 = 9.80665  #: standard gravity [m/s^2] (CGPM 1901)
 
@@ -110,10 +110,10 @@ TOUCHDOWN: tuple[Param, ...] = (
           "Harris & Kotzalas 2007, Essential Concepts Ch. 10; 0: no load-free torque"),
     Param("touchdown", "housing_mass", "mass", None, "kg", "optional_positive",
           "Mass of the housing lumped with the outer ring in the thermal network; default a steel ring around it",
-          "ours (auxbearing.thermal.build_network)"),
+          "ours (auxbearing.analysis.thermal.build_network)"),
     Param("touchdown", "housing_to_ambient", "thermal_conductance", None, "W/K", "optional_nonnegative",
           "Conductance from the housing to ambient; default natural convection of its outside (none in vacuum)",
-          "Churchill & Chu correlation (auxbearing.thermal)"),
+          "Churchill & Chu correlation (auxbearing.analysis.thermal)"),
     Param("touchdown", "journal_to_ambient", "thermal_conductance", None, "W/K", "optional_nonnegative",
           "Conductance from the journal to the rest of the rotor and ambient; default conduction along the shaft "
           "to the mass centre (the rotor body held at ambient)", "ours: Fourier conduction k A / L"),

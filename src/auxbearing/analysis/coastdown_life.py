@@ -4,14 +4,14 @@ Per plane and drop (:func:`plane_life`):
 
 * the drop itself: the Hertz stress history of every ball/raceway contact (inner and outer race, each pair)
   from the drop's full dynamics, with the over-rolling while the race turns, rainflow-counted and summed
-  by Palmgren-Miner (:func:`auxbearing.life.drop_damage`: Lundberg-Palmgren / ISO 281 stress-life law);
+  by Palmgren-Miner (:func:`auxbearing.analysis.life.drop_damage`: Lundberg-Palmgren / ISO 281 stress-life law);
 * the coast-down: its settled stretches over-roll the raceways under loads that barely change, so each
   stretch adds revolutions / L10(P) with the ISO 281 basic rating life L10 = (C/P)^3 10^6 revolutions at
   its equivalent load P (ISO 281:2007 Eq. 1; the constant-load case of the same law, which the helper's
   consistency test checks against the stress-history path);
 * the permanent dent of the drop's largest ball load (Palmgren, ISO 76's 1e-4 D limit;
-  :func:`auxbearing.life.dent_per_drop`), the same spot dented every drop;
-* which of the two governs against ``life.required_drops`` (:func:`auxbearing.life.governing`).
+  :func:`auxbearing.analysis.life.dent_per_drop`), the same spot dented every drop;
+* which of the two governs against ``life.required_drops`` (:func:`auxbearing.analysis.life.governing`).
 """
 
 from __future__ import annotations
@@ -21,8 +21,8 @@ import math
 import numpy as np
 import xarray as xr
 
+from auxbearing.analysis.life import dent_per_drop, drop_damage, dynamic_load_rating, governing
 from auxbearing.core import fatigue as cf
-from auxbearing.life import dent_per_drop, drop_damage, dynamic_load_rating, governing
 
 #: Equivalent-load factors by bearing type (ISO 281:2007 6.2; four-point and angular contact as the makers
 #: give them, :mod:`auxbearing.core.fatigue`); a deep-groove bearing is taken as radially loaded (X = 1, Y = 0).
@@ -53,7 +53,7 @@ def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolli
     k : int
         Plane index.
     drop_ds : xarray.Dataset
-        The drop's time series (:func:`auxbearing.drop.run_machine`), with ``stress_inner_k``,
+        The drop's time series (:func:`auxbearing.analysis.drop.run_machine`), with ``stress_inner_k``,
         ``stress_outer_k`` over (time, ball, pair).
     drop_plane : dict
         The drop summary's entry of the plane (its ``peak_ball_load_N``).

@@ -11,7 +11,7 @@ Axial boundary condition (docs/paper_notes.md, "How to read the static model"): 
 axial displacement and reports the axial reaction of its locating shoulder. A single
 angular-contact bearing with a free ring cannot carry a radial load or a moment without an
 axial load pressing its balls into their contact side; such loads are refused with an
-:class:`~auxbearing.errors.InputError`, as are equilibria whose balls would have to run past
+:class:`~auxbearing.common.errors.InputError`, as are equilibria whose balls would have to run past
 the groove bottom (loaded contact angle <= 0). ``tilt`` ``"free"`` (the paper: M given) or
 ``"fixed"`` (ring kept square by its shaft; the moment reaction is reported).
 
@@ -31,13 +31,14 @@ from collections.abc import Sequence
 import numpy as np
 import xarray as xr
 
-from auxbearing import __version__, ballset
-from auxbearing.bearing import BearingGeometry, load_bearing
+from auxbearing import __version__
+from auxbearing.bearings import ballset
+from auxbearing.bearings.geometry import BearingGeometry, load_bearing
+from auxbearing.common.errors import ConvergenceError, InputError
+from auxbearing.common.units import to_si, ureg
 from auxbearing.core import statics as kernel
 from auxbearing.core.ballset import BallSet
 from auxbearing.core.statics import CONVERGED, DEFAULT_MAX_ITER, DEFAULT_TOL, STATUS_TEXT, StaticSolution
-from auxbearing.errors import ConvergenceError, InputError
-from auxbearing.units import to_si, ureg
 
 #: ISO 76:2006 permissible contact stress at C0 for ball bearings (not self-aligning) [Pa].
 ISO76_BALL_STRESS = 4200e6
@@ -82,7 +83,7 @@ def solve_cases(
     loads : array_like, shape (n, 5) or (5,)
         (Fa, Fx, Fy, Mx, My) applied to the inner ring [N, N m].
     params : BallSet
-        :func:`auxbearing.ballset.ballset_params`.
+        :func:`auxbearing.bearings.ballset.ballset_params`.
     free : tuple of 5 bool
         DOFs the ring may move in; a fixed DOF stays at zero and carries a reaction.
     tol : float
@@ -249,7 +250,7 @@ def sink_estimate(bearing: BearingGeometry, loads: np.ndarray, ball_constant: ob
     >>> f"{sink_estimate(b, np.array([[0, 1000, 0, 0, 0]]), '1 N/m**1.5')[0]:.2g}"
     '54'
     """
-    from auxbearing.contact import ball_constant as hertz_ball_constant
+    from auxbearing.analysis.contact import ball_constant as hertz_ball_constant
 
     loads = np.atleast_2d(np.asarray(loads, dtype=float))
     k = _ball_constant(ball_constant)

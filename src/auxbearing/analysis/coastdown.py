@@ -1,6 +1,6 @@
 """From the drop to standstill: spin-down, friction heat, thermal growth and the drops a bearing survives.
 
-:func:`run_coastdown` runs a machine's drop with full dynamics (:func:`auxbearing.drop.integrate_machine`)
+:func:`run_coastdown` runs a machine's drop with full dynamics (:func:`auxbearing.analysis.drop.integrate_machine`)
 and goes on, alternating two paths, until the rotor stands still (``until_stop``) or a time is reached:
 
 * **full dynamics** in windows of ``coastdown.check_window``: the machine right-hand side as in a drop,
@@ -8,7 +8,7 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   heat is made (journal/race and face contacts, inside each bearing, in each mount damper, drag), from
   the energy ledger of the state;
 * **a reduced model** (:mod:`auxbearing.core.spin`) on the stretches whose state it can represent, as
-  :mod:`auxbearing.coastdown_phases` decides from the window: every race rolling on its journal (in
+  :mod:`auxbearing.analysis.coastdown_phases` decides from the window: every race rolling on its journal (in
   contact or in a steady backward rolling whirl) or free of it, no dry whip, and a whirl or a rattle only
   when two windows agree. A race that still slides stays in full dynamics until it rolls. Only the slow
   quantities move there: the rotor's and the free races' spin speeds under the losses the window measured
@@ -17,10 +17,10 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   when the speed has fallen by ``coastdown.speed_step`` or a clearance has moved by :data:`CLEARANCE_STEP`,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there).
 
-Heat goes into one lumped network per plane (:mod:`auxbearing.thermal`; journal, inner race, balls,
+Heat goes into one lumped network per plane (:mod:`auxbearing.analysis.thermal`; journal, inner race, balls,
 outer race, housing, ambient): contact heat split between journal and race by Charron's partition,
 bearing heat at the raceways, mount heat to the housing. Thermal growth changes the journal/race radial
-clearance and the bearing's diametral clearance (:meth:`auxbearing.thermal.ThermalNetwork.clearance_changes`),
+clearance and the bearing's diametral clearance (:meth:`auxbearing.analysis.thermal.ThermalNetwork.clearance_changes`),
 and both go back into the dynamics. A run stops with its verdict when a part passes
 ``coastdown.max_temperature`` (a thermal run-away), when the internal clearance closes into a preload whose
 stress at rest passes ISO 76's 4200 MPa, or when the radial clearance closes (the journal seizes).
@@ -40,15 +40,10 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from auxbearing import __version__, interrupt
-from auxbearing.ballset import ballset_state
-from auxbearing.coastdown_life import plane_life
-from auxbearing.coastdown_phases import MAX_WINDOWS, integrate_stretch, plane_window, settled, spin_model
-from auxbearing.core import drive
-from auxbearing.core import integrate as ig
-from auxbearing.core import machine as cm
-from auxbearing.core import watch as cw
-from auxbearing.drop import (
+from auxbearing import __version__
+from auxbearing.analysis.coastdown_life import plane_life
+from auxbearing.analysis.coastdown_phases import MAX_WINDOWS, integrate_stretch, plane_window, settled, spin_model
+from auxbearing.analysis.drop import (
     MachineRun,
     as_machine,
     integrate_machine,
@@ -57,11 +52,17 @@ from auxbearing.drop import (
     simulated_time,
     whirl_window,
 )
-from auxbearing.errors import InputError
-from auxbearing.life import dynamic_load_rating
-from auxbearing.machine import Machine
-from auxbearing.statics import ISO76_BALL_STRESS
-from auxbearing.thermal import HOUSING, JOURNAL, NODE_NAMES, build_network
+from auxbearing.analysis.life import dynamic_load_rating
+from auxbearing.analysis.statics import ISO76_BALL_STRESS
+from auxbearing.analysis.thermal import HOUSING, JOURNAL, NODE_NAMES, build_network
+from auxbearing.bearings.ballset import ballset_state
+from auxbearing.common import interrupt
+from auxbearing.common.errors import InputError
+from auxbearing.core import drive
+from auxbearing.core import integrate as ig
+from auxbearing.core import machine as cm
+from auxbearing.core import watch as cw
+from auxbearing.machine.model import Machine
 
 #: A reduced stretch ends when a clearance has moved this much since full dynamics last looked [m].
 CLEARANCE_STEP = 1e-6
@@ -80,12 +81,13 @@ class CoastdownRun(NamedTuple):
     drop: MachineRun  #: the drop window (full dynamics, with the per-ball stress histories)
     history: xr.Dataset  #: the coast-down at every window and stretch end (units in attrs)
     summary: dict  #: verdict, times, energy audit, per plane temperatures, clearances and life
-    life: list  #: per plane: the fatigue and dent results (:mod:`auxbearing.life`); None when the drop did not finish
+    #: per plane: the fatigue and dent results (:mod:`auxbearing.analysis.life`); None when the drop did not finish
+    life: list
 
 
 # ----------------------------------------------------------------------------- the thermal side
 def plane_network(machine: Machine, k: int, contact_load: float):
-    """The lumped thermal network of plane k (:func:`auxbearing.thermal.build_network`)."""
+    """The lumped thermal network of plane k (:func:`auxbearing.analysis.thermal.build_network`)."""
     plane = machine.planes[k]
     coast = machine.coastdown
     journal_to_ambient = plane.journal_to_ambient
@@ -192,7 +194,7 @@ def _window_powers(machine: Machine, y, ledger, length: float) -> dict:
 
 
 def _window_planes(machine: Machine, watch, powers: dict) -> list:
-    """Each plane's state over the window just run (:func:`auxbearing.coastdown_phases.plane_window`)."""
+    """Each plane's state over the window just run (:func:`auxbearing.analysis.coastdown_phases.plane_window`)."""
     n = int(watch.window_count[0])
     planes = [plane_window(machine, k, watch.whirl[:n, k], int(watch.onsets[k]), powers[k])
               for k in range(len(machine.planes))]
@@ -205,7 +207,7 @@ def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_en
     The temperatures take one exact step with the stretch's mean heat input (the input changes by at most
     the speed step within a stretch); the stretch is halved until no clearance moves more than
     :data:`CLEARANCE_STEP` and no part passes ``coastdown.max_temperature`` (so a run-away is found within
-    a check window of its time). Returns the stretch (:class:`auxbearing.coastdown_phases.Stretch`) and the new
+    a check window of its time). Returns the stretch (:class:`auxbearing.analysis.coastdown_phases.Stretch`) and the new
     temperatures.
     """
     coast = machine.coastdown
@@ -447,7 +449,7 @@ def _window_load(machine: Machine, k: int, window) -> float:
 
     Radial: the window's mean journal contact force plus the race's weight; axial: its mean face force.
     """
-    from auxbearing.coastdown_life import equivalent_load
+    from auxbearing.analysis.coastdown_life import equivalent_load
 
     radial = window.force + machine.planes[k].race_mass * machine.simulation.gravity
     return equivalent_load(machine.planes[k].bearing, radial, window.axial_force)
@@ -477,14 +479,15 @@ def _history(machine: Machine, rows: list[dict]) -> xr.Dataset:
               "node": ("node", list(NODE_NAMES))}
     ds = xr.Dataset(data, coords=coords)
     ds.attrs.update(title=f"Coast-down of {machine.name}", auxbearing_version=__version__,
-                    model="full dynamics in windows and a reduced model on settled stretches (auxbearing.coastdown)")
+                    model="full dynamics in windows and a reduced model on settled stretches "
+                          "(auxbearing.analysis.coastdown)")
     return ds
 
 
 def _json(obj) -> str:
     import json
 
-    from auxbearing.io import to_jsonable
+    from auxbearing.common.io import to_jsonable
 
     return json.dumps(to_jsonable(obj))
 

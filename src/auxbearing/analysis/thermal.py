@@ -28,12 +28,12 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from auxbearing.bearing import BearingGeometry
-from auxbearing.contact import raceway_contact
+from auxbearing.analysis.contact import raceway_contact
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.bearings.materials import Material, check_positive, get_material
+from auxbearing.common.errors import InputError
 from auxbearing.core import thermal as kernel
 from auxbearing.core.bearing_friction import effusivity, heat_partition
-from auxbearing.errors import InputError
-from auxbearing.materials import Material, check_positive, get_material
 
 NODE_NAMES = ("journal", "inner_race", "balls", "outer_race", "housing")
 JOURNAL, INNER_RACE, BALLS, OUTER_RACE, HOUSING = range(5)

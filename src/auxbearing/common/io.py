@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from auxbearing import __version__
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 if TYPE_CHECKING:  # xarray is imported by the functions that write it, so reading a TOML file needs none
     import xarray as xr

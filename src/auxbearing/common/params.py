@@ -13,7 +13,7 @@ import math
 import re
 from typing import NamedTuple
 
-from auxbearing.errors import InputError
+from auxbearing.common.errors import InputError
 
 #: SI unit of each dimension (the unit library is imported only when a value is converted, so that
 #: ``--help`` texts built from these tables need none).
@@ -28,7 +28,7 @@ SI_UNITS: dict[str, str] = {
 _DISPLAY_SCALE = {"mm": 1e3, "um": 1e6, "us": 1e6, "ms": 1e3, "deg": 180.0 / math.pi, "rpm": 30.0 / math.pi,
                   "mrad": 1e3, "MPa": 1e-6, "mm/s": 1e3, "kN": 1e-3, "GPa": 1e-9, "degC": None}
 
-#: Units beyond :data:`auxbearing.units.SI_UNITS` that the dynamics need: (SI unit, examples).
+#: Units beyond :data:`auxbearing.common.units.SI_UNITS` that the dynamics need: (SI unit, examples).
 EXTRA_UNITS = {
     "line_stiffness": ("N/m**(10/9)", "N/m**(10/9)"),
     "ball_constant": ("N/m**1.5", "N/m**1.5, N/mm**1.5"),
@@ -108,7 +108,7 @@ def convert(field: str, value: object, dimension: str, default_unit: str | None 
     """
     import pint
 
-    from auxbearing.units import Quantity, parse_quantity
+    from auxbearing.common.units import Quantity, parse_quantity
 
     if isinstance(value, bool) or not isinstance(value, (int, float, str, pint.Quantity)):
         raise InputError.for_field(field, value, f"must be a number with a unit such as {_examples(dimension)}")
@@ -131,7 +131,7 @@ def convert(field: str, value: object, dimension: str, default_unit: str | None 
 
 
 def _examples(dimension: str) -> str:
-    from auxbearing.units import _EXAMPLES
+    from auxbearing.common.units import _EXAMPLES
 
     return _EXAMPLES[dimension][0] if dimension in _EXAMPLES else EXTRA_UNITS[dimension][1]
 
@@ -147,7 +147,7 @@ def display_value(param: Param, value: float) -> object:
         return f"{value:.6g} {unit}"
     if _DISPLAY_SCALE.get(unit) is not None:
         return f"{value * _DISPLAY_SCALE[unit]:.6g} {unit}"
-    from auxbearing.units import Quantity
+    from auxbearing.common.units import Quantity
 
     return f"{Quantity(value, si_unit(param.dimension)).to(unit).magnitude:.6g} {unit}"
 
@@ -207,7 +207,7 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
     >>> read_table({"mas": "2 kg"}, rows, "rotor.")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: rotor.mas = '2 kg': unknown key; allowed keys: mass; did you mean mass?
+    auxbearing.common.errors.InputError: rotor.mas = '2 kg': unknown key; allowed keys: mass; did you mean mass?
     """
     if data is None:
         return {}

@@ -13,9 +13,9 @@ from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
-from auxbearing.errors import InputError
-from auxbearing.params import as_typed
-from auxbearing.units import to_si
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import as_typed
+from auxbearing.common.units import to_si
 
 
 @dataclass(frozen=True)
@@ -145,7 +145,7 @@ def get_material(name: str) -> Material:
     >>> get_material("brass")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: material = 'brass': unknown; catalogue names are GCr15, 42CrMo, M50, Si3N4, steel
+    auxbearing.common.errors.InputError: material = 'brass': unknown; catalogue names are GCr15, 42CrMo, ..., steel
     """
     wanted = name.strip().lower()
     for key, entry in _catalogue().items():

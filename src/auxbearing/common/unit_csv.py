@@ -3,7 +3,7 @@
 One reader for every table a user hands in (a measured drop, a list of load cases), so the
 rules and the error messages are the same everywhere: each column of interest names its unit
 in brackets (or the caller passes it as an option), values become SI floats through
-:func:`auxbearing.units.to_si`, and every problem is an :class:`InputError` of one line naming
+:func:`auxbearing.common.units.to_si`, and every problem is an :class:`InputError` of one line naming
 the file, the column and the file line.
 """
 
@@ -17,8 +17,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from auxbearing.errors import InputError
-from auxbearing.units import to_si
+from auxbearing.common.errors import InputError
+from auxbearing.common.units import to_si
 
 _HEADER = re.compile(r"^\s*([A-Za-z_][\w\-]*)\s*(?:\[([^\]]*)\])?\s*$")
 _WHITESPACE_HEADER_FIELD = re.compile(r"[^\s\[\]]+(?:\s*\[[^\]]*\])?")
@@ -30,7 +30,7 @@ MAX_MAGNITUDE = 1e150
 
 
 class Column(NamedTuple):
-    """A column the caller reads: its dimension (a key of :data:`auxbearing.units.SI_UNITS`)."""
+    """A column the caller reads: its dimension (a key of :data:`auxbearing.common.units.SI_UNITS`)."""
 
     dimension: str
     required: bool
@@ -65,7 +65,7 @@ def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: s
     Parameters
     ----------
     path : path
-        The file, in UTF-8 or an encoding :func:`auxbearing.io.read_text` can tell (with a warning).
+        The file, in UTF-8 or an encoding :func:`auxbearing.common.io.read_text` can tell (with a warning).
         Blank lines are skipped; lines starting with ``#`` are comments, and ``# key = value``
         comments are returned as metadata.
     columns : dict
@@ -90,7 +90,7 @@ def read_unit_csv(path: str | Path, columns: dict[str, Column], *, file_field: s
         a missing or wrong unit, a missing or non-numeric value, a row with the wrong field count,
         more rows than ``max_rows``.
     """
-    from auxbearing.io import read_text
+    from auxbearing.common.io import read_text
 
     path = Path(path)
     text_of_file = read_text(path, file_field)

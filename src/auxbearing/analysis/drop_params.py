@@ -1,10 +1,10 @@
 """Inputs of the paper's planar drop: rotor and drop-case parameters in one table (SI inside).
 
 Source paper Sec. II.D and Table II, read as docs/paper_notes.md says. Each parameter is a
-:class:`~auxbearing.params.Param` row of :data:`PARAMETERS`; the dataclasses, their validation,
+:class:`~auxbearing.common.params.Param` row of :data:`PARAMETERS`; the dataclasses, their validation,
 the TOML ``[rotor]`` / ``[drop]`` sections and the command-line options of ``auxbearing drop`` are
 built from that table. The drop itself runs through the machine model
-(:func:`auxbearing.drop.run_drop` builds a one-plane :class:`~auxbearing.machine.Machine`).
+(:func:`auxbearing.analysis.drop.run_drop` builds a one-plane :class:`~auxbearing.machine.model.Machine`).
 
 Values the paper does not give, and what we set (see ``source`` of each row): clearance s and
 rotor radius r (s = 0.2 mm, r = bore/2 - s), unbalance phase at the drop (0), K_l's contact
@@ -18,8 +18,8 @@ import math
 from dataclasses import dataclass, fields
 from pathlib import Path
 
-from auxbearing.errors import InputError
-from auxbearing.params import Param, accept, by_key, check, convert, display_value, read_table, si_unit
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import Param, accept, by_key, check, convert, display_value, read_table, si_unit
 
 __all__ = ["PARAMETERS", "DropCase", "Param", "Rotor", "check", "convert", "display_value", "from_mapping",
            "read_config"]
@@ -108,7 +108,7 @@ class Rotor:
     >>> Rotor(mass=-1.0)
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: rotor.mass = '-1 kg': must be > 0
+    auxbearing.common.errors.InputError: rotor.mass = '-1 kg': must be > 0
     """
 
     mass: float = 1.48
@@ -142,7 +142,7 @@ class DropCase:
     >>> DropCase(sliding_friction=1.5)
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: drop.sliding_friction = 1.5: must lie in [0, 1]
+    auxbearing.common.errors.InputError: drop.sliding_friction = 1.5: must lie in [0, 1]
     """
 
     clearance: float = _default("clearance")
@@ -201,7 +201,7 @@ def from_mapping(data: dict | None, section: str, prefix: str | None = None) -> 
     >>> from_mapping({"clearence": "0.3 mm"}, "drop")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: drop.clearence = '0.3 mm': unknown key; allowed keys: clearance, speed, ...
+    auxbearing.common.errors.InputError: drop.clearence = '0.3 mm': unknown key; allowed keys: clearance, speed, ...
     """
     return read_table(data, _BY_SECTION[section], f"{section}." if prefix is None else prefix)
 
@@ -209,12 +209,12 @@ def from_mapping(data: dict | None, section: str, prefix: str | None = None) -> 
 def read_config(path: str | Path) -> tuple:
     """The ``[bearing]``, ``[rotor]`` and ``[drop]`` tables of a TOML file (values with units).
 
-    Returns the :class:`~auxbearing.bearing.BearingGeometry` (None when the file has no ``[bearing]``
+    Returns the :class:`~auxbearing.bearings.geometry.BearingGeometry` (None when the file has no ``[bearing]``
     table) and the SI keyword
     arguments of :class:`Rotor` and :class:`DropCase`. Other tables are refused: a drop file
     holds these three only.
     """
-    from auxbearing.bearing import bearing_from_mapping, read_toml
+    from auxbearing.bearings.geometry import bearing_from_mapping, read_toml
 
     data = read_toml(path)
     unknown = [k for k in data if k not in ("bearing", "rotor", "drop")]

@@ -39,7 +39,7 @@ import math
 import numpy as np
 import rainflow
 
-from auxbearing.bearing import BearingGeometry
+from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.core import fatigue as cf
 from auxbearing.core.hertz import ball_raceway_curvature, ellipticity, stress_coefficient
 
@@ -80,7 +80,7 @@ def dynamic_load_rating(bearing) -> float:
     from auxbearing.bearings import ratings
 
     if isinstance(bearing, str):
-        from auxbearing.bearing import get_bearing
+        from auxbearing.bearings.geometry import get_bearing
 
         bearing = get_bearing(bearing)
     row = getattr(bearing, "row", None)
@@ -102,7 +102,7 @@ def static_load_rating(bearing) -> float:
     from auxbearing.bearings import ratings
 
     if isinstance(bearing, str):
-        from auxbearing.bearing import get_bearing
+        from auxbearing.bearings.geometry import get_bearing
 
         bearing = get_bearing(bearing)
     row = getattr(bearing, "row", None)

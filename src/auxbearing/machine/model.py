@@ -1,10 +1,10 @@
 """A machine for a touchdown run: rotor, touchdown planes, mounts, run settings (validated, SI).
 
 Read from a machine TOML file (:func:`read_machine`, keys and units in
-:mod:`auxbearing.machine_params`) or a catalogue name (:func:`machine_names`), or built from the
+:mod:`auxbearing.machine.params`) or a catalogue name (:func:`machine_names`), or built from the
 source paper's planar inputs (:func:`planar_machine`). :meth:`Machine.kernel` packs it into the
 NamedTuples of :mod:`auxbearing.core.machine` with the initial state and tolerances
-(:mod:`auxbearing.machine_kernel`).
+(:mod:`auxbearing.machine.pack`).
 """
 
 from __future__ import annotations
@@ -17,11 +17,12 @@ from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from auxbearing.bearing import BearingGeometry, bearing_from_mapping
+from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import accept, read_table, unknown
 from auxbearing.core import machine as cm
 from auxbearing.core.hertz import line_contact_constant
-from auxbearing.errors import InputError
-from auxbearing.machine_params import (
+from auxbearing.machine.params import (
     AXIAL_DIRECTIONS,
     COASTDOWN,
     G0,
@@ -33,10 +34,9 @@ from auxbearing.machine_params import (
     hollow_cylinder,
     steel_column_stiffness,
 )
-from auxbearing.params import accept, read_table, unknown
 
 if TYPE_CHECKING:
-    from auxbearing.machine_kernel import KernelModel
+    from auxbearing.machine.pack import KernelModel
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
 JOURNAL_COMPLIANCE = (1.0 - 0.3**2) / 207e9
@@ -184,11 +184,11 @@ class Life:
     """What the bearings must survive."""
 
     required_drops: float = default("life", "required_drops")
-    #: how the dents of successive drops add up (:data:`auxbearing.life.DENT_ACCUMULATION`)
+    #: how the dents of successive drops add up (:data:`auxbearing.analysis.life.DENT_ACCUMULATION`)
     dent_accumulation: str = "same_spot"
 
     def __post_init__(self) -> None:
-        from auxbearing.life import DENT_ACCUMULATION
+        from auxbearing.analysis.life import DENT_ACCUMULATION
 
         for p in LIFE:
             object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
@@ -252,8 +252,8 @@ class Machine:
         return replace(self, simulation=simulation)
 
     def kernel(self) -> KernelModel:
-        """Pack for :mod:`auxbearing.core.machine` (:func:`auxbearing.machine_kernel.pack`)."""
-        from auxbearing.machine_kernel import pack
+        """Pack for :mod:`auxbearing.core.machine` (:func:`auxbearing.machine.pack.pack`)."""
+        from auxbearing.machine.pack import pack
 
         return pack(self)
 
@@ -412,11 +412,11 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     """A machine from the tables of a machine TOML file (values with units); every key checked first.
 
     The machine's own tables are read here, with the values no machine can have together
-    (:func:`auxbearing.machine_check.check_combinations`); a whole file, its ``[criteria]``, ``[verify]``,
+    (:func:`auxbearing.machine.check.check_combinations`); a whole file, its ``[criteria]``, ``[verify]``,
     ``[[candidate]]`` and ``[campaign]`` tables too, is checked by
-    :func:`auxbearing.machine_check.check_machine_document` (what :func:`read_machine` does).
+    :func:`auxbearing.machine.check.check_machine_document` (what :func:`read_machine` does).
     """
-    from auxbearing.machine_check import check_combinations
+    from auxbearing.machine.check import check_combinations
 
     allowed = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", *OTHER_TABLES)
     for key in data:
@@ -484,8 +484,8 @@ def read_bearing_spec(spec: str, base: Path | None, field: str) -> BearingGeomet
 
     ``field`` names it in an error (``touchdown.0.bearing``, ``candidate.1.bearing``).
     """
-    from auxbearing.bearing import get_bearing
-    from auxbearing.io import read_toml
+    from auxbearing.bearings.geometry import get_bearing
+    from auxbearing.common.io import read_toml
 
     path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
     if spec.lower().endswith(".toml") or path.is_file():
@@ -511,7 +511,7 @@ def machine_names() -> list[str]:
 def _document(spec: str | Path) -> tuple[dict, str, Path | None]:
     import tomllib
 
-    from auxbearing.io import existing_file, read_toml
+    from auxbearing.common.io import existing_file, read_toml
 
     text = str(spec)
     if text in _catalogue_files():
@@ -527,10 +527,10 @@ def _document(spec: str | Path) -> tuple[dict, str, Path | None]:
 def machine_table(spec: str | Path) -> tuple[dict, str, Path | None]:
     """The tables of a machine file or catalogue machine as read (values with units), its name and folder.
 
-    The whole file is checked first (:func:`auxbearing.machine_check.check_machine_document`): a file any
+    The whole file is checked first (:func:`auxbearing.machine.check.check_machine_document`): a file any
     command refuses, every command refuses, before any work.
     """
-    from auxbearing.machine_check import check_machine_document
+    from auxbearing.machine.check import check_machine_document
 
     data, name, base = _document(spec)
     check_machine_document(data, name, base)
@@ -539,7 +539,7 @@ def machine_table(spec: str | Path) -> tuple[dict, str, Path | None]:
 
 def read_machine(spec: str | Path) -> Machine:
     """A machine from a TOML file or a catalogue name (:func:`machine_names`), the whole file checked first."""
-    from auxbearing.machine_check import check_machine_document
+    from auxbearing.machine.check import check_machine_document
 
     data, name, base = _document(spec)
     return check_machine_document(data, name, base)
@@ -548,7 +548,7 @@ def read_machine(spec: str | Path) -> Machine:
 def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
     """The source paper's drop as a machine: one plane at the mass centre, tilt and axial motion locked.
 
-    ``rotor`` and ``case`` are :class:`auxbearing.drop_params.Rotor` and ``DropCase``.
+    ``rotor`` and ``case`` are :class:`auxbearing.analysis.drop_params.Rotor` and ``DropCase``.
     """
     values = {"radial_clearance": case.clearance, "race_mass": case.race_mass, "race_inertia": case.race_inertia,
               "line_stiffness": case.line_stiffness, "line_damping": case.line_damping,
@@ -572,8 +572,8 @@ def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
 
 def paper_rig() -> Machine:
     """The source paper's QJ202 drop with Table II and our stated defaults (a doctest helper)."""
-    from auxbearing.bearing import get_bearing
-    from auxbearing.drop_params import DropCase, Rotor
+    from auxbearing.analysis.drop_params import DropCase, Rotor
+    from auxbearing.bearings.geometry import get_bearing
 
     return planar_machine(get_bearing("QJ202"), Rotor(), DropCase())
 

@@ -1,6 +1,6 @@
 """Drops: run a machine from the moment its magnetic bearings let go, and summarise what happened.
 
-One code path: :func:`run_machine` integrates any :class:`~auxbearing.machine.Machine` with the
+One code path: :func:`run_machine` integrates any :class:`~auxbearing.machine.model.Machine` with the
 generic compiled integrator (:func:`auxbearing.core.integrate.dopri5`) on the machine right-hand
 side (:mod:`auxbearing.core.machine`) and its observer (:mod:`auxbearing.core.watch`).
 :func:`run_drop` is the source paper's planar drop (Sec. II.D, Eq. 17-26, Table II, read as
@@ -22,20 +22,21 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from auxbearing import __version__, interrupt
-from auxbearing.ballset import ballset_state
-from auxbearing.bearing import BearingGeometry, load_bearing
+from auxbearing import __version__
+from auxbearing.analysis.drop_params import PARAMETERS, DropCase, Param, Rotor, convert, from_mapping, read_config
+from auxbearing.analysis.statics import ISO76_BALL_STRESS, safety_factor
+from auxbearing.analysis.whirl import natural_frequency, timeline
+from auxbearing.bearings.ballset import ballset_state
+from auxbearing.bearings.geometry import BearingGeometry, load_bearing
+from auxbearing.common import interrupt
+from auxbearing.common.errors import ConvergenceError
+from auxbearing.common.io import to_jsonable
 from auxbearing.core import drive, probes
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
-from auxbearing.drop_params import PARAMETERS, DropCase, Param, Rotor, convert, from_mapping, read_config
-from auxbearing.errors import ConvergenceError
-from auxbearing.io import to_jsonable
-from auxbearing.machine import Machine, planar_machine
-from auxbearing.machine_kernel import journal_pressure
-from auxbearing.statics import ISO76_BALL_STRESS, safety_factor
-from auxbearing.whirl import natural_frequency, timeline
+from auxbearing.machine.model import Machine, planar_machine
+from auxbearing.machine.pack import journal_pressure
 
 __all__ = ["PARAMETERS", "DropCase", "MachineRun", "Param", "Rotor", "convert", "from_mapping", "journal_orbit",
            "planar_view", "read_config", "run_drop", "run_machine", "static_safety_factor", "whirl_window"]
@@ -175,17 +176,17 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
 
 
 def as_machine(machine) -> Machine:
-    """A :class:`~auxbearing.machine.Machine` as given, or read from a TOML path or an example machine's name."""
+    """A :class:`~auxbearing.machine.model.Machine` as given, or read from a TOML path or an example machine's name."""
     if isinstance(machine, Machine):
         return machine
-    from auxbearing.machine import read_machine
+    from auxbearing.machine.model import read_machine
 
     return read_machine(machine)
 
 
 def simulated_time(value, field: str = "duration") -> float:
     """A simulated time from a number (s) or a string with a unit ("50 ms") [s]; positive and finite."""
-    from auxbearing.errors import InputError
+    from auxbearing.common.errors import InputError
 
     seconds = convert(field, value, "time")
     if not (math.isfinite(seconds) and seconds > 0.0):
@@ -225,7 +226,7 @@ def journal_orbit(machine: Machine, duration: float, output_step: float) -> np.n
     """Journal axis (x, y) at the mass-centre plane on the grid k * output_step (no outputs built) [m].
 
     For fits that run many short simulations; a run that does not end ``ok`` raises
-    :class:`~auxbearing.errors.ConvergenceError` (a failed simulation is never padded and fitted).
+    :class:`~auxbearing.common.errors.ConvergenceError` (a failed simulation is never padded and fitted).
     """
     run = integrate_machine(machine, duration, output_step, None)
     if run.verdict != OK:
@@ -332,12 +333,12 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
 
 def _support_stiffness(plane) -> float:
     """Radial stiffness of ball set and mount in series near the rated load [N/m] (for the whip frequency)."""
-    from auxbearing.statics import solve_cases
+    from auxbearing.analysis.statics import solve_cases
 
     bs = plane.bearing
     load = max(100.0, 0.05 * bs.ball_count * 1e3)
     try:
-        from auxbearing.ballset import ballset_params
+        from auxbearing.bearings.ballset import ballset_params
 
         params = ballset_params(bs, plane.ball_constant)
         sol = solve_cases([[0.0, load, 0.0, 0.0, 0.0]], params, free=(False, True, True, False, False))
@@ -535,6 +536,6 @@ def _nominal_ball_constant(bearing: BearingGeometry, case: DropCase) -> float:
 @functools.lru_cache(maxsize=64)
 def _hertz_ball_constant(bearing: BearingGeometry) -> float:
     # exact elliptic integrals at the nominal angle: 15 ms, a tenth of a drop, so once per bearing
-    from auxbearing.contact import ball_constant
+    from auxbearing.analysis.contact import ball_constant
 
     return float(ball_constant(bearing))

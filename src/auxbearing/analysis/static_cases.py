@@ -1,7 +1,7 @@
 """A table of load cases (a duty cycle, a load spectrum) through the batched static solver.
 
 The CSV has one load case per row and its units in the header, read by
-:func:`auxbearing.unit_csv.read_unit_csv` (the same rules as a measured drop)::
+:func:`auxbearing.common.unit_csv.read_unit_csv` (the same rules as a measured drop)::
 
     # duty cycle of the touchdown bearing
     axial [N], radial [kN], moment [N*m]
@@ -11,7 +11,7 @@ The CSV has one load case per row and its units in the header, read by
 Columns are either the paper's planar loads ``axial`` (Fa), ``radial`` (Fr), ``moment`` (M)
 or the 5-DOF loads ``axial``, ``force_x``, ``force_y``, ``moment_x``, ``moment_y`` (short
 names ``Fa``, ``Fr``, ``M``, ``Fx``, ``Fy``, ``Mx``, ``My``); a missing column is zero. Every case
-is solved in one batched Newton call (:func:`auxbearing.statics.solve_loads`).
+is solved in one batched Newton call (:func:`auxbearing.analysis.statics.solve_loads`).
 """
 
 from __future__ import annotations
@@ -22,10 +22,10 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from auxbearing.bearing import BearingGeometry
-from auxbearing.errors import InputError
-from auxbearing.statics import load_distribution, solve_loads, validity_warnings_all
-from auxbearing.unit_csv import Column, read_unit_csv
+from auxbearing.analysis.statics import load_distribution, solve_loads, validity_warnings_all
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.common.errors import InputError
+from auxbearing.common.unit_csv import Column, read_unit_csv
 
 PLANAR = ("axial", "radial", "moment")
 FIVE_DOF = ("axial", "force_x", "force_y", "moment_x", "moment_y")
@@ -63,7 +63,7 @@ def read_load_cases(path: str | Path, field: str = "loads file", max_cases: int 
     Raises
     ------
     InputError
-        As :func:`auxbearing.unit_csv.read_unit_csv` (an unknown column is an error here, so a
+        As :func:`auxbearing.common.unit_csv.read_unit_csv` (an unknown column is an error here, so a
         misspelt load is never dropped silently), plus: no load column, planar and 5-DOF
         columns mixed, no rows, more rows than ``max_cases``.
     """
@@ -96,13 +96,13 @@ def load_cases(bearing: BearingGeometry | str, path: str | Path, table: tuple | 
         What :func:`read_load_cases` returned for ``path``, when the caller has read it already.
     **options
         ``axial_condition``, ``tilt``, ``ball_constant``, ``tol`` of
-        :func:`auxbearing.statics.solve_loads`; errors name the file line of the case.
+        :func:`auxbearing.analysis.statics.solve_loads`; errors name the file line of the case.
 
     Returns
     -------
     xarray.Dataset
-        That of :func:`~auxbearing.statics.load_distribution` (planar columns) or
-        :func:`~auxbearing.statics.solve_loads` (5-DOF columns), plus ``line``, the file
+        That of :func:`~auxbearing.analysis.statics.load_distribution` (planar columns) or
+        :func:`~auxbearing.analysis.statics.solve_loads` (5-DOF columns), plus ``line``, the file
         line of each case, and ``source_file`` in attrs.
     """
     data, lines = read_load_cases(path) if table is None else table

@@ -1,6 +1,6 @@
 """Which state a coast-down is in, and the reduced model that carries the states it can represent.
 
-After every full-dynamics window (:mod:`auxbearing.coastdown`) each touchdown plane is put in one state,
+After every full-dynamics window (:mod:`auxbearing.analysis.coastdown`) each touchdown plane is put in one state,
 from the window's whirl records (:data:`auxbearing.core.watch.WHIRL_FIELDS`) and onsets:
 
 * ``free``: out of contact all the window; the race spins down on its own bearing torque;
@@ -30,12 +30,12 @@ from typing import NamedTuple
 
 import numpy as np
 
+from auxbearing.analysis.whirl import classify_window
 from auxbearing.core import drive, spin
 from auxbearing.core import integrate as ig
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
 from auxbearing.core.watch import WHIRL_FIELDS
-from auxbearing.machine import DRAG_SPEED_SCALE, Machine
-from auxbearing.whirl import classify_window
+from auxbearing.machine.model import DRAG_SPEED_SCALE, Machine
 
 #: A race rolls on its journal when the contact's mean slip is within this fraction of the journal's surface speed.
 ROLL_SLIP = 0.02

@@ -13,17 +13,17 @@ from numbers import Real
 
 import pint
 
-from auxbearing.errors import InputError
-from auxbearing.params import EXTRA_UNITS as _EXTRA_UNITS
-from auxbearing.params import SI_UNITS as _SI_UNITS
-from auxbearing.params import with_article
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import EXTRA_UNITS as _EXTRA_UNITS
+from auxbearing.common.params import SI_UNITS as _SI_UNITS
+from auxbearing.common.params import with_article
 
 ureg = pint.UnitRegistry()
 ureg.define("rpm = revolution / minute")
 ureg.define("rps = revolution / second")
 Quantity = ureg.Quantity
 
-#: SI unit of each physical dimension the package reads (one table, kept in :mod:`auxbearing.params`).
+#: SI unit of each physical dimension the package reads (one table, kept in :mod:`auxbearing.common.params`).
 SI_UNITS = _SI_UNITS
 
 
@@ -59,7 +59,7 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
     >>> to_si("ball_diameter", "6 kg", "length")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: ball_diameter = '6 kg': unit kilogram is not a length (use e.g. m, mm, um)
+    auxbearing.common.errors.InputError: ball_diameter = '6 kg': unit kilogram is not a length (use e.g. m, mm, um)
     """
     si = SI_UNITS[dimension]
     if isinstance(value, bool):
@@ -106,7 +106,7 @@ def parse_quantity(field: str, value: object, dimension: str, default_unit: str 
     >>> to_si("ball_load", "10**400 N", "force")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: ball_load = '10**400 N': is not a finite number
+    auxbearing.common.errors.InputError: ball_load = '10**400 N': is not a finite number
     """
     quantity = value if isinstance(value, pint.Quantity) else _parse_string(field, str(value), dimension, default_unit)
     if dimension == "angular_speed" and "hertz" in str(quantity.units):

@@ -14,9 +14,9 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
-from auxbearing.bearing import BearingGeometry
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.common.errors import InputError
 from auxbearing.core import hertz
-from auxbearing.errors import InputError
 
 RACES = ("inner", "outer")
 
@@ -147,7 +147,7 @@ def ellipse_checks(bearing: BearingGeometry, result: dict) -> tuple[list[str], s
     reason returned). Short of that, an ellipse whose half-length, added to the contact angle, reaches
     past the groove shoulder is cut by the shoulder's edge, which carries a stress Hertz does not give
     (a warning). The shoulder is the one the machine model assumes
-    (:data:`auxbearing.machine.SHOULDER_FRACTION` of the ball diameter above the groove bottom), and the
+    (:data:`auxbearing.machine.model.SHOULDER_FRACTION` of the ball diameter above the groove bottom), and the
     test is the one its observer applies during a drop.
 
     Parameters
@@ -172,7 +172,7 @@ def ellipse_checks(bearing: BearingGeometry, result: dict) -> tuple[list[str], s
     >>> ellipse_checks(conformal, ball_contact(conformal, 1000.0))[1][:45]
     'the inner contact ellipse (semi-major axis 89'
     """
-    from auxbearing.machine import SHOULDER_FRACTION
+    from auxbearing.machine.model import SHOULDER_FRACTION
 
     radius = 0.5 * bearing.ball_diameter
     alpha = math.radians(result["contact_angle_deg"])

@@ -5,10 +5,10 @@ through its machine, ``verify``) calls :func:`check_machine_document` on it befo
 anything, so a file is accepted or refused alike whichever command reads it: a ``drop`` refuses a
 ``[criteria]`` table that ``verify`` would refuse, though the drop never judges by it.
 
-What is checked, each as one :class:`~auxbearing.errors.InputError` line naming the key as written:
+What is checked, each as one :class:`~auxbearing.common.errors.InputError` line naming the key as written:
 
 * every table and key (an unknown one is told the closest allowed name: "did you mean mount_damping?");
-* every value against its unit and rule (:mod:`auxbearing.params`), the ``[criteria]``, ``[verify]``
+* every value against its unit and rule (:mod:`auxbearing.common.params`), the ``[criteria]``, ``[verify]``
   and ``[[candidate]]`` tables through the readers ``verify`` uses, a ``[campaign]`` table through the
   campaign's own reader;
 * values legal one by one but impossible together (:func:`check_combinations`, named by both keys): a
@@ -26,11 +26,11 @@ import math
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from auxbearing.errors import InputError
-from auxbearing.params import display_value, unknown
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import display_value, unknown
 
 if TYPE_CHECKING:
-    from auxbearing.machine import Machine
+    from auxbearing.machine.model import Machine
 
 #: Tables of a machine file; a campaign file is a machine file whose ``[campaign]`` table is the campaign.
 MACHINE_FILE_TABLES = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", "criteria", "candidate",
@@ -64,15 +64,15 @@ def check_machine_document(data: dict, name: str = "machine", base: Path | None 
 
     Examples
     --------
-    >>> from auxbearing.machine import machine_table
+    >>> from auxbearing.machine.model import machine_table
     >>> data, name, base = machine_table("paper_rig")
     >>> check_machine_document({**data, "criteria": {"min_s00": 2}}, name)
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: criteria.min_s00 = 2: unknown key; allowed keys: min_s0, ...; did you mean min_s0?
+    auxbearing.common.errors.InputError: criteria.min_s00 = 2: unknown key; allowed keys: ...; did you mean min_s0?
     """
-    from auxbearing.io import MAX_TOML_DEPTH, nesting_depth
-    from auxbearing.machine import machine_from_mapping
+    from auxbearing.common.io import MAX_TOML_DEPTH, nesting_depth
+    from auxbearing.machine.model import machine_from_mapping
     from auxbearing.verify.cases import verify_settings
     from auxbearing.verify.criteria import read_criteria
 
@@ -117,7 +117,7 @@ def typed(table: dict | None, key: str, param=None) -> object:
 
 
 def _param(section: str, key: str):
-    from auxbearing.machine_params import TABLES
+    from auxbearing.machine.params import TABLES
 
     return TABLES[section][key]
 
@@ -125,7 +125,7 @@ def _param(section: str, key: str):
 def check_combinations(data: dict, machine: Machine) -> None:
     """Refuse values that are legal one by one but no machine can have together (both keys named).
 
-    Called by :func:`auxbearing.machine.machine_from_mapping` on every machine it builds, so a campaign's
+    Called by :func:`auxbearing.machine.model.machine_from_mapping` on every machine it builds, so a campaign's
     sample that lands on such a pair is an ``invalid_input`` record with the same sentence.
     """
     rotor = data.get("rotor") or {}
@@ -261,7 +261,7 @@ def check_candidates(data: dict, design: Machine, name: str = "machine", base: P
         return
     if not isinstance(specs, list) or not all(isinstance(s, (dict, str)) for s in specs):
         raise InputError.for_field("candidate", specs, "give [[candidate]] tables, each with a bearing")
-    from auxbearing.machine import machine_from_mapping
+    from auxbearing.machine.model import machine_from_mapping
     from auxbearing.verify.designs import candidate_tables
 
     for i, spec in enumerate(specs):
@@ -291,8 +291,8 @@ def check_candidates(data: dict, design: Machine, name: str = "machine", base: P
 
 def candidate_bearing(spec: object, field: str, base: Path | None = None):
     """The bearing a candidate names: a catalogue name, a bearing TOML file (relative to ``base``) or a table."""
-    from auxbearing.bearing import bearing_from_mapping
-    from auxbearing.machine import read_bearing_spec
+    from auxbearing.bearings.geometry import bearing_from_mapping
+    from auxbearing.machine.model import read_bearing_spec
 
     if isinstance(spec, dict):
         return bearing_from_mapping(spec, name=str(spec.get("name", "candidate")), prefix=field + ".")
@@ -313,13 +313,13 @@ def check_candidate_seat(design: Machine, bearing, where: str) -> None:
     ``where`` names the candidate as the user gave it (``"candidate.0 = 'QJ208'"``,
     ``"--candidates = 'QJ208'"``).
 
-    >>> from auxbearing.machine import read_machine
-    >>> from auxbearing.bearing import get_bearing
+    >>> from auxbearing.machine.model import read_machine
+    >>> from auxbearing.bearings.geometry import get_bearing
     >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("7202"), "candidate.0 = '7202'")
     >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("QJ208"), "candidate.0 = 'QJ208'")
     Traceback (most recent call last):
     ...
-    auxbearing.errors.InputError: candidate.0 = 'QJ208': its bore 40 mm does not fit the seat of touchdown.0 ...
+    auxbearing.common.errors.InputError: candidate.0 = 'QJ208': its bore 40 mm does not fit the seat of touchdown.0 ...
     """
     sizes = {key: getattr(bearing, key, None) for key in ("bore", "outside_diameter", "width")}
     for k, plane in enumerate(design.planes):
@@ -423,7 +423,7 @@ def stiffness_notes(machine: Machine, duration: float | None = None, names: dict
     than :data:`STIFF_STEPS` steps at it, the run is stiff: said before it starts, with the step and the
     steps it implies over ``duration`` (default the machine's ``drop.duration``). When the steps exceed the
     step budget ``drop.max_steps``, the run could only end at its budget: refused (an
-    :class:`~auxbearing.errors.InputError`). ``names`` maps a key (``touchdown.0.race_mass``) to how the
+    :class:`~auxbearing.common.errors.InputError`). ``names`` maps a key (``touchdown.0.race_mass``) to how the
     user gave it (``--race-mass``).
     """
     sim = machine.simulation

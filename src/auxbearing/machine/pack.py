@@ -11,11 +11,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from auxbearing.ballset import ballset_params
+from auxbearing.bearings.ballset import ballset_params
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core.hertz import journal_contact, journal_force_at_pressure
-from auxbearing.machine import DRAG_SPEED_SCALE, JOURNAL_COMPLIANCE, Machine, TouchdownPlane
+from auxbearing.machine.model import DRAG_SPEED_SCALE, JOURNAL_COMPLIANCE, Machine, TouchdownPlane
 
 
 class KernelModel(NamedTuple):

@@ -12,12 +12,12 @@ import math
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from auxbearing.bearings.materials import Material, check_positive, get_material, material_from_mapping
 from auxbearing.catalog import bearing_names as bearing_names  # re-exported: the CLI and tests use it here
 from auxbearing.catalog import bearing_table
-from auxbearing.errors import InputError
-from auxbearing.materials import Material, check_positive, get_material, material_from_mapping
-from auxbearing.params import as_typed
-from auxbearing.units import to_si
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import as_typed
+from auxbearing.common.units import to_si
 
 #: Bearing types and the contact pairs a ball makes with the raceways. ``axial_signs`` is the
 #: side of the raceway groove each pair's curvature centre lies on (+1 / -1), 0 for a
@@ -292,7 +292,7 @@ class BearingGeometry:
 
 def _material_table(material: Material) -> str | dict:
     """A catalogue name when the material is the catalogue's, otherwise its table with units."""
-    from auxbearing.materials import material_names
+    from auxbearing.bearings.materials import material_names
 
     if material.name in material_names() and get_material(material.name) == material:
         return material.name
@@ -431,9 +431,9 @@ def _catalogue_bearing(lowered: str) -> BearingGeometry | None:
 def read_toml(path: str | Path, field: str = "file") -> dict:
     """Read a TOML file, turning a missing file, a folder, a syntax error or deep nesting into a one-line error.
 
-    The one reader of TOML files (:func:`auxbearing.io.read_toml`), kept here under its old name.
+    The one reader of TOML files (:func:`auxbearing.common.io.read_toml`), kept here under its old name.
     """
-    from auxbearing.io import read_toml as read
+    from auxbearing.common.io import read_toml as read
 
     return read(path, field)
 

@@ -2,15 +2,15 @@
 
 ``docs/machine_file.md`` is this module's output, so it cannot drift from what the reader accepts::
 
-    python -m auxbearing.machine_keys > docs/machine_file.md
+    python -m auxbearing.machine.keys > docs/machine_file.md
 
-(a test compares the two). The rows come from the same :class:`~auxbearing.params.Param` tables the
+(a test compares the two). The rows come from the same :class:`~auxbearing.common.params.Param` tables the
 reader checks a file against.
 """
 
 from __future__ import annotations
 
-from auxbearing.params import Param, display_value, si_unit
+from auxbearing.common.params import Param, display_value, si_unit
 
 _INTRO = """# The machine file
 
@@ -29,7 +29,7 @@ or a candidate that does not fit the design's seat stops with one line naming th
 examples (`auxbearing machines`) are complete files to start from:
 `src/auxbearing/catalog/machines/*.toml`.
 
-This page is generated: `python -m auxbearing.machine_keys > docs/machine_file.md`.
+This page is generated: `python -m auxbearing.machine.keys > docs/machine_file.md`.
 
 | table | what it holds |
 |---|---|
@@ -59,7 +59,7 @@ _INTRO = _INTRO.replace("{life_row}", _LIFE_ROW)
 
 
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
-    from auxbearing.machine_params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN
+    from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN
     from auxbearing.verify.cases import VERIFY
     from auxbearing.verify.criteria import CRITERIA
 

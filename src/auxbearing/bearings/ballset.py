@@ -1,7 +1,7 @@
 """The ball-set model for people: pack a bearing for the kernels, evaluate it over many states.
 
 Mirror of :mod:`auxbearing.core.ballset` (the one contact-pair kernel): this module turns a
-:class:`~auxbearing.bearing.BearingGeometry` into the kernel's :class:`~auxbearing.core.ballset.BallSet`
+:class:`~auxbearing.bearings.geometry.BearingGeometry` into the kernel's :class:`~auxbearing.core.ballset.BallSet`
 (the Hertz tables against contact angle) and offers the array face :func:`ballset_state`.
 """
 
@@ -13,7 +13,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from auxbearing.bearing import BearingGeometry
+from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.core import ballset as kernel
 from auxbearing.core import hertz
 from auxbearing.core.ballset import BallSet
