@@ -37,9 +37,9 @@ DROP_TIMER = """
 import json, sys, time
 import auxbearing
 try:
-    from auxbearing.analysis.drop import run_drop
+    from auxbearing.paper.rig import run_drop
 except ImportError:
-    from auxbearing.analysis.drop import run_drop
+    from auxbearing.paper.rig import run_drop
 run_drop("QJ202")
 best = None
 for _ in range({repeats}):
@@ -58,11 +58,12 @@ def now():
     return time.perf_counter(), time.process_time()
 t0 = now()
 from auxbearing.analysis import drop
-from auxbearing.machine.model import paper_rig
+from auxbearing.machine.pack import pack
+from auxbearing.paper import rig
 t1 = now()
-drop._warm_up(paper_rig().kernel())
+drop._warm_up(pack(rig.paper_rig()))
 t2 = now()
-drop.run_drop("QJ202")
+rig.run_drop("QJ202")
 t3 = now()
 print(json.dumps({name: (b[0] - a[0], b[1] - a[1]) for name, a, b in
                   (("import", t0, t1), ("kernels", t1, t2), ("first_run_drop", t2, t3))}))

@@ -40,6 +40,7 @@ from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.machine.model import read_machine
+from auxbearing.machine.pack import pack
 from numpy_machine import make_rhs, normal_forces
 
 HERE = Path(__file__).parent
@@ -103,7 +104,7 @@ def bare_advance(machine, model, duration: float) -> tuple[float, int]:
 
 def scipy_run(machine, duration: float) -> dict:
     """solve_ivp RK45 on the numpy right-hand side with the same error test; wall, evaluations, peaks."""
-    model = machine.kernel()
+    model = pack(machine)
     core = model.machine
     atol = model.settings.atol
     finite = np.isfinite(atol)
@@ -131,7 +132,7 @@ def compare(name: str, duration: float, repeats: int) -> dict:
     run_machine(machine, 1e-3, lean=True)  # compile or load the kernels before timing
     ours_wall, ours_cpu, run = best_of(repeats, lambda: run_machine(machine, duration, lean=True))
     s = run.summary
-    model = machine.kernel()
+    model = pack(machine)
     bare_wall, bare_cpu, (_, evals) = best_of(repeats, lambda: bare_advance(machine, model, duration))
     cpu = time.process_time()
     peer = scipy_run(machine, duration)

@@ -23,7 +23,7 @@ import time
 import numpy as np
 from scipy import optimize
 
-from auxbearing.bearings.geometry import load_bearing
+from auxbearing.bearings.catalogue import load_bearing
 from auxbearing.core import ballset as bs
 from auxbearing.core import static as cs
 

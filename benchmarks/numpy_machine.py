@@ -4,7 +4,7 @@ Same equations as :func:`auxbearing.core.machine.rhs` (rigid rotor with static a
 gyroscopics, up to two touchdown planes with the journal/race line contact, an optional collar on the
 race face, the ball set, its damping and rolling resistance, Palmgren's load-free torque, a mount with
 dead band and hard stop, and the energy ledger), with every parameter read from the kernel's NamedTuples
-(``Machine.kernel().machine``). The rotor and contact algebra is scalar Python (``math``); the ball set is
+(``pack(machine).machine``). The rotor and contact algebra is scalar Python (``math``); the ball set is
 vectorised over balls and pairs in numpy, with the K_b(alpha) table of ``BallSet.tables`` read by the same
 cubic Hermite interpolation as :func:`auxbearing.core.ballset.table`. Nothing here is compiled.
 

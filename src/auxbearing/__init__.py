@@ -16,8 +16,8 @@ except PackageNotFoundError:  # running from a source tree without installation
 _LAZY = {
     "BearingGeometry": "auxbearing.bearings.geometry",
     "bearing_from_mapping": "auxbearing.bearings.geometry",
-    "get_bearing": "auxbearing.bearings.geometry",
-    "load_bearing": "auxbearing.bearings.geometry",
+    "get_bearing": "auxbearing.bearings.catalogue",
+    "load_bearing": "auxbearing.bearings.catalogue",
     "ConvergenceError": "auxbearing.common.errors",
     "InputError": "auxbearing.common.errors",
     "Material": "auxbearing.bearings.materials",
@@ -25,7 +25,7 @@ _LAZY = {
     "Machine": "auxbearing.machine.model",
     "read_machine": "auxbearing.machine.model",
     "run_machine": "auxbearing.analysis.drop",
-    "run_drop": "auxbearing.analysis.drop",
+    "run_drop": "auxbearing.paper.rig",
 }
 
 __all__ = ["__version__", *sorted(_LAZY)]

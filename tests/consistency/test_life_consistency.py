@@ -26,7 +26,8 @@ from auxbearing.analysis.life import (
     governing,
     race_constants,
 )
-from auxbearing.analysis.statics import ISO76_BALL_STRESS, SJOVALL_JR_HALF, STRIBECK_CONSTANT
+from auxbearing.analysis.statics import SJOVALL_JR_HALF, STRIBECK_CONSTANT
+from auxbearing.bearings.ratings import ISO76_BALL_STRESS
 from auxbearing.core import fatigue as cf
 
 

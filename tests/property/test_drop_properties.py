@@ -15,13 +15,15 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from auxbearing import get_bearing
-from auxbearing.analysis import drop as ad
 from auxbearing.bearings.ballset import ballset_params, ballset_state
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
-from auxbearing.machine.model import planar_machine
+from auxbearing.machine.pack import pack
+from auxbearing.paper import drop_params as dp
+from auxbearing.paper import rig
+from auxbearing.paper.rig import planar_machine
 
 BEARINGS = ("QJ202", "7202")
 
@@ -39,7 +41,7 @@ def test_peaks_converge_as_the_tolerance_tightens(name):
     RK4 step cannot be checked like this (NOTES item 7)."""
     out = []
     for tol in (1e-5, 1e-6, 1e-7):
-        _, s = ad.run_drop(name, None, ad.DropCase(rtol=tol, atol=tol, output_step=1e-4))
+        _, s = rig.run_drop(name, None, dp.DropCase(rtol=tol, atol=tol, output_step=1e-4))
         out.append(_peaks(s))
     for coarse, fine in itertools.pairwise(out):
         np.testing.assert_allclose(coarse, fine, rtol=1e-2)
@@ -49,18 +51,18 @@ def test_peaks_converge_as_the_tolerance_tightens(name):
 @pytest.mark.parametrize("name", BEARINGS)
 def test_peaks_insensitive_to_the_friction_regularisation(name):
     """v_eps 10 mm/s (default) versus 1 mm/s: peaks agree to 0.1 % (measured ~1e-5 %)."""
-    a = ad.run_drop(name, None, ad.DropCase(duration=0.04, output_step=1e-4))[1]
-    b = ad.run_drop(name, None, ad.DropCase(duration=0.04, output_step=1e-4, slip_velocity=1e-3))[1]
+    a = rig.run_drop(name, None, dp.DropCase(duration=0.04, output_step=1e-4))[1]
+    b = rig.run_drop(name, None, dp.DropCase(duration=0.04, output_step=1e-4, slip_velocity=1e-3))[1]
     np.testing.assert_allclose(_peaks(a), _peaks(b), rtol=1e-3)
     assert a["race_spin_up_ms"] == pytest.approx(b["race_spin_up_ms"], abs=0.05)
 
 
 def _energy_drift(name, clearance=2e-4, start=(0.0, 0.0), speed=628.0, tol=1e-9, duration=0.03):
-    rotor = ad.Rotor(eccentricity=0.0)
-    case = ad.DropCase(sliding_friction=0.0, rolling_friction=0.0, line_damping=0.0, ball_damping=0.0,
+    rotor = dp.Rotor(eccentricity=0.0)
+    case = dp.DropCase(sliding_friction=0.0, rolling_friction=0.0, line_damping=0.0, ball_damping=0.0,
                        clearance=clearance, start_x=start[0], start_y=start[1], speed=speed,
                        duration=duration, output_step=1e-4, rtol=tol, atol=tol)
-    km = planar_machine(get_bearing(name), rotor, case).kernel()
+    km = pack(planar_machine(get_bearing(name), rotor, case))
     y = km.y0.copy()
     n = round(duration / 1e-4) + 1
     grid = np.empty((n, y.size))
@@ -99,9 +101,9 @@ def test_rotor_comes_to_rest_where_statics_puts_it(name):
     """No unbalance, no spin, Table II damping: after 0.3 s the journal sits at
     y = y_b - s - (m_r g / K_l)^(9/10), with y_b from the ball set carrying (m_r + m_b) g."""
     bearing = get_bearing(name)
-    rotor = ad.Rotor(eccentricity=0.0)
-    case = ad.DropCase(speed=0.0, duration=0.3, output_step=1e-3)
-    ds, _ = ad.run_drop(bearing, rotor, case)
+    rotor = dp.Rotor(eccentricity=0.0)
+    case = dp.DropCase(speed=0.0, duration=0.3, output_step=1e-3)
+    ds, _ = rig.run_drop(bearing, rotor, case)
     line_stiffness = planar_machine(bearing, rotor, case).planes[0].line_stiffness
     weight = (rotor.mass + case.race_mass) * case.gravity
     params = ballset_params(bearing)

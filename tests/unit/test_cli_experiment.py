@@ -8,9 +8,9 @@ import pytest
 import xarray as xr
 from click.testing import CliRunner
 
-from auxbearing.analysis.drop import DropCase
 from auxbearing.cli.main import cli
 from auxbearing.experiment.synth import SensorModel, synthesize, write_csv
+from auxbearing.paper.drop_params import DropCase
 
 
 def run(*args):

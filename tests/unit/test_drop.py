@@ -8,9 +8,11 @@ import xarray as xr
 
 from auxbearing import InputError, get_bearing
 from auxbearing.analysis import drop as ad
-from auxbearing.analysis.drop_params import from_mapping, read_config
 from auxbearing.common.io import save_dataset
-from auxbearing.machine.model import planar_machine
+from auxbearing.paper import drop_params as dp
+from auxbearing.paper import rig
+from auxbearing.paper.drop_params import from_mapping, read_config
+from auxbearing.paper.rig import planar_machine
 
 QJ202 = get_bearing("QJ202")
 
@@ -18,7 +20,7 @@ QJ202 = get_bearing("QJ202")
 # ----------------------------------------------------------------------------- integration and grid
 def test_free_fall_is_exact_on_the_output_grid():
     """DOPRI5 and its dense output are exact for the quadratic free fall before the first impact."""
-    ds, s = ad.run_drop(QJ202, ad.Rotor(eccentricity=0.0), ad.DropCase(duration=5e-3, output_step=1e-5))
+    ds, s = rig.run_drop(QJ202, dp.Rotor(eccentricity=0.0), dp.DropCase(duration=5e-3, output_step=1e-5))
     t = ds.time.values
     assert t.size == 501 and t[-1] == pytest.approx(5e-3)
     np.testing.assert_allclose(ds.rotor_y.values, -0.5 * 9.80665 * t**2, atol=1e-13)
@@ -28,8 +30,8 @@ def test_free_fall_is_exact_on_the_output_grid():
 def test_unbalanced_free_rotor_keeps_its_mass_centre_on_a_straight_line():
     """Without contact or gravity the mass centre moves uniformly and the journal centre circles it at
     radius e (exact kinematics of the unbalance, Newton-Euler about the mass centre)."""
-    case = ad.DropCase(gravity=0.0, duration=4e-3, output_step=1e-4, rtol=1e-9, atol=1e-9)
-    ds, _ = ad.run_drop(QJ202, ad.Rotor(eccentricity=1e-5), case)
+    case = dp.DropCase(gravity=0.0, duration=4e-3, output_step=1e-4, rtol=1e-9, atol=1e-9)
+    ds, _ = rig.run_drop(QJ202, dp.Rotor(eccentricity=1e-5), case)
     th = ds.rotor_angle.values
     gx = ds.rotor_x.values + 1e-5 * np.cos(th)
     gy = ds.rotor_y.values + 1e-5 * np.sin(th)
@@ -39,7 +41,7 @@ def test_unbalanced_free_rotor_keeps_its_mass_centre_on_a_straight_line():
 
 
 def test_exact_peak_is_at_least_the_grid_peak_and_close_to_it():
-    ds, s = ad.run_drop(QJ202, None, ad.DropCase(duration=0.012, output_step=1e-6))
+    ds, s = rig.run_drop(QJ202, None, dp.DropCase(duration=0.012, output_step=1e-6))
     grid_peak = float(ds.normal_force.max())
     assert s["peak_contact_force_N"] >= grid_peak * (1 - 1e-9)
     assert s["peak_contact_force_N"] == pytest.approx(grid_peak, rel=2e-3)
@@ -48,21 +50,21 @@ def test_exact_peak_is_at_least_the_grid_peak_and_close_to_it():
 
 def test_first_impact_matches_free_fall_through_the_clearance():
     """The journal falls s = 0.2 mm; the race sags under its own weight meanwhile (sub-micrometre)."""
-    _, s = ad.run_drop(QJ202, ad.Rotor(eccentricity=0.0), ad.DropCase(duration=0.008, output_step=1e-4))
+    _, s = rig.run_drop(QJ202, dp.Rotor(eccentricity=0.0), dp.DropCase(duration=0.008, output_step=1e-4))
     assert s["first_impact_ms"] == pytest.approx(1e3 * math.sqrt(2 * 2e-4 / 9.80665), rel=3e-3)
 
 
 def test_progress_reports_do_not_change_the_result():
-    case = ad.DropCase(duration=0.012, output_step=1e-4)
+    case = dp.DropCase(duration=0.012, output_step=1e-4)
     seen = []
-    _, quiet = ad.run_drop(QJ202, None, case)
-    _, told = ad.run_drop(QJ202, None, case, progress=seen.append)
+    _, quiet = rig.run_drop(QJ202, None, case)
+    _, told = rig.run_drop(QJ202, None, case, progress=seen.append)
     assert seen[-1] == 1.0
     assert told["peak_contact_force_N"] == quiet["peak_contact_force_N"]
 
 
 def test_a_non_finite_run_ends_with_a_verdict_not_a_hang():
-    _, s = ad.run_drop(QJ202, None, ad.DropCase(gravity=1e300, duration=1e-3, output_step=1e-4))
+    _, s = rig.run_drop(QJ202, None, dp.DropCase(gravity=1e300, duration=1e-3, output_step=1e-4))
     assert s["verdict"] != "ok" and s["peak_contact_force_N"] is None
 
 
@@ -70,16 +72,16 @@ def test_journal_orbit_raises_instead_of_padding_a_failed_run():
     """The driver the experiment fit uses: a failed integration raises (never padded and fitted)."""
     from auxbearing.common.errors import ConvergenceError
 
-    machine = planar_machine(QJ202, ad.Rotor(), ad.DropCase(gravity=1e300, duration=1e-3))
+    machine = planar_machine(QJ202, dp.Rotor(), dp.DropCase(gravity=1e300, duration=1e-3))
     with pytest.raises(ConvergenceError, match="ended with"):
         ad.journal_orbit(machine, 1e-3, 1e-4)
-    good = ad.journal_orbit(planar_machine(QJ202, ad.Rotor(eccentricity=0.0), ad.DropCase()), 2e-3, 1e-4)
+    good = ad.journal_orbit(planar_machine(QJ202, dp.Rotor(eccentricity=0.0), dp.DropCase()), 2e-3, 1e-4)
     np.testing.assert_allclose(good[:, 1], -0.5 * 9.80665 * (np.arange(21) * 1e-4) ** 2, atol=1e-13)
 
 
 # ----------------------------------------------------------------------------- outputs
 def test_dataset_units_and_netcdf_round_trip(tmp_path):
-    ds, s = ad.run_drop("7202", None, ad.DropCase(duration=0.01, output_step=1e-4))
+    ds, s = rig.run_drop("7202", None, dp.DropCase(duration=0.01, output_step=1e-4))
     for name in ("rotor_x", "race_y", "normal_force", "friction_force", "penetration", "max_ball_stress",
                  "ball_load", "rotor_speed", "race_speed", "journal_x", "axial_force"):
         assert "units" in ds[name].attrs, name
@@ -95,7 +97,7 @@ def test_dataset_units_and_netcdf_round_trip(tmp_path):
 
 
 def test_four_point_has_two_pairs_and_same_geometry_otherwise():
-    ds, _ = ad.run_drop("QJ202", None, ad.DropCase(duration=0.009, output_step=1e-4))
+    ds, _ = rig.run_drop("QJ202", None, dp.DropCase(duration=0.009, output_step=1e-4))
     assert ds.sizes["pair"] == 2 and ds.sizes["ball"] == 11
 
 
@@ -113,7 +115,7 @@ def test_static_safety_factor_iso76():
 ])
 def test_rotor_validation(kwargs, message):
     with pytest.raises(InputError, match=message.replace("(", r"\(")):
-        ad.Rotor(**kwargs)
+        dp.Rotor(**kwargs)
 
 
 @pytest.mark.parametrize(("kwargs", "message"), [
@@ -130,25 +132,25 @@ def test_rotor_validation(kwargs, message):
 ])
 def test_drop_case_validation(kwargs, message):
     with pytest.raises(InputError, match=message):
-        ad.DropCase(**kwargs)
+        dp.DropCase(**kwargs)
 
 
 def test_strings_with_units_in_the_python_api():
     """Issue 10 item 9: the API takes strings with units as the command line does; a number is SI."""
-    case = ad.DropCase(speed="6000 rpm", clearance="0.2 mm", duration="150 ms")
+    case = dp.DropCase(speed="6000 rpm", clearance="0.2 mm", duration="150 ms")
     assert case.speed == pytest.approx(200 * math.pi) and case.clearance == pytest.approx(2e-4)
-    assert ad.DropCase(speed=628.0).speed == 628.0
-    assert ad.DropCase(speed="100 Hz").speed == pytest.approx(200 * math.pi)  # revolutions per second
-    assert ad.Rotor(eccentricity="10 um").eccentricity == pytest.approx(1e-5)
+    assert dp.DropCase(speed=628.0).speed == 628.0
+    assert dp.DropCase(speed="100 Hz").speed == pytest.approx(200 * math.pi)  # revolutions per second
+    assert dp.Rotor(eccentricity="10 um").eccentricity == pytest.approx(1e-5)
 
 
 def test_rotor_radius_plus_clearance_must_equal_bore_radius():
     with pytest.raises(InputError, match=r"must equal the race bore radius 7.5 mm"):
-        planar_machine(QJ202, ad.Rotor(radius=7.0e-3), ad.DropCase())
-    m = planar_machine(QJ202, ad.Rotor(radius=7.4e-3), ad.DropCase(clearance=1e-4))
+        planar_machine(QJ202, dp.Rotor(radius=7.0e-3), dp.DropCase())
+    m = planar_machine(QJ202, dp.Rotor(radius=7.4e-3), dp.DropCase(clearance=1e-4))
     assert m.planes[0].journal_radius == pytest.approx(7.4e-3)
     with pytest.raises(InputError, match="radial_clearance = '8 mm': must be below the race bore radius"):
-        planar_machine(QJ202, ad.Rotor(), ad.DropCase(clearance=8e-3))
+        planar_machine(QJ202, dp.Rotor(), dp.DropCase(clearance=8e-3))
 
 
 def test_messages_are_one_line():

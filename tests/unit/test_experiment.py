@@ -10,7 +10,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from auxbearing import get_bearing
-from auxbearing.analysis.drop import DropCase, Rotor, run_drop
 from auxbearing.bearings.ballset import ballset_params, ballset_state
 from auxbearing.common.errors import InputError
 from auxbearing.experiment.io import read_csv, read_measured, read_netcdf
@@ -24,7 +23,8 @@ from auxbearing.experiment.orbit import (
     preprocess,
 )
 from auxbearing.experiment.run import peak_table
-from auxbearing.machine.model import planar_machine
+from auxbearing.paper.drop_params import DropCase, Rotor
+from auxbearing.paper.rig import planar_machine, run_drop
 
 HEADER = "time [s], x [um], y [um], speed [rpm]\n"
 

@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from auxbearing.bearings.geometry import get_bearing
+from auxbearing.bearings.catalogue import get_bearing
 from auxbearing.common.errors import InputError
 from auxbearing.common.io import MAX_TOML_DEPTH, nesting_depth, read_toml
 from auxbearing.common.units import Quantity

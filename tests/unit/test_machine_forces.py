@@ -9,17 +9,18 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.analysis.drop_params import DropCase, Rotor
 from auxbearing.core import machine as cm
 from auxbearing.core.probes import plane_diagnostics
-from auxbearing.machine.model import planar_machine
+from auxbearing.machine.pack import pack
+from auxbearing.paper.drop_params import DropCase, Rotor
+from auxbearing.paper.rig import planar_machine
 
 QJ202 = get_bearing("QJ202")
 P0 = cm.N_ROTOR  # first state of plane 0
 
 
 def _kernel(rotor=None, **case):
-    return planar_machine(QJ202, rotor or Rotor(eccentricity=0.0), DropCase(**case)).kernel()
+    return pack(planar_machine(QJ202, rotor or Rotor(eccentricity=0.0), DropCase(**case)))
 
 
 def _state(km, **values):
@@ -107,7 +108,7 @@ def test_gyroscopic_terms_do_no_work():
     """The tilt equations' J_p Omega terms are orthogonal to the tilt rates (Friswell et al. 2010 Eq. 3.63)."""
     from auxbearing.machine.model import read_machine
 
-    km = read_machine("paper_rig_two_planes").with_simulation(gravity=0.0).kernel()
+    km = pack(read_machine("paper_rig_two_planes").with_simulation(gravity=0.0))
     y = km.y0.copy()
     y[cm.WX], y[cm.WY] = 0.3, -0.2
     out = _rhs(km, y)

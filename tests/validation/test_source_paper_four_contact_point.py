@@ -32,13 +32,14 @@ import numpy as np
 import pytest
 
 from auxbearing import get_bearing
-from auxbearing.analysis import drop as ad
 from auxbearing.analysis import statics as an
 from auxbearing.analysis.contact import ball_contact, contact_map, type_comparison
 from auxbearing.core import hertz
 from auxbearing.core.hertz import line_contact_constant
-from auxbearing.machine.model import planar_machine
 from auxbearing.paper import drop_paper as dp
+from auxbearing.paper import drop_params as dpar
+from auxbearing.paper import rig
+from auxbearing.paper.rig import planar_machine
 
 STEEL_207 = 2 * (1 - 0.3**2) / 207e9
 
@@ -106,7 +107,7 @@ def test_fig8_angular_contact_stress_above_four_point_by_a_growing_margin():
 
 def test_table_ii_line_contact_constant():
     assert float(line_contact_constant(11e-3)) == pytest.approx(1.468e9, rel=5e-3)
-    plane = planar_machine(get_bearing("QJ202"), ad.Rotor(), ad.DropCase()).planes[0]
+    plane = planar_machine(get_bearing("QJ202"), dpar.Rotor(), dpar.DropCase()).planes[0]
     assert plane.line_stiffness == pytest.approx(1.468e9, rel=5e-3)
 
 
@@ -117,9 +118,9 @@ def test_sec_2d_four_point_bearing_takes_more_force_but_less_stress(ball_constan
     [1634 MPa]". Both hold with the Hertz K_b and with the paper's K_b read as N/mm^1.5. Ours with the
     Hertz K_b: 657 N / 1660 MPa (QJ202) and 524 N / 1938 MPa (7202); with the paper's K_b the 7202
     force is 670 N (1.7x)."""
-    case = ad.DropCase(ball_constant=ball_constant, output_step=1e-4)
-    four = ad.run_drop("QJ202", None, case)[1]
-    angular = ad.run_drop("7202", None, case)[1]
+    case = dpar.DropCase(ball_constant=ball_constant, output_step=1e-4)
+    four = rig.run_drop("QJ202", None, case)[1]
+    angular = rig.run_drop("7202", None, case)[1]
     assert four["peak_contact_force_N"] > angular["peak_contact_force_N"]
     assert four["peak_ball_stress_MPa"] < angular["peak_ball_stress_MPa"]
     for ours, name, factor in ((four, "QJ202", 1.5), (angular, "7202", 2.0)):

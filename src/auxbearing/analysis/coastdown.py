@@ -53,9 +53,9 @@ from auxbearing.analysis.drop import (
     whirl_window,
 )
 from auxbearing.analysis.life import dynamic_load_rating
-from auxbearing.analysis.statics import ISO76_BALL_STRESS
 from auxbearing.analysis.thermal import HOUSING, JOURNAL, NODE_NAMES, build_network
 from auxbearing.bearings.ballset import ballset_state
+from auxbearing.bearings.ratings import ISO76_BALL_STRESS
 from auxbearing.common import interrupt
 from auxbearing.common.errors import InputError
 from auxbearing.core import drive

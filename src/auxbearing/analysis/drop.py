@@ -12,7 +12,6 @@ integration). Peaks from outside the model's range are not reported as results.
 
 from __future__ import annotations
 
-import functools
 import json
 import math
 import time
@@ -23,23 +22,21 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
-from auxbearing.analysis.drop_params import PARAMETERS, DropCase, Param, Rotor, convert, from_mapping, read_config
-from auxbearing.analysis.statics import ISO76_BALL_STRESS, safety_factor
 from auxbearing.analysis.whirl import natural_frequency, timeline
 from auxbearing.bearings.ballset import ballset_state
-from auxbearing.bearings.geometry import BearingGeometry, load_bearing
+from auxbearing.bearings.ratings import ISO76_BALL_STRESS, safety_factor
 from auxbearing.common import interrupt
 from auxbearing.common.errors import ConvergenceError
 from auxbearing.common.io import to_jsonable
+from auxbearing.common.params import convert
 from auxbearing.core import drive, probes
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
-from auxbearing.machine.model import Machine, planar_machine
-from auxbearing.machine.pack import journal_pressure
+from auxbearing.machine.model import Machine
+from auxbearing.machine.pack import journal_pressure, pack
 
-__all__ = ["PARAMETERS", "DropCase", "MachineRun", "Param", "Rotor", "convert", "from_mapping", "journal_orbit",
-           "planar_view", "read_config", "run_drop", "run_machine", "static_safety_factor", "whirl_window"]
+__all__ = ["MachineRun", "journal_orbit", "planar_view", "run_machine", "static_safety_factor", "whirl_window"]
 
 #: Verdicts besides the limits of :data:`auxbearing.core.watch.STOP_NAMES`.
 OK, STEP_BUDGET, WALL_BUDGET, INTEGRATION_FAILED = "ok", "step_budget", "wall_time_budget", "integration_failed"
@@ -121,7 +118,7 @@ class DriverState(NamedTuple):
 
 
 def start_driver(machine: Machine, model, duration: float, out_step: float) -> DriverState:
-    """The driver's arrays for a run of ``duration`` with output every ``out_step`` (``model``: machine.kernel())."""
+    """The driver's arrays for a run of ``duration`` with output every ``out_step`` (``model``: pack(machine))."""
     n_out = math.floor(duration / out_step + 1e-9) + 1
     grid = np.empty((n_out, cm.N_STATE))
     grid[0] = model.y0
@@ -137,7 +134,7 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
                       progress: Callable[[float, str], None] | None) -> Integration:
     """Run the compiled driver from the drop in slices of the step budget, checking the budgets between slices."""
     sim = machine.simulation
-    model = machine.kernel()
+    model = pack(machine)
     compile_s = _warm_up(model)
     if output_step is None:
         out_step, decimated = _output_step(machine, duration)
@@ -474,47 +471,6 @@ def _stop_sentence(verdict: str, where: str, t: float, value: float, machine: Ma
 
 
 # ----------------------------------------------------------------------------- the paper's planar drop
-def run_drop(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = None, case: DropCase | None = None,
-             progress: Callable[[float], None] | None = None) -> tuple[xr.Dataset, dict]:
-    """The source paper's rotor drop (Sec. II.D, corrected per docs/paper_notes.md) as a one-plane machine.
-
-    Returns the machine run's Dataset in its planar view (:func:`planar_view`) and a flat summary with the
-    paper-drop keys:
-    ``peak_contact_force_N``, ``peak_ball_stress_MPa`` (exact maxima: golden-section search on the
-    dense output), ``s0``, ``first_impact_ms``, ``impacts``, ``largest_bounce_um``, ``whirl``,
-    ``final_rotor_speed_rad_s``, ``final_race_speed_rad_s``, ``race_spin_up_ms``,
-    ``contact_fraction``, ``steps``, ``wall_time_s`` and the run's ``verdict``.
-
-    Examples
-    --------
-    >>> ds, s = run_drop("QJ202", case=DropCase(duration="20 ms"))
-    >>> s["verdict"], round(s["peak_contact_force_N"], 1)
-    ('ok', 657.1)
-    """
-    bearing = load_bearing(bearing)
-    rotor = rotor or Rotor()
-    case = case or DropCase()
-    machine = planar_machine(bearing, rotor, case)
-    run = run_machine(machine, progress=None if progress is None else (lambda f, _: progress(f)))
-    plane = run.summary["planes"][0]
-    keep = ("peak_contact_force_N", "peak_ball_stress_MPa", "s0", "first_impact_ms", "impacts", "largest_bounce_um",
-            "whirl", "whirl_frequency_Hz", "backward_whirl_onset_ms", "final_race_speed_rad_s", "race_spin_up_ms",
-            "contact_fraction", "peak_force_time_ms", "peak_stress_time_ms", "peak_ball_load_N")
-    summary = {"bearing": bearing.name, "type": bearing.type, "verdict": run.summary["verdict"],
-               "reason": run.summary["reason"], **{k: plane[k] for k in keep},
-               "final_rotor_speed_rad_s": run.summary["final_rotor_speed_rad_s"],
-               **{k: run.summary[k] for k in ("steps", "wall_time_s", "rejected_steps", "rhs_evaluations",
-                                               "compile_or_cache_load_s", "energy_balance_error")},
-               "rotor_radius_mm": machine.planes[0].journal_radius * 1e3, "clearance_mm": case.clearance * 1e3,
-               "line_stiffness_N_per_m10_9": machine.planes[0].line_stiffness,
-               "ball_constant_N_per_m1_5": _nominal_ball_constant(bearing, case),
-               "ball_constant_source": "override" if case.ball_constant is not None else "Hertz (Eq. 15)",
-               "sliding_friction": case.sliding_friction, "rtol": case.rtol}
-    ds = planar_view(run.dataset)
-    ds.attrs["summary"] = json.dumps(to_jsonable(summary))
-    return ds, summary
-
-
 def planar_view(ds: xr.Dataset) -> xr.Dataset:
     """A one-plane run's Dataset without the plane dimension.
 
@@ -527,15 +483,3 @@ def planar_view(ds: xr.Dataset) -> xr.Dataset:
     if names:
         out = out.rename(names).rename_dims({"ball_0": "ball", "pair_0": "pair"})
     return out
-
-
-def _nominal_ball_constant(bearing: BearingGeometry, case: DropCase) -> float:
-    return case.ball_constant if case.ball_constant is not None else _hertz_ball_constant(bearing)
-
-
-@functools.lru_cache(maxsize=64)
-def _hertz_ball_constant(bearing: BearingGeometry) -> float:
-    # exact elliptic integrals at the nominal angle: 15 ms, a tenth of a drop, so once per bearing
-    from auxbearing.analysis.contact import ball_constant
-
-    return float(ball_constant(bearing))

@@ -42,6 +42,7 @@ import rainflow
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.core import fatigue as cf
 from auxbearing.core.hertz import ball_raceway_curvature, ellipticity, stress_coefficient
+from auxbearing.machine.params import DENT_ACCUMULATION
 
 RACES = ("inner", "outer")
 #: Bounds on the raceway points per track (by default one point per dwell width of the peak contact).
@@ -80,7 +81,7 @@ def dynamic_load_rating(bearing) -> float:
     from auxbearing.bearings import ratings
 
     if isinstance(bearing, str):
-        from auxbearing.bearings.geometry import get_bearing
+        from auxbearing.bearings.catalogue import get_bearing
 
         bearing = get_bearing(bearing)
     row = getattr(bearing, "row", None)
@@ -102,7 +103,7 @@ def static_load_rating(bearing) -> float:
     from auxbearing.bearings import ratings
 
     if isinstance(bearing, str):
-        from auxbearing.bearings.geometry import get_bearing
+        from auxbearing.bearings.catalogue import get_bearing
 
         bearing = get_bearing(bearing)
     row = getattr(bearing, "row", None)
@@ -324,12 +325,6 @@ def _worst(damage, cycles, key, pair_first=False):
             "ranges": track["ranges"][mine], "means": track["means"][mine], "counts": track["counts"][mine]}
 
 
-#: How the dents of successive drops add up: ``same_spot``, every drop's largest dent on one spot of each race,
-#: depths added (conservative; right for the stationary outer ring, which a horizontal rotor always strikes
-#: at the bottom); ``spread``, the rotating inner race meets the drop at a random angle, so its dents fall on
-#: spots spread uniformly around the raceway (one spot a contact-ellipse width long) and a spot reaches the
-#: limit only when enough drops land on it; the outer race keeps ``same_spot``.
-DENT_ACCUMULATION = ("same_spot", "spread")
 
 
 def _drops_until_a_spot_fills(hits: float, spots: float) -> float:

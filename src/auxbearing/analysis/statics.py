@@ -33,15 +33,15 @@ import xarray as xr
 
 from auxbearing import __version__
 from auxbearing.bearings import ballset
-from auxbearing.bearings.geometry import BearingGeometry, load_bearing
+from auxbearing.bearings.catalogue import load_bearing
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.bearings.ratings import ISO76_BALL_STRESS, safety_factor
 from auxbearing.common.errors import ConvergenceError, InputError
 from auxbearing.common.units import to_si, ureg
 from auxbearing.core import statics as kernel
 from auxbearing.core.ballset import BallSet
 from auxbearing.core.statics import CONVERGED, DEFAULT_MAX_ITER, DEFAULT_TOL, STATUS_TEXT, StaticSolution
 
-#: ISO 76:2006 permissible contact stress at C0 for ball bearings (not self-aligning) [Pa].
-ISO76_BALL_STRESS = 4200e6
 #: Stribeck's Q_max = 4.37 Fr / (Z cos alpha) for zero clearance, point contact: Stribeck (1901),
 #: Harris & Kotzalas (2007) Essential Concepts Ch. 7; NSK CAT. E728g Sec. 5.1, Eq. (4).
 STRIBECK_CONSTANT = 4.37
@@ -123,24 +123,6 @@ def solve_cases(
             float(res[i]), int(its[i]), i,
         )
     return StaticSolution(u, res, rel, its, status)
-
-
-def safety_factor(max_stress: np.ndarray | float) -> np.ndarray:
-    """Static safety factor s0 = (4200 MPa / sigma_max)^3 (ISO 76:2006 with Hertz sigma ~ Q^(1/3)).
-
-    Parameters
-    ----------
-    max_stress : float or array
-        Largest Hertz contact stress [Pa]; zero gives infinity.
-
-    Examples
-    --------
-    >>> float(safety_factor(4200e6)), float(safety_factor(2100e6))
-    (1.0, 8.0)
-    """
-    sigma = np.asarray(max_stress, float)
-    with np.errstate(divide="ignore", over="ignore"):  # a vanishing stress gives an infinite s0, not a warning
-        return np.where(sigma > 0.0, (ISO76_BALL_STRESS / np.where(sigma > 0.0, sigma, 1.0)) ** 3, np.inf)
 
 
 #: Largest neglected second-order tilt displacement r_ic theta^2 / 2, as a fraction of the largest

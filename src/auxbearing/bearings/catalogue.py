@@ -15,10 +15,14 @@ bearing, "7202 B..." its 40 deg variant "7202-40".
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 from functools import cache
+from pathlib import Path
 
+from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping, read_toml
+from auxbearing.catalog import bearing_table
 from auxbearing.common.errors import InputError
 
 #: Words that make a name a hybrid (silicon-nitride balls): "hybrid", or SKF's /HC5 suffix.
@@ -96,7 +100,6 @@ def resolve_single(base: str, field: str = "bearing"):
     >>> resolve_single("7208 BECBP").name, resolve_single("7202 BEP").name, resolve_single("qj202").name
     ('7208', '7202-40', 'QJ202')
     """
-    from auxbearing.bearings.geometry import get_catalogue_entry
     from auxbearing.bearings.series import series_entries
 
     toml = _toml_entries()
@@ -195,7 +198,6 @@ def entries(types=None, bore_range=None) -> list[dict]:
     ['QJ208', 'QJ308']
     """
     from auxbearing.bearings import ratings
-    from auxbearing.bearings.geometry import get_catalogue_entry
     from auxbearing.bearings.series import series_data, series_entries
     from auxbearing.catalog import bearing_table
 
@@ -234,3 +236,66 @@ def _row(b, series, published, estimated, rule, ratings) -> dict:
     if published:
         row["published_sources"] = sorted({p["source"] for p in published.values()})
     return row
+
+
+def _catalogue() -> dict[str, dict]:
+    return bearing_table()
+
+
+def get_bearing(name: str, field: str = "bearing"):
+    """A catalogue bearing, hybrid or duplex set by name as makers write it (case-insensitive).
+
+    ``field`` names the input in an error. Single bearings are :class:`BearingGeometry`; a name with
+    DB, DF or DT gives a :class:`~auxbearing.bearings.duplex.DuplexSet`; "hybrid" (or SKF's /HC5)
+    puts silicon-nitride balls in (:mod:`auxbearing.bearings.catalogue` reads the names).
+
+    Examples
+    --------
+    >>> get_bearing("qj202").type, get_bearing("6205").ball_count, get_bearing("7208 DB").arrangement
+    ('four_point', 9, 'DB')
+    """
+    return lookup(name, field)
+
+
+def get_catalogue_entry(key: str) -> BearingGeometry:
+    """The ``catalog/bearings.toml`` entry named exactly ``key``."""
+    found = _catalogue_bearing(key.strip().lower())
+    if found is None:
+        raise InputError.for_field("bearing", key, "not in catalog/bearings.toml")
+    return found
+
+
+@functools.cache
+def _catalogue_bearing(lowered: str) -> BearingGeometry | None:
+    # A catalogue bearing is read through the unit library once per process (a frozen dataclass, so
+    # sharing it is safe): a campaign builds a machine per sample and spent most of that time here.
+    for key, entry in _catalogue().items():
+        if key.lower() == lowered:
+            return bearing_from_mapping(entry, name=key, prefix=f"catalogue {key}.")
+    return None
+
+
+def load_bearing(spec: str | Path | BearingGeometry, field: str = "bearing", sets: bool = False):
+    """A bearing from a catalogue name, a TOML path with a ``[bearing]`` table, or as given.
+
+    ``field`` names the input in an error (``--bearing`` on the command line). A duplex set
+    ("7208 DB") is returned only with ``sets=True``; the single-bearing analyses refuse it by name.
+    """
+    if isinstance(spec, BearingGeometry):
+        return spec
+    if sets and type(spec).__name__ == "DuplexSet":
+        return spec
+    text = str(spec)
+    if not text.strip():
+        raise InputError.for_field(field, text, "is empty; give a catalogue name (" + ", ".join(_catalogue())
+                                   + ") or a TOML file")
+    if text.lower().endswith(".toml") or Path(text).exists():
+        data = read_toml(text, field)
+        if "bearing" not in data:
+            raise InputError.for_field(field, text, "has no [bearing] table")
+        return bearing_from_mapping(data["bearing"], name=Path(text).stem)
+    found = get_bearing(text, field)
+    if not sets and not isinstance(found, BearingGeometry):
+        raise InputError.for_field(field, text, f"is a matched set ({found.label}); this analysis takes one "
+                                   "bearing (give its row, e.g. " + repr(found.row.name) + ")")
+    return found

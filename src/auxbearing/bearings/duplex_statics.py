@@ -206,8 +206,8 @@ def load_distribution(pair: DuplexSet, axial=0.0, radial=0.0, moment=0.0, tilt: 
     import xarray as xr
 
     from auxbearing import __version__
-    from auxbearing.analysis.statics import safety_factor
     from auxbearing.bearings.ballset import ballset_state
+    from auxbearing.bearings.ratings import safety_factor
 
     fa, fr, mm = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, float)) for v in (axial, radial, moment)))
     if tilt not in ("free", "fixed"):

@@ -7,14 +7,12 @@ Analysis*, 5th ed. (2007), Essential Concepts, Ch. 2 ("ball bearing macrogeometr
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 from auxbearing.bearings.materials import Material, check_positive, get_material, material_from_mapping
 from auxbearing.catalog import bearing_names as bearing_names  # re-exported: the CLI and tests use it here
-from auxbearing.catalog import bearing_table
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import as_typed
 from auxbearing.common.units import to_si
@@ -61,6 +59,7 @@ class BearingGeometry:
 
     Examples
     --------
+    >>> from auxbearing import get_bearing
     >>> b = get_bearing("QJ202")
     >>> round(b.gamma, 5), round(b.curvature_centre_distance * 1e3, 4)
     (0.19274, 0.24)
@@ -211,6 +210,7 @@ class BearingGeometry:
 
         Examples
         --------
+        >>> from auxbearing import get_bearing
         >>> round(get_bearing("6205").ball_mass * 1e3, 3), round(get_bearing("6205 hybrid").ball_mass * 1e3, 3)
         (2.055, 0.842)
         """
@@ -240,6 +240,7 @@ class BearingGeometry:
 
         Examples
         --------
+        >>> from auxbearing import get_bearing
         >>> b = get_bearing("QJ202")
         >>> bearing_from_mapping(b.to_table(), name=b.name) == b
         True
@@ -389,45 +390,6 @@ def _material(value: object, prefix: str) -> Material:
     raise InputError.for_field(prefix.rstrip("."), value, "must be a catalogue name or a table")
 
 
-def _catalogue() -> dict[str, dict]:
-    return bearing_table()
-
-
-def get_bearing(name: str, field: str = "bearing"):
-    """A catalogue bearing, hybrid or duplex set by name as makers write it (case-insensitive).
-
-    ``field`` names the input in an error. Single bearings are :class:`BearingGeometry`; a name with
-    DB, DF or DT gives a :class:`~auxbearing.bearings.duplex.DuplexSet`; "hybrid" (or SKF's /HC5)
-    puts silicon-nitride balls in (:mod:`auxbearing.bearings.catalogue` reads the names).
-
-    Examples
-    --------
-    >>> get_bearing("qj202").type, get_bearing("6205").ball_count, get_bearing("7208 DB").arrangement
-    ('four_point', 9, 'DB')
-    """
-    from auxbearing.bearings.catalogue import lookup
-
-    return lookup(name, field)
-
-
-def get_catalogue_entry(key: str) -> BearingGeometry:
-    """The ``catalog/bearings.toml`` entry named exactly ``key``."""
-    found = _catalogue_bearing(key.strip().lower())
-    if found is None:
-        raise InputError.for_field("bearing", key, "not in catalog/bearings.toml")
-    return found
-
-
-@functools.cache
-def _catalogue_bearing(lowered: str) -> BearingGeometry | None:
-    # A catalogue bearing is read through the unit library once per process (a frozen dataclass, so
-    # sharing it is safe): a campaign builds a machine per sample and spent most of that time here.
-    for key, entry in _catalogue().items():
-        if key.lower() == lowered:
-            return bearing_from_mapping(entry, name=key, prefix=f"catalogue {key}.")
-    return None
-
-
 def read_toml(path: str | Path, field: str = "file") -> dict:
     """Read a TOML file, turning a missing file, a folder, a syntax error or deep nesting into a one-line error.
 
@@ -436,29 +398,3 @@ def read_toml(path: str | Path, field: str = "file") -> dict:
     from auxbearing.common.io import read_toml as read
 
     return read(path, field)
-
-
-def load_bearing(spec: str | Path | BearingGeometry, field: str = "bearing", sets: bool = False):
-    """A bearing from a catalogue name, a TOML path with a ``[bearing]`` table, or as given.
-
-    ``field`` names the input in an error (``--bearing`` on the command line). A duplex set
-    ("7208 DB") is returned only with ``sets=True``; the single-bearing analyses refuse it by name.
-    """
-    if isinstance(spec, BearingGeometry):
-        return spec
-    if sets and type(spec).__name__ == "DuplexSet":
-        return spec
-    text = str(spec)
-    if not text.strip():
-        raise InputError.for_field(field, text, "is empty; give a catalogue name (" + ", ".join(_catalogue())
-                                   + ") or a TOML file")
-    if text.lower().endswith(".toml") or Path(text).exists():
-        data = read_toml(text, field)
-        if "bearing" not in data:
-            raise InputError.for_field(field, text, "has no [bearing] table")
-        return bearing_from_mapping(data["bearing"], name=Path(text).stem)
-    found = get_bearing(text, field)
-    if not sets and not isinstance(found, BearingGeometry):
-        raise InputError.for_field(field, text, f"is a matched set ({found.label}); this analysis takes one "
-                                   "bearing (give its row, e.g. " + repr(found.row.name) + ")")
-    return found

@@ -183,3 +183,25 @@ def set_factor(rows: int) -> float:
     1.6245
     """
     return rows**ROW_EXPONENT
+
+
+#: ISO 76:2006 permissible contact stress at C0 for ball bearings (not self-aligning) [Pa].
+ISO76_BALL_STRESS = 4200e6
+
+
+def safety_factor(max_stress: np.ndarray | float) -> np.ndarray:
+    """Static safety factor s0 = (4200 MPa / sigma_max)^3 (ISO 76:2006 with Hertz sigma ~ Q^(1/3)).
+
+    Parameters
+    ----------
+    max_stress : float or array
+        Largest Hertz contact stress [Pa]; zero gives infinity.
+
+    Examples
+    --------
+    >>> float(safety_factor(4200e6)), float(safety_factor(2100e6))
+    (1.0, 8.0)
+    """
+    sigma = np.asarray(max_stress, float)
+    with np.errstate(divide="ignore", over="ignore"):  # a vanishing stress gives an infinite s0, not a warning
+        return np.where(sigma > 0.0, (ISO76_BALL_STRESS / np.where(sigma > 0.0, sigma, 1.0)) ** 3, np.inf)

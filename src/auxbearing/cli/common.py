@@ -86,7 +86,7 @@ def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: s
 
     Errors name the options as typed (``option``, ``--contact-angle``, ``--groove-ratio``) with the values as typed.
     """
-    from auxbearing.bearings.geometry import load_bearing
+    from auxbearing.bearings.catalogue import load_bearing
     from auxbearing.common.units import to_si
 
     bearing = load_bearing(spec, option)

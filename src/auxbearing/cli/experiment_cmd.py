@@ -105,13 +105,13 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from auxbearing.analysis.drop import DropCase, Rotor, read_config
     from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.common.units import to_si
     from auxbearing.experiment.fit import FitOptions
     from auxbearing.experiment.io import read_measured
     from auxbearing.experiment.orbit import Preprocessing
     from auxbearing.experiment.run import run_experiment
+    from auxbearing.paper.drop_params import DropCase, Rotor, read_config
     unit_map = _units(units)
     cfg_bearing, rotor_kw, drop_kw = None, {}, {}
     if config is not None:

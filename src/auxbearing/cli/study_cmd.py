@@ -92,7 +92,8 @@ def bearings_command(as_json):
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.bearings.geometry import bearing_names, get_bearing
+    from auxbearing.bearings.catalogue import get_bearing
+    from auxbearing.bearings.geometry import bearing_names
     from auxbearing.bearings.materials import get_material, material_names
     rows = [get_bearing(name).describe() for name in bearing_names()]
     materials = [{"name": m, "elastic_modulus_GPa": get_material(m).elastic_modulus / 1e9,

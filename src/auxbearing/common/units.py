@@ -13,10 +13,10 @@ from numbers import Real
 
 import pint
 
+from auxbearing.common.dimensions import EXTRA_UNITS as _EXTRA_UNITS
+from auxbearing.common.dimensions import SI_UNITS as _SI_UNITS
+from auxbearing.common.dimensions import with_article
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import EXTRA_UNITS as _EXTRA_UNITS
-from auxbearing.common.params import SI_UNITS as _SI_UNITS
-from auxbearing.common.params import with_article
 
 ureg = pint.UnitRegistry()
 ureg.define("rpm = revolution / minute")

@@ -441,10 +441,11 @@ def rhs(t, y, m, out):
 
     Examples
     --------
-    >>> from auxbearing.machine.model import paper_rig
+    >>> from auxbearing.paper.rig import paper_rig
+    >>> from auxbearing.machine.pack import pack
     >>> from auxbearing.core.machine import N_STATE, VY
     >>> import numpy as np
-    >>> model = paper_rig().kernel()
+    >>> model = pack(paper_rig())
     >>> d = np.zeros(N_STATE); rhs(0.0, model.y0, model.machine, d)
     >>> round(float(d[VY]), 5)  # the journal centre falls freely at the start
     -9.80665

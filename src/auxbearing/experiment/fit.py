@@ -33,11 +33,12 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
-from auxbearing.analysis.drop import DropCase, Rotor, journal_orbit, run_drop
+from auxbearing.analysis.drop import journal_orbit
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.common.errors import InputError
 from auxbearing.experiment.orbit import lowpass
-from auxbearing.machine.model import planar_machine
+from auxbearing.paper.drop_params import DropCase, Rotor
+from auxbearing.paper.rig import planar_machine, run_drop
 
 #: Fitted parameters: (name, unit shown, factor SI -> shown, central-difference step [SI]).
 FIT_PARAMETERS = (

@@ -25,9 +25,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from auxbearing.common.dimensions import with_article
 from auxbearing.common.errors import InputError
 from auxbearing.common.io import existing_file
-from auxbearing.common.params import with_article
 from auxbearing.common.unit_csv import MAX_MAGNITUDE, Column, read_unit_csv, unit_scale
 
 #: Dimension of each channel (keys of :data:`auxbearing.common.units.SI_UNITS`), required or not.

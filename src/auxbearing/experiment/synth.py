@@ -22,8 +22,10 @@ from pathlib import Path
 import numpy as np
 from scipy import signal
 
-from auxbearing.analysis.drop import DropCase, Rotor, run_drop
-from auxbearing.bearings.geometry import BearingGeometry, load_bearing
+from auxbearing.bearings.catalogue import load_bearing
+from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.paper.drop_params import DropCase, Rotor
+from auxbearing.paper.rig import run_drop
 
 #: Folder of the shipped example data (inside the package, next to the catalogue).
 EXAMPLE_DIR = Path(__file__).resolve().parents[1] / "catalog" / "experiments"
@@ -79,7 +81,7 @@ def synthesize(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = N
     Parameters
     ----------
     bearing, rotor, case :
-        As :func:`auxbearing.analysis.drop.run_drop`; default case: Table II with
+        As :func:`auxbearing.paper.rig.run_drop`; default case: Table II with
         :data:`TRUE_CASE`.
     sensor : SensorModel, optional
     duration : float

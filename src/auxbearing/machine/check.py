@@ -314,7 +314,7 @@ def check_candidate_seat(design: Machine, bearing, where: str) -> None:
     ``"--candidates = 'QJ208'"``).
 
     >>> from auxbearing.machine.model import read_machine
-    >>> from auxbearing.bearings.geometry import get_bearing
+    >>> from auxbearing.bearings.catalogue import get_bearing
     >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("7202"), "candidate.0 = '7202'")
     >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("QJ208"), "candidate.0 = 'QJ208'")
     Traceback (most recent call last):

@@ -15,7 +15,6 @@ from dataclasses import dataclass, field, replace
 from functools import cache
 from importlib import resources
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping
 from auxbearing.common.errors import InputError
@@ -25,6 +24,7 @@ from auxbearing.core.hertz import line_contact_constant
 from auxbearing.machine.params import (
     AXIAL_DIRECTIONS,
     COASTDOWN,
+    DENT_ACCUMULATION,
     G0,
     LIFE,
     SIMULATION,
@@ -34,9 +34,6 @@ from auxbearing.machine.params import (
     hollow_cylinder,
     steel_column_stiffness,
 )
-
-if TYPE_CHECKING:
-    from auxbearing.machine.pack import KernelModel
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
 JOURNAL_COMPLIANCE = (1.0 - 0.3**2) / 207e9
@@ -184,12 +181,10 @@ class Life:
     """What the bearings must survive."""
 
     required_drops: float = default("life", "required_drops")
-    #: how the dents of successive drops add up (:data:`auxbearing.analysis.life.DENT_ACCUMULATION`)
+    #: how the dents of successive drops add up (:data:`auxbearing.machine.params.DENT_ACCUMULATION`)
     dent_accumulation: str = "same_spot"
 
     def __post_init__(self) -> None:
-        from auxbearing.analysis.life import DENT_ACCUMULATION
-
         for p in LIFE:
             object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
         if self.dent_accumulation not in DENT_ACCUMULATION:
@@ -250,12 +245,6 @@ class Machine:
         simulation = copy.copy(self.simulation)
         object.__setattr__(simulation, "max_wall_time", math.inf)  # not a user input: past the file's checks
         return replace(self, simulation=simulation)
-
-    def kernel(self) -> KernelModel:
-        """Pack for :mod:`auxbearing.core.machine` (:func:`auxbearing.machine.pack.pack`)."""
-        from auxbearing.machine.pack import pack
-
-        return pack(self)
 
     def describe(self) -> dict:
         """Inputs with units in the keys, for files and reports."""
@@ -484,7 +473,7 @@ def read_bearing_spec(spec: str, base: Path | None, field: str) -> BearingGeomet
 
     ``field`` names it in an error (``touchdown.0.bearing``, ``candidate.1.bearing``).
     """
-    from auxbearing.bearings.geometry import get_bearing
+    from auxbearing.bearings.catalogue import get_bearing
     from auxbearing.common.io import read_toml
 
     path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
@@ -545,39 +534,6 @@ def read_machine(spec: str | Path) -> Machine:
     return check_machine_document(data, name, base)
 
 
-def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
-    """The source paper's drop as a machine: one plane at the mass centre, tilt and axial motion locked.
-
-    ``rotor`` and ``case`` are :class:`auxbearing.analysis.drop_params.Rotor` and ``DropCase``.
-    """
-    values = {"radial_clearance": case.clearance, "race_mass": case.race_mass, "race_inertia": case.race_inertia,
-              "line_stiffness": case.line_stiffness, "line_damping": case.line_damping,
-              "ball_damping": case.ball_damping, "ball_constant": case.ball_constant,
-              "sliding_friction": case.sliding_friction, "rolling_friction": case.rolling_friction,
-              "slip_velocity": case.slip_velocity, "journal_radius": rotor.radius}
-    if rotor.radius is not None and bearing.bore is not None and abs(rotor.radius + case.clearance
-                                                                      - 0.5 * bearing.bore) > 1e-9:
-        raise InputError.for_field(
-            "rotor.radius", f"{rotor.radius * 1e3:g} mm",
-            f"rotor.radius + drop.clearance = {(rotor.radius + case.clearance) * 1e3:g} mm must equal the race bore "
-            f"radius {bearing.bore * 500:g} mm (bore {bearing.bore * 1e3:g} mm); leave rotor.radius unset to derive it")
-    plane = make_plane(bearing, values, bearing.name, 0)
-    machine_rotor = MachineRotor(rotor.mass, rotor.polar_inertia, None, case.speed, rotor.eccentricity,
-                                 case.unbalance_phase, start_x=case.start_x, start_y=case.start_y)
-    sim = Simulation(duration=case.duration, output_step=case.output_step, rtol=case.rtol, atol=case.atol,
-                     max_step=case.max_step, gravity=case.gravity)
-    return Machine(f"paper drop on {bearing.name}", machine_rotor, (plane,), "horizontal", sim,
-                   "source paper Sec. II.D, Table II")
-
-
-def paper_rig() -> Machine:
-    """The source paper's QJ202 drop with Table II and our stated defaults (a doctest helper)."""
-    from auxbearing.analysis.drop_params import DropCase, Rotor
-    from auxbearing.bearings.geometry import get_bearing
-
-    return planar_machine(get_bearing("QJ202"), Rotor(), DropCase())
-
-
 __all__ = ["G0", "Coastdown", "Life", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
-           "machine_from_mapping", "machine_names", "machine_table", "make_plane", "paper_rig", "planar_machine",
+           "machine_from_mapping", "machine_names", "machine_table", "make_plane",
            "read_bearing_spec", "read_machine"]

@@ -214,3 +214,10 @@ def hollow_cylinder(density: float, inner: float, outer: float, width: float) ->
     """
     mass = density * math.pi * (outer**2 - inner**2) * width
     return mass, 0.5 * mass * (inner**2 + outer**2)
+
+#: How the dents of successive drops add up: ``same_spot``, every drop's largest dent on one spot of each race,
+#: depths added (conservative; right for the stationary outer ring, which a horizontal rotor always strikes
+#: at the bottom); ``spread``, the rotating inner race meets the drop at a random angle, so its dents fall on
+#: spots spread uniformly around the raceway (one spot a contact-ellipse width long) and a spot reaches the
+#: limit only when enough drops land on it; the outer race keeps ``same_spot``.
+DENT_ACCUMULATION = ("same_spot", "spread")

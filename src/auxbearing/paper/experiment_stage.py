@@ -11,10 +11,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from auxbearing.analysis.drop import DropCase, Rotor, from_mapping
 from auxbearing.experiment.run import run_experiment
 from auxbearing.experiment.synth import EXAMPLE_DIR
 from auxbearing.paper.claims import CANNOT_CHECK, Assumption, Claim
+from auxbearing.paper.drop_params import DropCase, Rotor, from_mapping
 from auxbearing.report.model import Figure, Section
 
 #: Source paper Sec. III: max stress computed from the measured drops.

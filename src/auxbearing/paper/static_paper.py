@@ -11,7 +11,8 @@ import xarray as xr
 
 from auxbearing import __version__
 from auxbearing.analysis.statics import STRIBECK_CONSTANT, load_distribution, stribeck_comparison
-from auxbearing.bearings.geometry import BearingGeometry, load_bearing
+from auxbearing.bearings.catalogue import load_bearing
+from auxbearing.bearings.geometry import BearingGeometry
 
 #: Fig. 6 loads. The paper prints only "(d) Radial force is 1000N"; the axial sweep is at that
 #: radial load and the radial sweep at 500 N axial load (our choice: with zero axial load the

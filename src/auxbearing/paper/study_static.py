@@ -9,8 +9,9 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from auxbearing.analysis.statics import ISO76_BALL_STRESS, safety_factor, stress_warning, validity_warnings_all
+from auxbearing.analysis.statics import stress_warning, validity_warnings_all
 from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.bearings.ratings import ISO76_BALL_STRESS, safety_factor
 from auxbearing.paper.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.paper.static_paper import (
     FIG6_AXIAL_LOADS,

@@ -12,7 +12,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from auxbearing.analysis.statics import ISO76_BALL_STRESS
+from auxbearing.bearings.ratings import ISO76_BALL_STRESS
 from auxbearing.plots._axes import axes_for, figure_for
 
 _MARKERS = "osd^v<>"

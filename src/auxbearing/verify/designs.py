@@ -64,7 +64,8 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
 
 def _check_bearing_name(spec: str, field: str) -> None:
     """Refuse a candidate that is neither a catalogue bearing nor a bearing TOML file, naming ``field``."""
-    from auxbearing.bearings.geometry import bearing_names, get_bearing
+    from auxbearing.bearings.catalogue import get_bearing
+    from auxbearing.bearings.geometry import bearing_names
 
     if spec.lower().endswith(".toml") or Path(spec).is_file():
         return
