@@ -28,7 +28,7 @@ from itertools import pairwise
 import numpy as np
 
 from auxbearing.analysis.coastdown import run_coastdown
-from auxbearing.machine.model import read_machine
+from auxbearing.machine.files import read_machine
 
 #: Speed bands of the split, as fractions of the drop speed.
 BANDS = np.array([0.0, 0.25, 0.5, 0.75, 1.0 + 1e-9])

@@ -39,7 +39,7 @@ from auxbearing.analysis.drop import integrate_machine, run_machine, start_drive
 from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
-from auxbearing.machine.model import read_machine
+from auxbearing.machine.files import read_machine
 from auxbearing.machine.pack import pack
 from numpy_machine import make_rhs, normal_forces
 

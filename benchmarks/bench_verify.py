@@ -27,7 +27,7 @@ from itertools import pairwise
 from pathlib import Path
 
 from auxbearing.analysis.drop import run_machine
-from auxbearing.machine.model import read_machine
+from auxbearing.machine.files import read_machine
 from auxbearing.verify.run import verify
 
 

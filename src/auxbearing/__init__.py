@@ -23,7 +23,7 @@ _LAZY = {
     "Material": "auxbearing.bearings.materials",
     "get_material": "auxbearing.bearings.materials",
     "Machine": "auxbearing.machine.model",
-    "read_machine": "auxbearing.machine.model",
+    "read_machine": "auxbearing.machine.files",
     "run_machine": "auxbearing.analysis.drop",
     "run_drop": "auxbearing.paper.rig",
 }

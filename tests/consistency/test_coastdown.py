@@ -12,7 +12,8 @@ from importlib import resources
 import pytest
 
 from auxbearing.analysis.coastdown import run_coastdown
-from auxbearing.machine.model import machine_from_mapping, read_machine
+from auxbearing.machine.files import read_machine
+from auxbearing.machine.model import machine_from_mapping
 
 
 def _paper_rig(**coastdown):

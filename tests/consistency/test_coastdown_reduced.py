@@ -14,8 +14,9 @@ import math
 import pytest
 
 from auxbearing.analysis.coastdown import run_coastdown
-from auxbearing.machine.model import machine_from_mapping, machine_table, read_machine
-from auxbearing.verify.designs import candidate_tables
+from auxbearing.machine.files import machine_table, read_machine
+from auxbearing.machine.judging import candidate_tables
+from auxbearing.machine.model import machine_from_mapping
 
 #: Simulated seconds of the comparison in the test suite.
 HORIZON = 2.0

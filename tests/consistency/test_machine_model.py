@@ -19,7 +19,8 @@ from auxbearing.core import drive
 from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
-from auxbearing.machine.model import machine_from_mapping, machine_names, read_machine
+from auxbearing.machine.files import machine_names, read_machine
+from auxbearing.machine.model import machine_from_mapping
 from auxbearing.machine.pack import pack
 
 G = 9.80665

@@ -7,10 +7,10 @@ same time, and the evidence must say which run, what stopped it and by how much 
 
 import pytest
 
-from auxbearing.machine.model import machine_table
+from auxbearing.machine.files import machine_table
+from auxbearing.machine.judging import read_criteria
 from auxbearing.verify.cases import Immediate, collect_cases, plan_cases, submit_cases
 from auxbearing.verify.convergence import convergence
-from auxbearing.verify.criteria import read_criteria
 from auxbearing.verify.judge import judge
 
 

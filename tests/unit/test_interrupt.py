@@ -6,7 +6,7 @@ import pytest
 
 from auxbearing.analysis.drop import run_machine
 from auxbearing.common import interrupt
-from auxbearing.machine.model import read_machine
+from auxbearing.machine.files import read_machine
 
 
 def test_a_swallowed_interrupt_stops_the_drop_at_its_next_chunk():

@@ -17,7 +17,8 @@ from auxbearing.machine.check import (
     mode_step,
     stiffness_notes,
 )
-from auxbearing.machine.model import machine_from_mapping, machine_table, read_machine
+from auxbearing.machine.files import machine_table, read_machine
+from auxbearing.machine.model import machine_from_mapping
 
 
 def paper() -> dict:
@@ -33,7 +34,7 @@ def refused(data: dict, *words: str) -> str:
 
 
 def test_the_examples_pass_whole():
-    from auxbearing.machine.model import machine_names
+    from auxbearing.machine.files import machine_names
 
     for name in machine_names():
         data, title, base = machine_table(name)
@@ -56,11 +57,23 @@ def test_tables_no_drop_uses_are_checked_as_verify_checks_them():
     for table, value, words in (("criteria", {"max_temperature": "120 mm"}, ("criteria.max_temperature", "120 mm")),
                                 ("verify", {"campaign_samples": -4}, ("verify.campaign_samples", "-4")),
                                 ("life", {"required_drops": 0}, ("life.required_drops",)),
-                                ("candidate", [{"bearing": "QJ999"}], ("candidate.0.bearing", "QJ999")),
-                                ("campaign", {"samples": 2, "sampler": "grid"}, ("campaign.sampler", "grid"))):
+                                ("candidate", [{"bearing": "QJ999"}], ("candidate.0.bearing", "QJ999"))):
         data = paper()
         data[table] = value
         refused(data, *words)
+
+
+def test_a_machine_files_campaign_table_is_checked_by_every_command(tmp_path):
+    """The [campaign] table belongs to the campaign room; the command line's reader asks it (no room below
+    the campaign imports it)."""
+    from auxbearing.cli.common import read_machine_file
+    from auxbearing.machine.files import _catalogue_files
+
+    path = tmp_path / "m.toml"
+    path.write_text(_catalogue_files()["paper_rig"] + '\n[campaign]\nsamples = 2\nsampler = "grid"\n')
+    with pytest.raises(InputError) as err:
+        read_machine_file(str(path))
+    assert "campaign.sampler" in str(err.value) and "grid" in str(err.value)
 
 
 def test_values_impossible_together_name_both_keys():
@@ -160,7 +173,7 @@ def test_stiffness_is_said_before_the_run_and_refused_past_the_budget():
 
 def test_the_reference_says_what_the_reader_does():
     from auxbearing.campaign.config import CAMPAIGN_KEYS
-    from auxbearing.machine.keys import markdown
+    from auxbearing.report.machine_file import markdown
 
     text = markdown()
     assert "a bare number there is refused" in text and "a bare number is SI" not in text

@@ -106,7 +106,7 @@ def test_free_fall_of_the_journal():
 
 def test_gyroscopic_terms_do_no_work():
     """The tilt equations' J_p Omega terms are orthogonal to the tilt rates (Friswell et al. 2010 Eq. 3.63)."""
-    from auxbearing.machine.model import read_machine
+    from auxbearing.machine.files import read_machine
 
     km = pack(read_machine("paper_rig_two_planes").with_simulation(gravity=0.0))
     y = km.y0.copy()

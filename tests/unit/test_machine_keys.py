@@ -4,13 +4,13 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
-from auxbearing.machine.keys import markdown
+from auxbearing.report.machine_file import markdown
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "machine_file.md"
 
 
 def test_the_machine_file_reference_is_up_to_date():
-    regenerate = "python -m auxbearing.machine.keys > docs/machine_file.md"
+    regenerate = "python -m auxbearing.report.machine_file > docs/machine_file.md"
     assert DOC.read_text(encoding="utf-8") == markdown(), f"stale: run {regenerate}"
 
 

@@ -1,7 +1,7 @@
 """The verdict on P(backward whirl): judged by its 95 % upper bound, with the campaign size that would show it."""
 
 from auxbearing.campaign.statistics import wilson_interval
-from auxbearing.verify.criteria import read_criteria
+from auxbearing.machine.judging import read_criteria
 from auxbearing.verify.judge import _drops_to_show, _whirl_probability
 
 

@@ -7,8 +7,8 @@ does at every point of its search, so the test needs no integration.
 from types import SimpleNamespace
 
 import auxbearing.analysis.drop
-from auxbearing.machine.model import machine_table
-from auxbearing.verify.criteria import read_criteria
+from auxbearing.machine.files import machine_table
+from auxbearing.machine.judging import read_criteria
 from auxbearing.verify.designs import recommend
 
 

@@ -176,7 +176,7 @@ def as_machine(machine) -> Machine:
     """A :class:`~auxbearing.machine.model.Machine` as given, or read from a TOML path or an example machine's name."""
     if isinstance(machine, Machine):
         return machine
-    from auxbearing.machine.model import read_machine
+    from auxbearing.machine.files import read_machine
 
     return read_machine(machine)
 

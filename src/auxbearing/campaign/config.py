@@ -33,7 +33,8 @@ from pathlib import Path
 from auxbearing.campaign.distributions import Distribution, distribution_from_table, share_outside_rule
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import Param, did_you_mean, si_unit, unknown
-from auxbearing.machine.check import FACE_KEYS, MACHINE_FILE_TABLES, MOUNT_KEYS
+from auxbearing.machine.check import MACHINE_FILE_TABLES
+from auxbearing.machine.combinations import FACE_KEYS, MOUNT_KEYS
 from auxbearing.machine.params import TABLES, TOUCHDOWN_TEXT
 
 SAMPLERS = ("sobol", "lhs", "random", "saltelli")
@@ -170,7 +171,7 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
     from importlib import resources
 
     from auxbearing.common.io import read_toml
-    from auxbearing.machine.model import machine_names
+    from auxbearing.machine.files import machine_names
 
     tables: dict = {}
     spec = head.get("machine")
@@ -334,8 +335,9 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
 
     The campaign's machine (the file's machine tables laid over ``campaign.machine``) is checked whole, as
     every command checks a machine file (:func:`auxbearing.machine.check.check_machine_document`), with the
-    file's own ``[criteria]``, ``[verify]`` and ``[[candidate]]`` tables. ``check_machine=False`` is for that
-    check itself, which reads a ``[campaign]`` table of a machine file through this function.
+    file's own ``[criteria]``, ``[verify]`` and ``[[candidate]]`` tables. ``check_machine=False`` is for a
+    machine file already checked that way (:func:`auxbearing.cli.common.read_machine_file`), whose
+    ``[campaign]`` table is then checked here alone.
     """
     from auxbearing.machine.check import check_machine_document, check_tables
     from auxbearing.machine.model import machine_from_mapping
@@ -365,7 +367,7 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     if check_machine:
         document = {key: value for key, value in tables.items() if key != "campaign"}
         document.update({key: data[key] for key in ("criteria", "verify", "candidate") if key in data})
-        machine = check_machine_document(document, name, base, campaign=False)
+        machine = check_machine_document(document, name, base)
     else:
         machine = machine_from_mapping(tables, name, base)
     inputs, notes = _inputs(head, len(machine.planes))

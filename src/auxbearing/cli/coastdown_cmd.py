@@ -47,6 +47,7 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
 
     from auxbearing.analysis.coastdown import run_coastdown
     from auxbearing.analysis.coastdown_life import cycles_of_worst_contact
+    from auxbearing.cli.common import read_machine_file
     from auxbearing.cli.drop_checks import (
         check_ball_contacts,
         machine_input_names,
@@ -55,10 +56,9 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     )
     from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.common.units import to_si
-    from auxbearing.machine.model import read_machine
 
     with option_named("--machine", "machine"), option_named("--machine", "file", value=machine_spec):
-        machine = read_machine(machine_spec)
+        machine = read_machine_file(machine_spec)
     check_ball_contacts(machine, max_ball_contacts, f"--machine = {machine_spec!r}")
     warn(*stiffness_warnings(machine, machine.simulation.duration, f"--machine = {machine_spec!r}: "))
     warn(*plausibility(machine, machine_input_names(machine_spec)))

@@ -164,3 +164,22 @@ class ProgressReporter:
     def __exit__(self, *exc) -> None:
         if self._bar is not None:
             self._bar.__exit__(*exc)
+
+
+def read_machine_file(spec):
+    """A machine for a command: the file checked whole, its ``[campaign]`` table by the campaign's reader too.
+
+    The machine room checks every table it owns (:func:`auxbearing.machine.check.check_machine_document`);
+    a ``[campaign]`` table belongs to a room above it, so the command line, which sits above both, asks the
+    campaign's reader: a file any command refuses, every command refuses.
+    """
+    from auxbearing.machine.check import check_machine_document
+    from auxbearing.machine.files import machine_document
+
+    data, name, base = machine_document(spec)
+    machine = check_machine_document(data, name, base)
+    if "campaign" in data:
+        from auxbearing.campaign.config import campaign_from_mapping
+
+        campaign_from_mapping(data, name, base, check_machine=False)
+    return machine

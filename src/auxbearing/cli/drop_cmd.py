@@ -318,12 +318,12 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
     from rich.table import Table
 
     from auxbearing.analysis.drop import run_machine
+    from auxbearing.cli.common import read_machine_file
     from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.common.units import to_si
-    from auxbearing.machine.model import read_machine
 
     with option_named("--machine", "machine"), option_named("--machine", "file", value=spec):
-        machine = read_machine(spec)
+        machine = read_machine_file(spec)
     seconds = None
     if duration is not None:
         seconds = to_si("--duration", duration, "time", "s")
@@ -389,11 +389,12 @@ def machines_command(as_json):
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.machine.model import machine_names, read_machine
+    from auxbearing.cli.common import read_machine_file
+    from auxbearing.machine.files import machine_names
 
     rows = []
     for name in machine_names():
-        m = read_machine(name)
+        m = read_machine_file(name)
         rows.append({"name": name, "title": m.name, "orientation": m.orientation, "mass_kg": m.rotor.mass,
                      "speed_rpm": m.rotor.speed * 30.0 / math.pi,
                      "planes": [{"name": p.name, "bearing": p.bearing.name,

@@ -9,8 +9,9 @@ What is checked, each as one :class:`~auxbearing.common.errors.InputError` line 
 
 * every table and key (an unknown one is told the closest allowed name: "did you mean mount_damping?");
 * every value against its unit and rule (:mod:`auxbearing.common.params`), the ``[criteria]``, ``[verify]``
-  and ``[[candidate]]`` tables through the readers ``verify`` uses, a ``[campaign]`` table through the
-  campaign's own reader;
+  and ``[[candidate]]`` tables through the readers ``verify`` uses (:mod:`auxbearing.machine.judging`); a
+  ``[campaign]`` table is the campaign's to check (:func:`auxbearing.campaign.config.campaign_from_mapping`,
+  which the command line calls on every machine file it reads: a room below the campaign does not import it);
 * values legal one by one but impossible together (:func:`check_combinations`, named by both keys): a
   start outside a clearance, a journal larger than its bore, face or mount keys without the collar or
   mount they act through, a hard stop inside the dead band, a temperature limit at or below ambient;
@@ -24,32 +25,21 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import display_value, unknown
-
-if TYPE_CHECKING:
-    from auxbearing.machine.model import Machine
+from auxbearing.common.params import unknown
+from auxbearing.machine.combinations import SEAT_TOLERANCE, param_of, typed
+from auxbearing.machine.judging import CRITERIA_TABLE, candidate_tables, read_criteria, verify_settings
+from auxbearing.machine.model import Machine, machine_from_mapping, read_bearing_spec
 
 #: Tables of a machine file; a campaign file is a machine file whose ``[campaign]`` table is the campaign.
 MACHINE_FILE_TABLES = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", "criteria", "candidate",
                        "verify", "campaign")
-#: Keys of ``[[touchdown]]`` that act only in a compliant mount (with ``mount_stiffness``).
-MOUNT_KEYS = ("mount_damping", "mount_mass", "mount_deadband", "mount_stop", "stop_stiffness", "stop_damping",
-              "mount_travel")
-#: Keys of ``[[touchdown]]`` that act only where a collar meets the race face (with ``axial_clearance``).
-FACE_KEYS = ("face_stiffness", "face_damping", "face_friction", "face_radius")
 #: Keys of a ``[[candidate]]`` table.
 CANDIDATE_KEYS = ("name", "bearing")
-#: How far a candidate's bore may differ from the seat's, and its width and outside diameter exceed the
-#: design's, before it no longer fits [m]: catalogue sizes are nominal, so equal sizes are equal to far
-#: better than this; a micrometre is below any bore tolerance (ISO 492 normal class: 8 um at 18-30 mm).
-SEAT_TOLERANCE = 1e-6
 
 
-def check_machine_document(data: dict, name: str = "machine", base: Path | None = None, *,
-                           campaign: bool = True) -> Machine:
+def check_machine_document(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
     """Check every table of a machine file (module docstring) and return its machine.
 
     Parameters
@@ -58,13 +48,10 @@ def check_machine_document(data: dict, name: str = "machine", base: Path | None 
         The file's tables as read (values with units).
     name, base
         The machine's name when the file gives none, and the folder relative bearing files are read from.
-    campaign : bool
-        Check a ``[campaign]`` table through the campaign's reader too (the campaign's reader itself passes
-        False: it checks that table).
 
     Examples
     --------
-    >>> from auxbearing.machine.model import machine_table
+    >>> from auxbearing.machine.files import machine_table
     >>> data, name, base = machine_table("paper_rig")
     >>> check_machine_document({**data, "criteria": {"min_s00": 2}}, name)
     Traceback (most recent call last):
@@ -72,9 +59,6 @@ def check_machine_document(data: dict, name: str = "machine", base: Path | None 
     auxbearing.common.errors.InputError: criteria.min_s00 = 2: unknown key; allowed keys: ...; did you mean min_s0?
     """
     from auxbearing.common.io import MAX_TOML_DEPTH, nesting_depth
-    from auxbearing.machine.model import machine_from_mapping
-    from auxbearing.verify.cases import verify_settings
-    from auxbearing.verify.criteria import read_criteria
 
     if not isinstance(data, dict):
         raise InputError.for_field("machine", data, "must be a TOML document of tables")
@@ -91,10 +75,6 @@ def check_machine_document(data: dict, name: str = "machine", base: Path | None 
     settings = verify_settings(data)
     _check_judging(data, machine, criteria, settings)
     check_candidates(data, machine, name, base)
-    if campaign and "campaign" in data:
-        from auxbearing.campaign.config import campaign_from_mapping
-
-        campaign_from_mapping(data, name, base, check_machine=False)
     return machine
 
 
@@ -105,144 +85,23 @@ def check_tables(data: dict, allowed: tuple[str, ...]) -> None:
             raise unknown(f"[{key}]", "table", key, allowed, "table")
 
 
-# ----------------------------------------------------------------------------- values impossible together
-def typed(table: dict | None, key: str, param=None) -> object:
-    """A value as the file wrote it (a unit-library quantity as text), or the default with "(default)"."""
-    if table and key in table:
-        value = table[key]
-        return value if isinstance(value, (str, int, float)) else str(value)
-    if param is None or param.default is None:
-        return "none"
-    return f"{display_value(param, param.default)} (default)"
-
-
-def _param(section: str, key: str):
-    from auxbearing.machine.params import TABLES
-
-    return TABLES[section][key]
-
-
-def check_combinations(data: dict, machine: Machine) -> None:
-    """Refuse values that are legal one by one but no machine can have together (both keys named).
-
-    Called by :func:`auxbearing.machine.model.machine_from_mapping` on every machine it builds, so a campaign's
-    sample that lands on such a pair is an ``invalid_input`` record with the same sentence.
-    """
-    rotor = data.get("rotor") or {}
-    for k, (plane, table) in enumerate(zip(machine.planes, data.get("touchdown") or [], strict=False)):
-        _check_requires(table, (*FACE_KEYS, "axial_direction"), "axial_clearance", k,
-                        "acts only where a rotor collar meets the race face")
-        _check_requires(table, MOUNT_KEYS, "mount_stiffness", k, "acts only in a compliant mount")
-        _check_start(rotor, table, plane, machine, k)
-        _check_journal(table, plane, k)
-        if plane.mount is not None:
-            _check_mount(table, plane, k)
-    _check_coastdown(data, machine)
-
-
-def _check_requires(table: dict, keys: tuple[str, ...], anchor: str, k: int, why: str) -> None:
-    if anchor in table:
-        return
-    for key in keys:
-        if key in table:
-            raise InputError.for_field(f"touchdown.{k}.{key}", typed(table, key), f"{why}; give touchdown.{k}."
-                                       f"{anchor} too, or leave {key} out")
-
-
-def _check_start(rotor: dict, table: dict, plane, machine: Machine, k: int) -> None:
-    r = machine.rotor
-    mx, my = plane.misalignment
-    offset = math.hypot(r.start_x - mx, r.start_y - my)
-    if offset < plane.radial_clearance:
-        return
-    given = [key for key in ("start_x", "start_y") if key in rotor]
-    if given:
-        field = f"rotor.{given[0]}"
-        value = typed(rotor, given[0])
-        other = f" (rotor.{given[1]} = {typed(rotor, given[1])!r})" if len(given) > 1 else ""
-    else:
-        key = next(key for key in ("misalignment_x", "misalignment_y") if key in table)
-        field, value, other = f"touchdown.{k}.{key}", typed(table, key), " (the bearing centre's offset)"
-    raise InputError.for_field(field, value, f"the journal starts {offset * 1e3:.4g} mm from the centre of "
-                               f"touchdown.{k} ({plane.name}){other}, not inside its radial_clearance = "
-                               f"{typed(table, 'radial_clearance')!r}: a rotor let go by its magnetic bearings "
-                               "starts inside every touchdown clearance")
-
-
-def _check_journal(table: dict, plane, k: int) -> None:
-    bore = plane.bearing.bore
-    if "journal_radius" not in table or bore is None:
-        return
-    r, s = plane.journal_radius, plane.radial_clearance
-    field = f"touchdown.{k}.journal_radius"
-    if r >= 0.5 * bore:
-        raise InputError.for_field(field, typed(table, "journal_radius"), f"the journal is not smaller than the "
-                                   f"bore of its bearing {plane.bearing.name} (bore {bore * 1e3:g} mm, radius "
-                                   f"{bore * 500:g} mm): it does not fit")
-    if r + s > 0.5 * bore + SEAT_TOLERANCE:
-        raise InputError.for_field(field, typed(table, "journal_radius"), f"with touchdown.{k}.radial_clearance = "
-                                   f"{typed(table, 'radial_clearance')!r} the race bore would be "
-                                   f"{(r + s) * 1e3:.4g} mm in radius, beyond the bore radius {bore * 500:g} mm of "
-                                   f"bearing {plane.bearing.name}: the clearance is bore / 2 - journal_radius "
-                                   "(leave journal_radius out to derive it)")
-
-
-def _check_mount(table: dict, plane, k: int) -> None:
-    mount = plane.mount
-    where = f"touchdown.{k}."
-    deadband = typed(table, "mount_deadband", _param("touchdown", "mount_deadband"))
-    if mount.stop is not None and mount.stop <= mount.deadband:
-        raise InputError.for_field(where + "mount_stop", typed(table, "mount_stop"), f"not beyond {where}"
-                                   f"mount_deadband = {deadband!r}: the ring crosses the dead band before its "
-                                   "spring engages, and a hard stop lies beyond that")
-    if "mount_travel" not in table:
-        return
-    if mount.stop is not None and mount.travel <= mount.stop:
-        raise InputError.for_field(where + "mount_travel", typed(table, "mount_travel"), f"not beyond {where}"
-                                   f"mount_stop = {typed(table, 'mount_stop')!r}: the run stops at mount_travel, so "
-                                   "the ring would never reach its hard stop")
-    if mount.travel <= mount.deadband:
-        raise InputError.for_field(where + "mount_travel", typed(table, "mount_travel"), f"not beyond {where}"
-                                   f"mount_deadband = {deadband!r}: the run stops at mount_travel, so the mount's "
-                                   "spring would never engage")
-
-
-def _check_coastdown(data: dict, machine: Machine) -> None:
-    table = data.get("coastdown") or {}
-    cd = machine.coastdown
-    if cd.max_temperature <= cd.ambient_temperature:
-        pair = [("max_temperature", "ambient_temperature"), ("ambient_temperature", "max_temperature")]
-        key, other = pair[0] if "max_temperature" in table else pair[1]
-        rule = ("not above" if key == "max_temperature" else "not below")
-        raise InputError.for_field(f"coastdown.{key}", typed(table, key, _param("coastdown", key)),
-                                   f"{rule} coastdown.{other} = {typed(table, other, _param('coastdown', other))!r}: "
-                                   "every part starts at ambient, so the run would end as a thermal run-away before "
-                                   "its first step")
-    if "stop_speed" in table and cd.stop_speed >= abs(machine.rotor.speed):
-        raise InputError.for_field("coastdown.stop_speed", typed(table, "stop_speed"), "not below rotor.speed = "
-                                   f"{typed(data.get('rotor'), 'speed')!r}: the coast-down would be over before it "
-                                   "began")
-
-
 def _check_judging(data: dict, machine: Machine, criteria: dict, settings: dict) -> None:
     """What ``verify`` judges by against the machine: a temperature limit above ambient, a low speed below the top."""
     ambient = machine.coastdown.ambient_temperature
     table = data.get("criteria") or {}
     if criteria["max_temperature"] <= ambient:
         coast = data.get("coastdown") or {}
-        from auxbearing.verify.criteria import TABLE
-
-        param = _param("coastdown", "ambient_temperature")
+        param = param_of("coastdown", "ambient_temperature")
         if "max_temperature" in table or "ambient_temperature" not in coast:
             raise InputError.for_field("criteria.max_temperature", typed(table, "max_temperature",
-                                                                          TABLE["max_temperature"]),
+                                                                          CRITERIA_TABLE["max_temperature"]),
                                        f"not above coastdown.ambient_temperature = "
                                        f"{typed(coast, 'ambient_temperature', param)!r}: no bearing can stay below "
                                        "the temperature it starts at")
         raise InputError.for_field("coastdown.ambient_temperature", typed(coast, "ambient_temperature", param),
                                    f"not below criteria.max_temperature = "
-                                   f"{typed(table, 'max_temperature', TABLE['max_temperature'])!r}: no bearing can "
-                                   "stay below the temperature it starts at")
+                                   f"{typed(table, 'max_temperature', CRITERIA_TABLE['max_temperature'])!r}: "
+                                   "no bearing can stay below the temperature it starts at")
     verify = data.get("verify") or {}
     low = settings.get("low_speed")
     if low is not None and low >= abs(machine.rotor.speed):
@@ -261,8 +120,6 @@ def check_candidates(data: dict, design: Machine, name: str = "machine", base: P
         return
     if not isinstance(specs, list) or not all(isinstance(s, (dict, str)) for s in specs):
         raise InputError.for_field("candidate", specs, "give [[candidate]] tables, each with a bearing")
-    from auxbearing.machine.model import machine_from_mapping
-    from auxbearing.verify.designs import candidate_tables
 
     for i, spec in enumerate(specs):
         where = f"candidate.{i}"
@@ -292,7 +149,6 @@ def check_candidates(data: dict, design: Machine, name: str = "machine", base: P
 def candidate_bearing(spec: object, field: str, base: Path | None = None):
     """The bearing a candidate names: a catalogue name, a bearing TOML file (relative to ``base``) or a table."""
     from auxbearing.bearings.geometry import bearing_from_mapping
-    from auxbearing.machine.model import read_bearing_spec
 
     if isinstance(spec, dict):
         return bearing_from_mapping(spec, name=str(spec.get("name", "candidate")), prefix=field + ".")
@@ -313,7 +169,7 @@ def check_candidate_seat(design: Machine, bearing, where: str) -> None:
     ``where`` names the candidate as the user gave it (``"candidate.0 = 'QJ208'"``,
     ``"--candidates = 'QJ208'"``).
 
-    >>> from auxbearing.machine.model import read_machine
+    >>> from auxbearing.machine.files import read_machine
     >>> from auxbearing.bearings.catalogue import get_bearing
     >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("7202"), "candidate.0 = '7202'")
     >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("QJ208"), "candidate.0 = 'QJ208'")

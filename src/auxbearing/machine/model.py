@@ -12,8 +12,6 @@ from __future__ import annotations
 import copy
 import math
 from dataclasses import dataclass, field, replace
-from functools import cache
-from importlib import resources
 from pathlib import Path
 
 from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping
@@ -401,11 +399,11 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     """A machine from the tables of a machine TOML file (values with units); every key checked first.
 
     The machine's own tables are read here, with the values no machine can have together
-    (:func:`auxbearing.machine.check.check_combinations`); a whole file, its ``[criteria]``, ``[verify]``,
+    (:func:`auxbearing.machine.combinations.check_combinations`); a whole file, its ``[criteria]``, ``[verify]``,
     ``[[candidate]]`` and ``[campaign]`` tables too, is checked by
     :func:`auxbearing.machine.check.check_machine_document` (what :func:`read_machine` does).
     """
-    from auxbearing.machine.check import check_combinations
+    from auxbearing.machine.combinations import check_combinations
 
     allowed = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", *OTHER_TABLES)
     for key in data:
@@ -485,55 +483,5 @@ def read_bearing_spec(spec: str, base: Path | None, field: str) -> BearingGeomet
     return get_bearing(spec, field)
 
 
-@cache
-def _catalogue_files() -> dict[str, str]:
-    folder = resources.files("auxbearing.catalog").joinpath("machines")
-    return {entry.name.removesuffix(".toml"): entry.read_text() for entry in folder.iterdir()
-            if entry.name.endswith(".toml")}
-
-
-def machine_names() -> list[str]:
-    """Names of the example machines shipped in the catalogue."""
-    return sorted(_catalogue_files())
-
-
-def _document(spec: str | Path) -> tuple[dict, str, Path | None]:
-    import tomllib
-
-    from auxbearing.common.io import existing_file, read_toml
-
-    text = str(spec)
-    if text in _catalogue_files():
-        return tomllib.loads(_catalogue_files()[text]), text, None
-    path = Path(text)
-    if not path.exists():
-        raise InputError.for_field("machine", text, "neither a file nor a catalogue machine ("
-                                   + ", ".join(machine_names()) + ")")
-    existing_file(path, "machine")
-    return read_toml(path, "machine"), path.stem, path.parent
-
-
-def machine_table(spec: str | Path) -> tuple[dict, str, Path | None]:
-    """The tables of a machine file or catalogue machine as read (values with units), its name and folder.
-
-    The whole file is checked first (:func:`auxbearing.machine.check.check_machine_document`): a file any
-    command refuses, every command refuses, before any work.
-    """
-    from auxbearing.machine.check import check_machine_document
-
-    data, name, base = _document(spec)
-    check_machine_document(data, name, base)
-    return data, name, base
-
-
-def read_machine(spec: str | Path) -> Machine:
-    """A machine from a TOML file or a catalogue name (:func:`machine_names`), the whole file checked first."""
-    from auxbearing.machine.check import check_machine_document
-
-    data, name, base = _document(spec)
-    return check_machine_document(data, name, base)
-
-
 __all__ = ["G0", "Coastdown", "Life", "Machine", "MachineRotor", "Mount", "Simulation", "TouchdownPlane",
-           "machine_from_mapping", "machine_names", "machine_table", "make_plane",
-           "read_bearing_spec", "read_machine"]
+           "machine_from_mapping", "make_plane", "read_bearing_spec"]

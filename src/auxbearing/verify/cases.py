@@ -25,7 +25,11 @@ from pathlib import Path
 from auxbearing.analysis.coastdown import CoastdownRun, run_coastdown
 from auxbearing.analysis.drop import MachineRun, run_machine
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import Param, by_key, read_table
+from auxbearing.machine.judging import (
+    FRICTION_SOURCE,
+    VERIFY_TABLE,
+    verify_settings,
+)
 from auxbearing.machine.model import Machine, machine_from_mapping
 
 #: A drop at low speed runs at this fraction of the maximum (ours: the bottom of a typical operating range).
@@ -33,50 +37,6 @@ LOW_SPEED_FRACTION = 0.25
 #: ``--quick``: the drops last at most this long [s], the coast-down is run for this long [s] and the
 #: campaign has this many samples.
 QUICK_DROP, QUICK_COASTDOWN, QUICK_SAMPLES = 0.05, 5.0, 8
-#: Dry steel-on-steel sliding friction: 0.10-0.30 in Gieck & Gieck, *Engineering Formulas*, 7th ed. (1997),
-#: as quoted with other handbooks' values (0.23-0.62) by LBL's engineering table of friction coefficients
-#: (www-eng.lbl.gov/~ajdemell/coefficients_of_friction.html); Blau, Tribol. Int. 34 (2001) 585-591 on why a
-#: friction coefficient is a system's, not a material pair's, property: hence a spread, not a value.
-FRICTION_RANGE = (0.1, 0.3)
-FRICTION_SOURCE = ("Gieck & Gieck, Engineering Formulas, 7th ed. (1997): steel on steel sliding 0.10-0.30; "
-                   "a system property (Blau, Tribol. Int. 34, 2001), so a range")
-#: Samples of the verification's campaign unless ``verify.campaign_samples`` says otherwise: a power of two
-#: (Sobol' balance) whose whirl-free outcome shows P(backward whirl) within the default 5 % at 95 % confidence
-#: (Wilson's bound for no events, 1.96^2 / (n + 1.96^2), is 0.029 at 128 and 0.057 at 64).
-CAMPAIGN_SAMPLES = 128
-
-VERIFY: tuple[Param, ...] = (
-    Param("verify", "low_speed", "angular_speed", None, "rpm", "optional_positive",
-          "Speed of the low-speed drop; default a quarter of rotor.speed", "ours"),
-    Param("verify", "campaign_samples", "dimensionless", float(CAMPAIGN_SAMPLES), "", "count",
-          "Samples of the verification's campaign",
-          "ours: 128 whirl-free drops show P(backward whirl) <= 0.05 at 95 %"),
-    Param("verify", "friction_low", "dimensionless", FRICTION_RANGE[0], "", "unit_interval",
-          "Lowest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
-    Param("verify", "friction_high", "dimensionless", FRICTION_RANGE[1], "", "unit_interval",
-          "Highest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
-    Param("verify", "balance_grade", "velocity", 6.3e-3, "mm/s", "nonnegative",
-          "Balance grade G of the rotor: the campaign's unbalance spreads from 0 to G / speed (and at least to "
-          "rotor.unbalance)",
-          "ISO 21940-11:2016, Table 1 (G 6.3: fans, blowers, pumps, electric motors); e_per = G / Omega"),
-    Param("verify", "fit_grade", "dimensionless", 6.0, "", "positive",
-          "ISO tolerance grade (IT) of the race bore and the journal; the campaign's radial clearance spreads by "
-          "(IT_bore + IT_journal) / 4 either side", "ISO 286-1:2010, Table 1 (IT6: ground bore and journal)"),
-    Param("verify", "clearance_tolerance", "length", None, "um", "optional_nonnegative",
-          "Half-width of the radial clearance's spread, instead of the one from verify.fit_grade", "user input"),
-    Param("verify", "mount_stiffness_spread", "dimensionless", 0.2, "", "unit_interval",
-          "Half-width of the mount stiffness's spread, as a fraction of its value",
-          "ours: elastomer and spring mounts are held to about +-20 % of their rated stiffness"),
-    Param("verify", "mount_damping_spread", "dimensionless", 0.3, "", "unit_interval",
-          "Half-width of the mount damping's spread, as a fraction of its value",
-          "ours: damping scatters more than stiffness (temperature, frequency)"),
-    Param("verify", "start_offset", "dimensionless", 0.3, "", "unit_interval",
-          "Largest offset of the levitated rotor from the bearing centre when the magnetic bearings let go, as a "
-          "fraction of the smallest radial clearance (square spread of that half-diagonal)",
-          "ISO 14839-2:2004: zone A/B boundary of a levitated rotor's displacement at 0.3 of the minimum "
-          "clearance"),
-)
-VERIFY_TABLE = by_key(VERIFY, "verify")
 #: ISO 286-1:2010 Table 1: standard tolerance IT6 and IT7 [m] by nominal size (upper bound of each range [m]).
 IT_TABLE = ((0.003, 6e-6, 10e-6), (0.006, 8e-6, 12e-6), (0.010, 9e-6, 15e-6), (0.018, 11e-6, 18e-6),
             (0.030, 13e-6, 21e-6), (0.050, 16e-6, 25e-6), (0.080, 19e-6, 30e-6), (0.120, 22e-6, 35e-6),
@@ -100,12 +60,6 @@ class Cases:
     #: why the coast-down stopped short of standstill without a finding (--quick, a budget); empty: it did not
     partial_coastdown: str = ""
     quick: bool = False  #: the quick look's shorter cases
-
-
-def verify_settings(data: dict) -> dict:
-    """The ``[verify]`` table in SI with defaults."""
-    given = read_table(data.get("verify"), VERIFY_TABLE, "verify.")
-    return {p.key: given.get(p.key, p.default) for p in VERIFY}
 
 
 def variant(data: dict, name: str, base: Path | None, rotor: dict | None = None, drop: dict | None = None) -> Machine:

@@ -24,33 +24,7 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from auxbearing.common.params import Param, by_key, read_table
-
-CRITERIA: tuple[Param, ...] = (
-    Param("criteria", "min_s0", "dimensionless", 1.0, "", "positive",
-          "Smallest static safety factor s0 of any ball contact in any drop",
-          "ISO 76:2006: s0 = C0/P0, and 1 loads a contact to 4200 MPa (a permanent set of 1e-4 D); makers ask 1.5-2 "
-          "or more under shock, so raise it for your machine"),
-    Param("criteria", "max_temperature", "temperature", 393.15, "degC", "positive",
-          "Hottest bearing part over the coast-down",
-          "ours: 120 degC, the heat-stabilisation limit makers state for standard through-hardened bearing steel; "
-          "check your bearing's and its lubricant's"),
-    Param("criteria", "max_preload_stress", "pressure", 4200e6, "MPa", "positive",
-          "Ball stress at rest of the preload a closing internal clearance makes", "ISO 76:2006 (4200 MPa at rest)"),
-    Param("criteria", "required_drops", "dimensionless", None, "", "optional_positive",
-          "Drops (each with its coast-down) the bearings must survive; default life.required_drops",
-          "the machine file's life.required_drops (itself an assumption unless you set it)"),
-    Param("criteria", "amb_air_gap", "length", None, "mm", "optional_positive",
-          "Radial air gap of the magnetic bearings; without it the air-gap criterion is not checked", "user input"),
-    Param("criteria", "air_gap_fraction", "dimensionless", 0.5, "", "unit_interval",
-          "Largest touchdown clearance (with thermal growth) as a fraction of the magnetic air gap",
-          "ours: common practice of about half the air gap; not a clause we could read in ISO 14839-5"),
-    Param("criteria", "seal_clearance", "length", None, "mm", "optional_positive",
-          "Radial clearance of the tightest seal; the journal's largest excursion must stay inside it", "user input"),
-    Param("criteria", "max_backward_whirl_probability", "dimensionless", 0.05, "", "unit_interval",
-          "Largest probability of sustained backward whirl over the campaign's uncertain drop conditions", "ours"),
-)
-TABLE = by_key(CRITERIA, "criteria")
+from auxbearing.machine.judging import CRITERIA_TABLE as TABLE
 
 
 class Criterion(NamedTuple):
@@ -71,12 +45,6 @@ class Criterion(NamedTuple):
         return {"name": self.name, "required": self.required, "found": self.found, "margin": self.margin,
                 "pass": self.passed, "unit": self.unit, "kind": self.kind, "origin": self.origin,
                 "evidence": self.evidence}
-
-
-def read_criteria(data: dict | None) -> dict:
-    """The ``[criteria]`` table in SI (unknown keys refused with the list), defaults filled in."""
-    given = read_table(data, TABLE, "criteria.")
-    return {p.key: given.get(p.key, p.default) for p in CRITERIA} | {"given": sorted(given)}
 
 
 def origin(key: str, criteria: dict) -> str:

@@ -36,46 +36,6 @@ CLEARANCE_RANGE = (0.6, 1.4)  #: ours: fraction of the file's radial clearance
 ORBIT_ZONE = 0.3
 
 
-def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
-    """(label, machine tables) per candidate; a spec is a catalogue name, a bearing TOML path or a table."""
-    out = []
-    for i, spec in enumerate(specs):
-        if isinstance(spec, dict):
-            unknown = [k for k in spec if k not in ("name", "bearing")]
-            if unknown:
-                raise InputError.for_field(f"candidate.{i}.{unknown[0]}", spec[unknown[0]],
-                                           "unknown key; allowed keys: name, bearing")
-            if "bearing" not in spec:
-                raise InputError(f"candidate.{i}.bearing: missing; a [[candidate]] names its bearing")
-            bearing, label = spec["bearing"], str(spec.get("name", spec["bearing"]))
-        else:
-            bearing, label = str(spec).strip(), str(spec).strip()
-            if not bearing:
-                raise InputError.for_field("--candidates", spec, "an empty name in the list")
-            _check_bearing_name(bearing, "--candidates")
-        tables = copy.deepcopy(data)
-        for plane in tables["touchdown"]:
-            plane["bearing"] = bearing
-            for derived in ("race_mass", "race_inertia", "line_stiffness", "face_stiffness", "face_radius"):
-                plane.pop(derived, None)  # follow the new bearing
-        out.append((label, tables))
-    return out
-
-
-def _check_bearing_name(spec: str, field: str) -> None:
-    """Refuse a candidate that is neither a catalogue bearing nor a bearing TOML file, naming ``field``."""
-    from auxbearing.bearings.catalogue import get_bearing
-    from auxbearing.bearings.geometry import bearing_names
-
-    if spec.lower().endswith(".toml") or Path(spec).is_file():
-        return
-    try:
-        get_bearing(spec)
-    except (InputError, KeyError, ValueError):
-        raise InputError.for_field(field, spec, "neither a catalogue bearing (e.g. " + ", ".join(bearing_names())
-                                   + "; `auxbearing bearings` lists them all) nor a bearing TOML file") from None
-
-
 def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
     """The machine's tables with contact angle, inner groove ratio and clearance factor x = (alpha, fi, c)."""
     tables = copy.deepcopy(data)
@@ -120,8 +80,9 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     """
     from scipy.optimize import minimize
 
+    from auxbearing.machine.judging import verify_settings
     from auxbearing.machine.model import machine_from_mapping
-    from auxbearing.verify.cases import QUICK_DROP, Immediate, verify_settings
+    from auxbearing.verify.cases import QUICK_DROP, Immediate
 
     executor = executor or Immediate()
 

@@ -15,19 +15,13 @@ from pathlib import Path
 
 from auxbearing.common.errors import InputError
 from auxbearing.machine.check import check_candidate_seat
-from auxbearing.machine.model import machine_from_mapping, machine_table
-from auxbearing.verify.cases import (
-    Cases,
-    campaign_size,
-    collect_cases,
-    plan_cases,
-    run_campaign_of,
-    submit_cases,
-    verify_settings,
-)
+from auxbearing.machine.files import machine_table
+from auxbearing.machine.judging import candidate_tables, read_criteria, verify_settings
+from auxbearing.machine.model import machine_from_mapping
+from auxbearing.verify.cases import Cases, campaign_size, collect_cases, plan_cases, run_campaign_of, submit_cases
 from auxbearing.verify.convergence import convergence_started
-from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, read_criteria, worst_margin
-from auxbearing.verify.designs import candidate_tables, recommend, recommended_tables
+from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, worst_margin
+from auxbearing.verify.designs import recommend, recommended_tables
 from auxbearing.verify.judge import judge
 from auxbearing.verify.schedule import verification_cluster
 
@@ -117,6 +111,10 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     """
     start = time.perf_counter()
     data, name, base = machine_table(spec)
+    if "campaign" in data:  # the file is one document: its [campaign] table is checked too
+        from auxbearing.campaign.config import campaign_from_mapping
+
+        campaign_from_mapping(data, name, base, check_machine=False)
     criteria = read_criteria(data.get("criteria"))
     settings = verify_settings(data)
     from_option = candidates is not None
@@ -247,7 +245,7 @@ def spread_rows(spreads: list[dict]) -> list[list[str]]:
 
 
 def _assumptions(cases: Cases, criteria: dict, settings: dict, quick: bool) -> list[str]:
-    from auxbearing.verify.criteria import CRITERIA
+    from auxbearing.machine.judging import CRITERIA
 
     out = []
     for p in CRITERIA:

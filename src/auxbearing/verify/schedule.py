@@ -27,7 +27,7 @@ def _load_kernels() -> float:
     import time
 
     from auxbearing.analysis.drop import run_machine
-    from auxbearing.machine.model import read_machine
+    from auxbearing.machine.files import read_machine
 
     start = time.perf_counter()
     run_machine(read_machine("paper_rig").for_batch(), duration=1e-4)

@@ -2,7 +2,7 @@
 
 ``docs/machine_file.md`` is this module's output, so it cannot drift from what the reader accepts::
 
-    python -m auxbearing.machine.keys > docs/machine_file.md
+    python -m auxbearing.report.machine_file > docs/machine_file.md
 
 (a test compares the two). The rows come from the same :class:`~auxbearing.common.params.Param` tables the
 reader checks a file against.
@@ -29,7 +29,7 @@ or a candidate that does not fit the design's seat stops with one line naming th
 examples (`auxbearing machines`) are complete files to start from:
 `src/auxbearing/catalog/machines/*.toml`.
 
-This page is generated: `python -m auxbearing.machine.keys > docs/machine_file.md`.
+This page is generated: `python -m auxbearing.report.machine_file > docs/machine_file.md`.
 
 | table | what it holds |
 |---|---|
@@ -59,9 +59,8 @@ _INTRO = _INTRO.replace("{life_row}", _LIFE_ROW)
 
 
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
+    from auxbearing.machine.judging import CRITERIA, VERIFY
     from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN
-    from auxbearing.verify.cases import VERIFY
-    from auxbearing.verify.criteria import CRITERIA
 
     return [("rotor", ROTOR), ("touchdown", TOUCHDOWN), ("drop", SIMULATION), ("coastdown", COASTDOWN),
             ("life", LIFE), ("criteria", CRITERIA), ("verify", VERIFY)]

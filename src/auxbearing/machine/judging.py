@@ -1,0 +1,139 @@
+"""What a machine file says about judging it: its ``[criteria]``, ``[verify]`` and ``[[candidate]]`` tables.
+
+The tables' rows and readers live with the machine description (a file is checked whole, by
+:func:`auxbearing.machine.check.check_machine_document`, before any analysis runs); what the verdict does with
+them is :mod:`auxbearing.verify`'s.
+"""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+
+from auxbearing.common.errors import InputError
+from auxbearing.common.params import Param, by_key, read_table
+
+#: The ``[criteria]`` rows: what the verdict judges against.
+CRITERIA: tuple[Param, ...] = (
+    Param("criteria", "min_s0", "dimensionless", 1.0, "", "positive",
+          "Smallest static safety factor s0 of any ball contact in any drop",
+          "ISO 76:2006: s0 = C0/P0, and 1 loads a contact to 4200 MPa (a permanent set of 1e-4 D); makers ask 1.5-2 "
+          "or more under shock, so raise it for your machine"),
+    Param("criteria", "max_temperature", "temperature", 393.15, "degC", "positive",
+          "Hottest bearing part over the coast-down",
+          "ours: 120 degC, the heat-stabilisation limit makers state for standard through-hardened bearing steel; "
+          "check your bearing's and its lubricant's"),
+    Param("criteria", "max_preload_stress", "pressure", 4200e6, "MPa", "positive",
+          "Ball stress at rest of the preload a closing internal clearance makes", "ISO 76:2006 (4200 MPa at rest)"),
+    Param("criteria", "required_drops", "dimensionless", None, "", "optional_positive",
+          "Drops (each with its coast-down) the bearings must survive; default life.required_drops",
+          "the machine file's life.required_drops (itself an assumption unless you set it)"),
+    Param("criteria", "amb_air_gap", "length", None, "mm", "optional_positive",
+          "Radial air gap of the magnetic bearings; without it the air-gap criterion is not checked", "user input"),
+    Param("criteria", "air_gap_fraction", "dimensionless", 0.5, "", "unit_interval",
+          "Largest touchdown clearance (with thermal growth) as a fraction of the magnetic air gap",
+          "ours: common practice of about half the air gap; not a clause we could read in ISO 14839-5"),
+    Param("criteria", "seal_clearance", "length", None, "mm", "optional_positive",
+          "Radial clearance of the tightest seal; the journal's largest excursion must stay inside it", "user input"),
+    Param("criteria", "max_backward_whirl_probability", "dimensionless", 0.05, "", "unit_interval",
+          "Largest probability of sustained backward whirl over the campaign's uncertain drop conditions", "ours"),
+)
+CRITERIA_TABLE = by_key(CRITERIA, "criteria")
+
+
+def read_criteria(data: dict | None) -> dict:
+    """The ``[criteria]`` table in SI (unknown keys refused with the list), defaults filled in."""
+    given = read_table(data, CRITERIA_TABLE, "criteria.")
+    return {p.key: given.get(p.key, p.default) for p in CRITERIA} | {"given": sorted(given)}
+
+
+#: Dry steel-on-steel sliding friction: 0.10-0.30 in Gieck & Gieck, *Engineering Formulas*, 7th ed. (1997),
+#: as quoted with other handbooks' values (0.23-0.62) by LBL's engineering table of friction coefficients
+#: (www-eng.lbl.gov/~ajdemell/coefficients_of_friction.html); Blau, Tribol. Int. 34 (2001) 585-591 on why a
+#: friction coefficient is a system's, not a material pair's, property: hence a spread, not a value.
+FRICTION_RANGE = (0.1, 0.3)
+FRICTION_SOURCE = ("Gieck & Gieck, Engineering Formulas, 7th ed. (1997): steel on steel sliding 0.10-0.30; "
+                   "a system property (Blau, Tribol. Int. 34, 2001), so a range")
+#: Samples of the verification's campaign unless ``verify.campaign_samples`` says otherwise: a power of two
+#: (Sobol' balance) whose whirl-free outcome shows P(backward whirl) within the default 5 % at 95 % confidence
+#: (Wilson's bound for no events, 1.96^2 / (n + 1.96^2), is 0.029 at 128 and 0.057 at 64).
+CAMPAIGN_SAMPLES = 128
+
+VERIFY: tuple[Param, ...] = (
+    Param("verify", "low_speed", "angular_speed", None, "rpm", "optional_positive",
+          "Speed of the low-speed drop; default a quarter of rotor.speed", "ours"),
+    Param("verify", "campaign_samples", "dimensionless", float(CAMPAIGN_SAMPLES), "", "count",
+          "Samples of the verification's campaign",
+          "ours: 128 whirl-free drops show P(backward whirl) <= 0.05 at 95 %"),
+    Param("verify", "friction_low", "dimensionless", FRICTION_RANGE[0], "", "unit_interval",
+          "Lowest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
+    Param("verify", "friction_high", "dimensionless", FRICTION_RANGE[1], "", "unit_interval",
+          "Highest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
+    Param("verify", "balance_grade", "velocity", 6.3e-3, "mm/s", "nonnegative",
+          "Balance grade G of the rotor: the campaign's unbalance spreads from 0 to G / speed (and at least to "
+          "rotor.unbalance)",
+          "ISO 21940-11:2016, Table 1 (G 6.3: fans, blowers, pumps, electric motors); e_per = G / Omega"),
+    Param("verify", "fit_grade", "dimensionless", 6.0, "", "positive",
+          "ISO tolerance grade (IT) of the race bore and the journal; the campaign's radial clearance spreads by "
+          "(IT_bore + IT_journal) / 4 either side", "ISO 286-1:2010, Table 1 (IT6: ground bore and journal)"),
+    Param("verify", "clearance_tolerance", "length", None, "um", "optional_nonnegative",
+          "Half-width of the radial clearance's spread, instead of the one from verify.fit_grade", "user input"),
+    Param("verify", "mount_stiffness_spread", "dimensionless", 0.2, "", "unit_interval",
+          "Half-width of the mount stiffness's spread, as a fraction of its value",
+          "ours: elastomer and spring mounts are held to about +-20 % of their rated stiffness"),
+    Param("verify", "mount_damping_spread", "dimensionless", 0.3, "", "unit_interval",
+          "Half-width of the mount damping's spread, as a fraction of its value",
+          "ours: damping scatters more than stiffness (temperature, frequency)"),
+    Param("verify", "start_offset", "dimensionless", 0.3, "", "unit_interval",
+          "Largest offset of the levitated rotor from the bearing centre when the magnetic bearings let go, as a "
+          "fraction of the smallest radial clearance (square spread of that half-diagonal)",
+          "ISO 14839-2:2004: zone A/B boundary of a levitated rotor's displacement at 0.3 of the minimum "
+          "clearance"),
+)
+VERIFY_TABLE = by_key(VERIFY, "verify")
+
+
+def verify_settings(data: dict) -> dict:
+    """The ``[verify]`` table in SI with defaults."""
+    given = read_table(data.get("verify"), VERIFY_TABLE, "verify.")
+    return {p.key: given.get(p.key, p.default) for p in VERIFY}
+
+
+def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
+    """(label, machine tables) per candidate; a spec is a catalogue name, a bearing TOML path or a table."""
+    out = []
+    for i, spec in enumerate(specs):
+        if isinstance(spec, dict):
+            unknown = [k for k in spec if k not in ("name", "bearing")]
+            if unknown:
+                raise InputError.for_field(f"candidate.{i}.{unknown[0]}", spec[unknown[0]],
+                                           "unknown key; allowed keys: name, bearing")
+            if "bearing" not in spec:
+                raise InputError(f"candidate.{i}.bearing: missing; a [[candidate]] names its bearing")
+            bearing, label = spec["bearing"], str(spec.get("name", spec["bearing"]))
+        else:
+            bearing, label = str(spec).strip(), str(spec).strip()
+            if not bearing:
+                raise InputError.for_field("--candidates", spec, "an empty name in the list")
+            _check_bearing_name(bearing, "--candidates")
+        tables = copy.deepcopy(data)
+        for plane in tables["touchdown"]:
+            plane["bearing"] = bearing
+            for derived in ("race_mass", "race_inertia", "line_stiffness", "face_stiffness", "face_radius"):
+                plane.pop(derived, None)  # follow the new bearing
+        out.append((label, tables))
+    return out
+
+
+def _check_bearing_name(spec: str, field: str) -> None:
+    """Refuse a candidate that is neither a catalogue bearing nor a bearing TOML file, naming ``field``."""
+    from auxbearing.bearings.catalogue import get_bearing
+    from auxbearing.bearings.geometry import bearing_names
+
+    if spec.lower().endswith(".toml") or Path(spec).is_file():
+        return
+    try:
+        get_bearing(spec)
+    except (InputError, KeyError, ValueError):
+        raise InputError.for_field(field, spec, "neither a catalogue bearing (e.g. " + ", ".join(bearing_names())
+                                   + "; `auxbearing bearings` lists them all) nor a bearing TOML file") from None
