@@ -37,9 +37,9 @@ DROP_TIMER = """
 import json, sys, time
 import auxbearing
 try:
-    from auxbearing.paper.rig import run_drop
+    from auxbearing.planar.rig import run_drop
 except ImportError:
-    from auxbearing.paper.rig import run_drop
+    from auxbearing.planar.rig import run_drop
 run_drop("QJ202")
 best = None
 for _ in range({repeats}):
@@ -59,7 +59,7 @@ def now():
 t0 = now()
 from auxbearing.analysis import drop
 from auxbearing.machine.pack import pack
-from auxbearing.paper import rig
+from auxbearing.planar import rig
 t1 = now()
 drop._warm_up(pack(rig.paper_rig()))
 t2 = now()

@@ -25,7 +25,7 @@ _LAZY = {
     "Machine": "auxbearing.machine.model",
     "read_machine": "auxbearing.machine.files",
     "run_machine": "auxbearing.analysis.drop",
-    "run_drop": "auxbearing.paper.rig",
+    "run_drop": "auxbearing.planar.rig",
 }
 
 __all__ = ["__version__", *sorted(_LAZY)]

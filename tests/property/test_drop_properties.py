@@ -21,9 +21,9 @@ from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
 from auxbearing.machine.pack import pack
-from auxbearing.paper import drop_params as dp
-from auxbearing.paper import rig
-from auxbearing.paper.rig import planar_machine
+from auxbearing.planar import params as dp
+from auxbearing.planar import rig
+from auxbearing.planar.rig import planar_machine
 
 BEARINGS = ("QJ202", "7202")
 

@@ -10,7 +10,7 @@ from click.testing import CliRunner
 
 from auxbearing.cli.main import cli
 from auxbearing.experiment.synth import SensorModel, synthesize, write_csv
-from auxbearing.paper.drop_params import DropCase
+from auxbearing.planar.params import DropCase
 
 
 def run(*args):

@@ -9,10 +9,10 @@ import xarray as xr
 from auxbearing import InputError, get_bearing
 from auxbearing.analysis import drop as ad
 from auxbearing.common.io import save_dataset
-from auxbearing.paper import drop_params as dp
-from auxbearing.paper import rig
-from auxbearing.paper.drop_params import from_mapping, read_config
-from auxbearing.paper.rig import planar_machine
+from auxbearing.planar import params as dp
+from auxbearing.planar import rig
+from auxbearing.planar.params import from_mapping, read_config
+from auxbearing.planar.rig import planar_machine
 
 QJ202 = get_bearing("QJ202")
 

@@ -23,8 +23,8 @@ from auxbearing.experiment.orbit import (
     preprocess,
 )
 from auxbearing.experiment.run import peak_table
-from auxbearing.paper.drop_params import DropCase, Rotor
-from auxbearing.paper.rig import planar_machine, run_drop
+from auxbearing.planar.params import DropCase, Rotor
+from auxbearing.planar.rig import planar_machine, run_drop
 
 HEADER = "time [s], x [um], y [um], speed [rpm]\n"
 

@@ -12,8 +12,8 @@ from auxbearing import get_bearing
 from auxbearing.core import machine as cm
 from auxbearing.core.probes import plane_diagnostics
 from auxbearing.machine.pack import pack
-from auxbearing.paper.drop_params import DropCase, Rotor
-from auxbearing.paper.rig import planar_machine
+from auxbearing.planar.params import DropCase, Rotor
+from auxbearing.planar.rig import planar_machine
 
 QJ202 = get_bearing("QJ202")
 P0 = cm.N_ROTOR  # first state of plane 0

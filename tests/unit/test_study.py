@@ -9,8 +9,8 @@ from click.testing import CliRunner
 from auxbearing.cli.main import cli
 from auxbearing.common.errors import InputError
 from auxbearing.common.io import atomic_output_dir
-from auxbearing.paper.claims import VERDICTS
 from auxbearing.paper.study_config import load_study_config
+from auxbearing.report.claims import VERDICTS
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "my_study.toml"
 

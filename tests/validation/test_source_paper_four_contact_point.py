@@ -37,9 +37,9 @@ from auxbearing.analysis.contact import ball_contact, contact_map, type_comparis
 from auxbearing.core import hertz
 from auxbearing.core.hertz import line_contact_constant
 from auxbearing.paper import drop_paper as dp
-from auxbearing.paper import drop_params as dpar
-from auxbearing.paper import rig
-from auxbearing.paper.rig import planar_machine
+from auxbearing.planar import params as dpar
+from auxbearing.planar import rig
+from auxbearing.planar.rig import planar_machine
 
 STEEL_207 = 2 * (1 - 0.3**2) / 207e9
 

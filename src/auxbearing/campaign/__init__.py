@@ -4,7 +4,7 @@ A campaign file (:mod:`~auxbearing.campaign.config`) names a machine and its unc
 design (:mod:`~auxbearing.campaign.sampling`) turns a seed into samples; each sample is run into a
 flat record (:mod:`~auxbearing.campaign.evaluate`) on Dask workers (:mod:`~auxbearing.campaign.run`)
 and streamed into a Zarr store (:mod:`~auxbearing.campaign.store`) that a second call resumes;
-:mod:`~auxbearing.campaign.statistics` and :mod:`~auxbearing.campaign.report` turn the store into
+:mod:`~auxbearing.campaign.statistics` and :mod:`~auxbearing.report.campaign` turn the store into
 probabilities, quantiles, sensitivity indices and figures.
 """
 

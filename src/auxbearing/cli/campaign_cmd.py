@@ -136,10 +136,10 @@ def campaign_report_command(store, out_dir, whirl_map, as_json):
     ok, Spearman rank correlations otherwise), samples.csv and the figures histograms, scatter_matrix
     and whirl_map.
     """
-    from auxbearing.campaign.report import whirl_map_keys, write_report
     from auxbearing.campaign.statistics import headline
     from auxbearing.campaign.store import load_results
     from auxbearing.common.io import atomic_output_dir
+    from auxbearing.report.campaign import whirl_map_keys, write_report
 
     ds = load_results(store)
     whirl_map_keys(ds, tuple(whirl_map) if whirl_map else None)  # a wrong key fails before anything is written

@@ -2,7 +2,7 @@
 
 ``drop --machine FILE_OR_NAME`` runs a machine (rigid rotor on one or two touchdown planes,
 :mod:`auxbearing.machine.model`); without it, ``drop`` runs the source paper's planar drop (Sec. II.D,
-Fig. 9-11), whose rotor and drop parameters of :data:`auxbearing.paper.drop_params.PARAMETERS` are options
+Fig. 9-11), whose rotor and drop parameters of :data:`auxbearing.planar.params.PARAMETERS` are options
 (generated from that table, so help, unit and default cannot drift apart) and keys of the
 ``[rotor]`` / ``[drop]`` tables of a ``--config`` TOML file; options win over the file. Heavy
 libraries are imported inside the commands, so ``--help`` answers at once.
@@ -42,7 +42,7 @@ from auxbearing.cli.drop_checks import (
     stiffness_warnings,
 )
 from auxbearing.common.errors import InputError
-from auxbearing.paper.drop_params import PARAMETERS, Param, check, convert, display_value
+from auxbearing.planar.params import PARAMETERS, Param, check, convert, display_value
 
 #: Option names that differ from the parameter key ("--friction" is the issue's name for mu_1).
 _OPTION_NAMES = {
@@ -102,7 +102,7 @@ def quiet_option():
 
 def build_inputs(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
     """Bearing, Rotor and DropCase from catalogue/TOML/options (options win); errors name options as typed."""
-    from auxbearing.paper.drop_params import DropCase, Rotor, read_config
+    from auxbearing.planar.params import DropCase, Rotor, read_config
 
     if config is None:
         bearing, rotor_kw, drop_kw = None, {}, {}
@@ -150,7 +150,7 @@ def _options_as_typed(params: dict):
 
 def paper_machine(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
     """The paper's drop as :func:`build_inputs` gives it and its machine, built before any work is done."""
-    from auxbearing.paper.rig import planar_machine
+    from auxbearing.planar.rig import planar_machine
 
     bearing, rotor, case = build_inputs(ctx, bearing_spec, config, params)
     with _options_as_typed(params):
@@ -247,7 +247,7 @@ def _paper_drop(ctx, bearing_spec, config, params, wall, max_contacts, out_dir, 
     from auxbearing.analysis.statics import stress_warning
     from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.paper.drop_paper import PAPER_DROP
-    from auxbearing.paper.rig import run_drop
+    from auxbearing.planar.rig import run_drop
 
     bearing, rotor, case, machine = paper_machine(ctx, bearing_spec, config, params)
     blame = next((f"--{_option_name(p)} = {params[(p.section, p.key)]!r}" for p in PARAMETERS

@@ -111,7 +111,7 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     from auxbearing.experiment.io import read_measured
     from auxbearing.experiment.orbit import Preprocessing
     from auxbearing.experiment.run import run_experiment
-    from auxbearing.paper.drop_params import DropCase, Rotor, read_config
+    from auxbearing.planar.params import DropCase, Rotor, read_config
     unit_map = _units(units)
     cfg_bearing, rotor_kw, drop_kw = None, {}, {}
     if config is not None:

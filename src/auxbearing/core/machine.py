@@ -441,7 +441,7 @@ def rhs(t, y, m, out):
 
     Examples
     --------
-    >>> from auxbearing.paper.rig import paper_rig
+    >>> from auxbearing.planar.rig import paper_rig
     >>> from auxbearing.machine.pack import pack
     >>> from auxbearing.core.machine import N_STATE, VY
     >>> import numpy as np

@@ -37,8 +37,8 @@ from auxbearing.analysis.drop import journal_orbit
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.common.errors import InputError
 from auxbearing.experiment.orbit import lowpass
-from auxbearing.paper.drop_params import DropCase, Rotor
-from auxbearing.paper.rig import planar_machine, run_drop
+from auxbearing.planar.params import DropCase, Rotor
+from auxbearing.planar.rig import planar_machine, run_drop
 
 #: Fitted parameters: (name, unit shown, factor SI -> shown, central-difference step [SI]).
 FIT_PARAMETERS = (

@@ -25,8 +25,8 @@ from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.experiment.fit import FitOptions, fit_parameters, simulate_like_measurement
 from auxbearing.experiment.io import read_measured
 from auxbearing.experiment.orbit import Preprocessing, contact_from_orbit, orbit_features, preprocess
-from auxbearing.paper.drop_params import DropCase, Rotor
-from auxbearing.paper.rig import planar_machine
+from auxbearing.planar.params import DropCase, Rotor
+from auxbearing.planar.rig import planar_machine
 from auxbearing.plots.experiment import plot_fit_window, plot_force_stress, plot_orbits
 
 #: Peak quantities compared in the table: (summary key, label, format).
@@ -124,7 +124,7 @@ def run_experiment(
     -------
     ExperimentResult
         ``datasets``: ``measured`` (orbit, force, ball loads and stress over time since the
-        drop) and ``simulated_<label>`` (:func:`auxbearing.paper.rig.run_drop` output);
+        drop) and ``simulated_<label>`` (:func:`auxbearing.planar.rig.run_drop` output);
         ``summary``: JSON-ready (``warnings``: sentences on results that mean little, such as an orbit that
         never reaches the clearance used); ``figures``: orbits, force/stress and (with the fit) the fit window.
     """

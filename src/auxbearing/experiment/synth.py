@@ -24,8 +24,8 @@ from scipy import signal
 
 from auxbearing.bearings.catalogue import load_bearing
 from auxbearing.bearings.geometry import BearingGeometry
-from auxbearing.paper.drop_params import DropCase, Rotor
-from auxbearing.paper.rig import run_drop
+from auxbearing.planar.params import DropCase, Rotor
+from auxbearing.planar.rig import run_drop
 
 #: Folder of the shipped example data (inside the package, next to the catalogue).
 EXAMPLE_DIR = Path(__file__).resolve().parents[1] / "catalog" / "experiments"
@@ -81,7 +81,7 @@ def synthesize(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = N
     Parameters
     ----------
     bearing, rotor, case :
-        As :func:`auxbearing.paper.rig.run_drop`; default case: Table II with
+        As :func:`auxbearing.planar.rig.run_drop`; default case: Table II with
         :data:`TRUE_CASE`.
     sensor : SensorModel, optional
     duration : float

@@ -1,6 +1,6 @@
 """The paper's drop comparison: QJ202 against 7202 with Table II, and how it moves with s, mu, phase.
 
-Source paper Sec. II.D (text after Fig. 11). Runs :func:`auxbearing.paper.rig.run_drop` for
+Source paper Sec. II.D (text after Fig. 11). Runs :func:`auxbearing.planar.rig.run_drop` for
 each bearing and sweep point, checks that the peaks do not hang on the integration tolerance or
 the friction regularisation, and lists every input the paper leaves out (:data:`UNSTATED`).
 """
@@ -19,8 +19,8 @@ import xarray as xr
 from auxbearing import __version__
 from auxbearing.bearings.catalogue import load_bearing
 from auxbearing.bearings.geometry import BearingGeometry
-from auxbearing.paper.drop_params import DropCase, Rotor, from_mapping
-from auxbearing.paper.rig import run_drop
+from auxbearing.planar.params import DropCase, Rotor, from_mapping
+from auxbearing.planar.rig import run_drop
 
 #: Source paper Sec. II.D (text after Fig. 11): peak collision force and peak bearing stress.
 PAPER_DROP = {

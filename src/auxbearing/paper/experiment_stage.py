@@ -13,8 +13,8 @@ from pathlib import Path
 
 from auxbearing.experiment.run import run_experiment
 from auxbearing.experiment.synth import EXAMPLE_DIR
-from auxbearing.paper.claims import CANNOT_CHECK, Assumption, Claim
-from auxbearing.paper.drop_params import DropCase, Rotor, from_mapping
+from auxbearing.planar.params import DropCase, Rotor, from_mapping
+from auxbearing.report.claims import CANNOT_CHECK, Assumption, Claim
 from auxbearing.report.model import Figure, Section
 
 #: Source paper Sec. III: max stress computed from the measured drops.

@@ -19,11 +19,11 @@ from pathlib import Path
 
 from auxbearing import __version__
 from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
-from auxbearing.paper.claims import HOLDS
 from auxbearing.paper.study_config import StudyConfig
 from auxbearing.paper.study_contact import run_contact_stage
 from auxbearing.paper.study_drop import run_drop_stage
 from auxbearing.paper.study_static import run_static_stage
+from auxbearing.report.claims import HOLDS
 from auxbearing.report.html import render_report
 from auxbearing.report.model import Section
 

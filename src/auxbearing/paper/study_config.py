@@ -68,7 +68,7 @@ class StudyConfig:
     @property
     def own_bearings(self) -> bool:
         """True when the bearings, rotor or drop differ from the paper's (a study of the user's own bearings)."""
-        from auxbearing.paper.drop_params import DropCase, Rotor, from_mapping
+        from auxbearing.planar.params import DropCase, Rotor, from_mapping
 
         base = default_config()
         if self.bearing != base.bearing or self.comparison != base.comparison:
@@ -172,7 +172,7 @@ def _same(a: object, b: object) -> bool:
 
 def _check_drop_tables(sections: dict) -> None:
     """The [rotor] and [drop] tables as the drop stage will read them, checked now (not after an hour of stages)."""
-    from auxbearing.paper.drop_params import DropCase, Rotor, from_mapping
+    from auxbearing.planar.params import DropCase, Rotor, from_mapping
 
     Rotor(**from_mapping(sections.get("rotor"), "rotor"))
     DropCase(**from_mapping(sections.get("drop"), "drop"))

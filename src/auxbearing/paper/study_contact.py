@@ -16,8 +16,8 @@ from auxbearing.analysis.contact import PAPER_CONTACT, ball_contact, contact_map
 from auxbearing.analysis.statics import stress_warning
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.bearings.ratings import safety_factor
-from auxbearing.paper.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS, Assumption, Claim, within
 from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
+from auxbearing.report.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS, Assumption, Claim, within
 from auxbearing.report.model import PAPER_STUDY, Figure, Framing, Section, retitle
 
 #: Stress penalty that defines the "design window" of contact angle: the largest angle whose

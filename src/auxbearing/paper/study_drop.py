@@ -12,10 +12,10 @@ import math
 from auxbearing.analysis.statics import stress_warning
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.bearings.ratings import ISO76_BALL_STRESS
-from auxbearing.paper.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.paper.drop_paper import PAPER_DROP, SWEEPS, drop_compare, sweep_dataset
-from auxbearing.paper.drop_params import PARAMETERS, DropCase, Rotor, display_value, from_mapping
+from auxbearing.planar.params import PARAMETERS, DropCase, Rotor, display_value, from_mapping
 from auxbearing.plots.drop import plot_orbit_force, plot_speeds_stress, plot_sweep
+from auxbearing.report.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.report.model import PAPER_STUDY, Figure, Framing, Section, retitle, slug
 
 #: Peak values are judged against the paper within this fraction: the paper leaves the clearance,

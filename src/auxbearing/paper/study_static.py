@@ -12,7 +12,6 @@ import xarray as xr
 from auxbearing.analysis.statics import stress_warning, validity_warnings_all
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.bearings.ratings import ISO76_BALL_STRESS, safety_factor
-from auxbearing.paper.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.paper.static_paper import (
     FIG6_AXIAL_LOADS,
     FIG6_FIXED_AXIAL,
@@ -22,6 +21,7 @@ from auxbearing.paper.static_paper import (
     FIG8_RADIAL_LOADS,
     static_study,
 )
+from auxbearing.report.claims import DOES_NOT_HOLD, HOLDS, Assumption, Claim
 from auxbearing.report.model import PAPER_STUDY, Figure, Framing, Section, retitle
 
 #: Radial load at which the summary compares the two bearings [N]: the load of the paper's Fig. 6 (d).

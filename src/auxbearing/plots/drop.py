@@ -1,7 +1,7 @@
 """Figures of a drop: orbit, contact force, speeds, stress, tilt, whirl timeline; the paper's sweep.
 
 Each function takes the Dataset (and summary) of :func:`auxbearing.analysis.drop.run_machine` or
-:func:`auxbearing.paper.rig.run_drop`. A function that draws one panel takes ``ax=None``: given an
+:func:`auxbearing.planar.rig.run_drop`. A function that draws one panel takes ``ax=None``: given an
 axes, it draws there and returns its figure; otherwise it makes a new
 :class:`matplotlib.figure.Figure`. Nothing global (pyplot state, rcParams) is touched.
 """

@@ -104,7 +104,7 @@ def plot_contact_force(measured: xr.Dataset, simulated: dict[str, xr.Dataset], a
     """Rotor/race contact force [N] over time [ms]: from the measured orbit and from each simulation.
 
     ``measured`` needs ``contact_force`` [N]; each simulation ``normal_force`` [N] (a
-    :func:`auxbearing.paper.rig.run_drop` Dataset).
+    :func:`auxbearing.planar.rig.run_drop` Dataset).
     """
     fig, ax = axes_for(ax, (10, 3.2))
     _time_panel(ax, measured, simulated, "contact_force", "normal_force", 1.0, "Rotor/race contact force [N]")
@@ -122,7 +122,7 @@ def plot_force_stress(measured: xr.Dataset, simulated: dict[str, xr.Dataset], ti
     """Contact force and max ball stress over time: from the measured orbit and from the simulations.
 
     ``measured`` needs ``contact_force`` [N] and ``max_ball_stress`` [Pa]; each simulation
-    ``normal_force`` and ``max_ball_stress`` (a :func:`auxbearing.paper.rig.run_drop` Dataset).
+    ``normal_force`` and ``max_ball_stress`` (a :func:`auxbearing.planar.rig.run_drop` Dataset).
     """
     fig = figure_for(fig, (10, 6))
     ax_f, ax_s = fig.subplots(2, 1, sharex=True)

@@ -15,7 +15,7 @@ import json
 from datetime import UTC, datetime
 
 from auxbearing import __version__
-from auxbearing.paper.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS
+from auxbearing.report.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS
 from auxbearing.report.model import PAPER_STUDY, Framing, Section
 
 _CSS = """

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import xarray as xr
 from matplotlib.figure import Figure as MplFigure
 
-from auxbearing.paper.claims import Assumption, Claim
+from auxbearing.report.claims import Assumption, Claim
 
 
 @dataclass(frozen=True)

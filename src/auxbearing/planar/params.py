@@ -4,7 +4,7 @@ Source paper Sec. II.D and Table II, read as docs/paper_notes.md says. Each para
 :class:`~auxbearing.common.params.Param` row of :data:`PARAMETERS`; the dataclasses, their validation,
 the TOML ``[rotor]`` / ``[drop]`` sections and the command-line options of ``auxbearing drop`` are
 built from that table. The drop itself runs through the machine model
-(:func:`auxbearing.paper.rig.run_drop` builds a one-plane :class:`~auxbearing.machine.model.Machine`).
+(:func:`auxbearing.planar.rig.run_drop` builds a one-plane :class:`~auxbearing.machine.model.Machine`).
 
 Values the paper does not give, and what we set (see ``source`` of each row): clearance s and
 rotor radius r (s = 0.2 mm, r = bore/2 - s), unbalance phase at the drop (0), K_l's contact

@@ -1,7 +1,7 @@
 """The source paper's drop rig as a machine: one plane at the mass centre, tilt and axial motion locked.
 
 The paper (Sec. II.D, Table II; corrected per docs/paper_notes.md) drops a rigid rotor into one four-point
-bearing; :func:`planar_machine` builds that rig from its drop parameters (:mod:`auxbearing.paper.drop_params`)
+bearing; :func:`planar_machine` builds that rig from its drop parameters (:mod:`auxbearing.planar.params`)
 as an ordinary machine, and :func:`run_drop` runs it with the summary keys the paper's figures use.
 """
 
@@ -19,13 +19,13 @@ from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.common.errors import InputError
 from auxbearing.common.io import to_jsonable
 from auxbearing.machine.model import Machine, MachineRotor, Simulation, make_plane
-from auxbearing.paper.drop_params import DropCase, Rotor
+from auxbearing.planar.params import DropCase, Rotor
 
 
 def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
     """The source paper's drop as a machine: one plane at the mass centre, tilt and axial motion locked.
 
-    ``rotor`` and ``case`` are :class:`auxbearing.paper.drop_params.Rotor` and ``DropCase``.
+    ``rotor`` and ``case`` are :class:`auxbearing.planar.params.Rotor` and ``DropCase``.
     """
     values = {"radial_clearance": case.clearance, "race_mass": case.race_mass, "race_inertia": case.race_inertia,
               "line_stiffness": case.line_stiffness, "line_damping": case.line_damping,
@@ -50,7 +50,7 @@ def planar_machine(bearing: BearingGeometry, rotor, case) -> Machine:
 def paper_rig() -> Machine:
     """The source paper's QJ202 drop with Table II and our stated defaults (a doctest helper)."""
     from auxbearing.bearings.catalogue import get_bearing
-    from auxbearing.paper.drop_params import DropCase, Rotor
+    from auxbearing.planar.params import DropCase, Rotor
 
     return planar_machine(get_bearing("QJ202"), Rotor(), DropCase())
 
