@@ -47,13 +47,9 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
 
     from auxbearing.analysis.coastdown import run_coastdown
     from auxbearing.analysis.coastdown_life import cycles_of_worst_contact
+    from auxbearing.analysis.plausibility import plausibility
     from auxbearing.cli.common import read_machine_file
-    from auxbearing.cli.drop_checks import (
-        check_ball_contacts,
-        machine_input_names,
-        plausibility,
-        stiffness_warnings,
-    )
+    from auxbearing.cli.drop_checks import check_ball_contacts, machine_input_names, stiffness_warnings
     from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.common.units import to_si
 

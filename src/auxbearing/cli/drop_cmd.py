@@ -16,6 +16,7 @@ from pathlib import Path
 
 import click
 
+from auxbearing.analysis.plausibility import impact_rate_warning, plausibility, race_sink_warning, sink_check
 from auxbearing.cli.common import (
     ProgressReporter,
     bearing_option,
@@ -33,12 +34,8 @@ from auxbearing.cli.drop_checks import (
     check_ball_contacts,
     check_budget,
     decimation_note,
-    impact_rate_warning,
     machine_input_names,
     paper_stiffness_names,
-    plausibility,
-    race_sink_warning,
-    sink_check,
     stiffness_warnings,
 )
 from auxbearing.common.errors import InputError

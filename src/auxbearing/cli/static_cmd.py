@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from auxbearing.analysis.plausibility import refuse_sinking, static_sink_warning
 from auxbearing.cli.common import (
     bearing_option,
     checked_out_dir,
@@ -78,12 +79,12 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     typed = {"--axial": axial, "--radial": radial, "--moment": moment}
     five = np.array([[loads["axial"], loads["radial"], 0.0, 0.0, -loads["moment"]]])
     with option_named("--ball-constant", "ball_constant"):
-        _refuse_sinking(bearing, five, ball_constant, lambda k: _blame(typed, loads, ball_constant))
+        refuse_sinking(bearing, five, ball_constant, lambda k: _blame(typed, loads, ball_constant))
     with option_named("--ball-constant", "ball_constant"), option_named("--axial", "axial"):
         ds = load_distribution(bearing, **loads, axial_condition=axial_condition, tilt=tilt,
                                ball_constant=ball_constant)
     result = summary(ds)
-    warn(*validity_warnings(ds), _sink_warning(bearing, ds, 0))
+    warn(*validity_warnings(ds), static_sink_warning(bearing, ds, 0))
     if as_json:
         echo_json(result)
         return
@@ -211,7 +212,7 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
         return f"{name} = {value!r}: line {lines[k]}"
 
     with option_named("--ball-constant", "ball_constant"):
-        _refuse_sinking(bearing, five, ball_constant, blame)
+        refuse_sinking(bearing, five, ball_constant, blame)
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp, \
             option_named("--ball-constant", "ball_constant"):
         ds = load_cases(bearing, loads_path, axial_condition=axial_condition, tilt=tilt,
@@ -254,40 +255,8 @@ def _blame(typed: dict, loads: dict, ball_constant: str | None) -> str:
     return f"{name} = {typed[name]!r}"
 
 
-def _refuse_sinking(bearing, loads, ball_constant, blame) -> None:
-    """Refuse load cases no elastic contact can carry, before any solve.
-
-    The estimate is :func:`auxbearing.analysis.statics.sink_estimate`.
-
-    ``blame(k)`` says which input of case k to name.
-    """
-    import numpy as np
-
-    from auxbearing.analysis.statics import SINK_LIMIT_FRACTION, sink_estimate
-
-    sink = sink_estimate(bearing, loads, ball_constant)
-    limit = SINK_LIMIT_FRACTION * bearing.ball_diameter
-    worst = int(np.argmax(sink))
-    if sink[worst] > limit:
-        raise InputError(f"{blame(worst)}: the rings would move about {sink[worst] * 1e3:.3g} mm into the balls "
-                         f"(ball diameter {bearing.ball_diameter * 1e3:g} mm), beyond {SINK_LIMIT_FRACTION:.0%} of a "
-                         "ball where no contact law of the ball set holds; no result follows (a steel ball constant "
-                         "is about 1e10 N/m**1.5)")
 
 
-def _sink_warning(bearing, ds, case: int) -> str | None:
-    """A sentence when the solved rings moved further into the balls than an elastic steel contact can."""
-    import math
-
-    from auxbearing.analysis.statics import SINK_WARNING_FRACTION
-
-    c = ds.isel(case=case)
-    moved = math.hypot(float(c["axial_displacement"]), math.hypot(float(c["displacement_x"]),
-                                                                   float(c["displacement_y"])))
-    if moved <= SINK_WARNING_FRACTION * bearing.ball_diameter:
-        return None
-    return (f"the rings moved {moved * 1e6:.4g} um, {moved / bearing.ball_diameter:.1%} of the ball diameter: beyond "
-            "the 1.6 % a steel ball's elastic approach reaches at 6000 MPa, so the contact law is outside its range")
 
 
 COMMANDS = [static_command, static_study_command, static_cases_command]
