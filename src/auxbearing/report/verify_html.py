@@ -14,6 +14,9 @@ import math
 from datetime import UTC, datetime
 
 from auxbearing import __version__
+from auxbearing.common.params import display_value
+from auxbearing.machine.judging import CRITERIA
+from auxbearing.machine.params import COASTDOWN, LIFE, SIMULATION
 from auxbearing.report.html import _CSS, _e, _table, figure_png_base64
 
 _EXTRA_CSS = """
@@ -174,6 +177,40 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     parts.append(f"<p class='small'>auxbearing {__version__}, {datetime.now(UTC):%Y-%m-%d %H:%M} UTC, "
                  f"{result['wall_time_s']:.0f} s. The reproduction of the source paper is a separate command: "
                  "<code>auxbearing study</code>.</p>")
-    parts.append(f"<pre class='small'>{_e(json.dumps(result['inputs'], indent=1, default=str))}</pre>")
+    parts.append(f"<pre class='small'>{_e(json.dumps(readable_inputs(result['inputs']), indent=1, default=str))}</pre>")
     parts.append("</body></html>")
     return "".join(parts)
+
+
+#: Tables of the inputs whose values are read through a parameter row, by where they sit in ``inputs``.
+_ROWS = {("machine", "drop"): SIMULATION, ("machine", "coastdown"): COASTDOWN, ("machine", "life"): LIFE,
+         ("criteria",): CRITERIA}
+
+
+def readable_inputs(inputs: dict) -> dict:
+    """The verification's inputs as a person reads them.
+
+    Each parameter-table value is in its display unit ("0.5 mm", "120 degC"), every other number is cut
+    to six significant digits (no 18.000000000000004); ``verify.json`` keeps the full values.
+    """
+
+    def tidy(value):
+        if isinstance(value, dict):
+            return {k: tidy(v) for k, v in value.items()}
+        if isinstance(value, (list, tuple)):
+            return [tidy(v) for v in value]
+        if isinstance(value, float) and math.isfinite(value):
+            return float(f"{value:.6g}")
+        return value
+
+    out = tidy(inputs)
+    for path, rows in _ROWS.items():
+        table = out
+        for key in path:
+            table = table.get(key) if isinstance(table, dict) else None
+        if not isinstance(table, dict):
+            continue
+        for row in rows:
+            if row.key in table and table[row.key] is not None:
+                table[row.key] = display_value(row, table[row.key])
+    return out
