@@ -39,18 +39,21 @@ def plot_speeds(history: xr.Dataset, ax=None) -> Figure:
     return fig
 
 
-def plot_temperatures(history: xr.Dataset, plane: int = 0, ax=None) -> Figure:
-    """Node temperatures of one plane's thermal network [degC]."""
+def plot_temperatures(history: xr.Dataset, plane: int = 0, ax=None, limit_C: float | None = None) -> Figure:
+    """Node temperatures of one plane's thermal network [degC], with the limit judged against when given."""
     fig, ax = axes_for(ax, (7, 4))
     _shade_reduced(ax, history)
     sel = history.temperature.isel(plane=plane)
     for j, node in enumerate(history.node.values):
         ax.plot(history.time.values, sel.isel(node=j).values, label=str(node).replace("_", " "))
+    if limit_C is not None:
+        ax.axhline(limit_C, color="tab:red", ls="--", lw=1.0, label=f"limit {limit_C:.0f} °C")
     ax.set_xlabel("Time since the drop [s]")
     ax.set_ylabel("Temperature [°C]")
     ax.set_title(f"temperatures, {history.plane.values[plane]}", loc="left")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    # beside the axes: inside, the legend covered the hottest curve near the limit
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     return fig
 
 

@@ -29,10 +29,17 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     out["drops"] = drops
     coast = cases.coastdown
     if coast is not None:
-        figs = [(pc.plot_speeds(coast.history), "Spin-down of rotor and races (grey: reduced model)")]
+        figs = [(pc.plot_speeds(coast.history), "Spin-down of rotor and races. Grey bands: stretches the reduced "
+                 "model carries (the races rolling or whirling steadily; spin speeds under the losses the last "
+                 "full-dynamics windows measured). A race speed that steps where a band ends is full dynamics "
+                 "taking over again from the averaged state.")]
+        limit = result.get("inputs", {}).get("criteria", {}).get("max_temperature")
+        limit_C = None if limit is None else limit - 273.15
         for k in range(len(cases.machine.planes)):
-            figs.append((pc.plot_temperatures(coast.history, k),
-                         f"{cases.machine.planes[k].name}: temperatures of the plane's thermal network"))
+            figs.append((pc.plot_temperatures(coast.history, k, limit_C=limit_C),
+                         f"{cases.machine.planes[k].name}: temperatures of the plane's thermal network"
+                         + ("" if limit_C is None else f"; dashed: the limit the verdict judges against "
+                            f"(criteria.max_temperature = {limit_C:.0f} °C)")))
         figs.append((pc.plot_clearances(coast.history), "Clearances with thermal growth"))
         for k, life in enumerate(coast.life):
             if life is None:  # the drop left the model's range: its stress history is not a life's
@@ -45,9 +52,12 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
         from auxbearing.plots.campaign import plot_histograms, plot_whirl_map
 
         ds = load_results(cases.campaign_store)
-        figs = [(plot_histograms(ds), "Distributions of the campaign's outcomes")]
         keys = [str(k) for k in ds["input"].values]
-        if len(keys) >= 2:
+        whirled = "backward_whirl" in ds and bool(np.nansum(ds["backward_whirl"].values) > 0)
+        note = "" if whirled or len(keys) < 2 else (" No drop of the campaign whirled backward, so there is no whirl "
+                                                     "map to draw.")
+        figs = [(plot_histograms(ds), "Distributions of the campaign's outcomes." + note)]
+        if len(keys) >= 2 and whirled:
             figs.append((plot_whirl_map(ds, keys[0], keys[1]), f"Whirl class over {keys[0]} and {keys[1]}"))
         out["campaign"] = figs
     if result.get("candidates"):
