@@ -52,9 +52,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.common.io import atomic_output_dir, save_dataset, write_json
-    from auxbearing.report.verify_figures import build_figures
-    from auxbearing.report.verify_html import render, verdict_rows
+    from auxbearing.common.io import atomic_output_dir
+    from auxbearing.report.verify_html import verdict_rows
     from auxbearing.verify.run import verify
 
     if campaign_samples is not None and not 0 <= campaign_samples <= 100000:
@@ -76,15 +75,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
 
             result = verify(machine_spec, tmp, specs, quick=quick, samples=campaign_samples, workers=workers,
                             scheduler=scheduler, with_recommendation=not no_recommendation, progress=say)
-        cases = result["design"]["cases"]
-        for i, run in enumerate(cases.drops.values()):
-            save_dataset(run.dataset, tmp / f"drop_{i}.nc", {"machine": cases.machine.describe()})
-        if cases.coastdown is not None:
-            save_dataset(cases.coastdown.history, tmp / "coastdown.nc", {"machine": cases.machine.describe()})
-        figures = build_figures(result)
-        (tmp / "report.html").write_text(render(result, figures), encoding="utf-8")
-        public = {k: v for k, v in result.items() if k not in ("design", "candidate_rows", "recommendation_rows")}
-        write_json(public, tmp / "verify.json", result["inputs"])
+        result.save(tmp)
     if as_json:
         echo_json({k: v for k, v in result.items() if k in ("verdict", "reason", "machine", "criteria", "worst_margin",
                                                             "candidates", "ranking", "recommendation",

@@ -1,8 +1,9 @@
 """Verification of a machine's touchdown bearings: cases, criteria, candidates, a recommendation.
 
 ``from auxbearing.verify import verify``: the command line's ``auxbearing verify`` as a function
-(:func:`auxbearing.verify.run.verify`), returning the verdict, the criteria with their margins, the
-candidates and the recommendation as a dict (the command line writes it as verify.json and report.html).
+(:func:`auxbearing.verify.run.verify`), returning a :class:`~auxbearing.verify.result.Verification`: the
+verdict, the criteria with their margins (``.criteria``, a DataFrame), the candidates and the recommendation
+as a dict, with ``.to_html(path)``, ``.save(folder)`` (what the command line writes) and a Jupyter display.
 """
 
 __all__ = ["verify"]

@@ -23,6 +23,7 @@ from auxbearing.verify.convergence import convergence_started
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, worst_margin
 from auxbearing.verify.designs import recommend, recommended_tables
 from auxbearing.verify.judge import judge
+from auxbearing.verify.result import Verification
 from auxbearing.verify.schedule import verification_cluster
 
 
@@ -93,8 +94,8 @@ def _design(cases: Cases, criteria: dict) -> dict:
 
 def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quick: bool = False,
            samples: int | None = None, workers: int | None = None, scheduler: str | None = None,
-           with_recommendation: bool = True, progress: Callable[[str], None] | None = None) -> dict:
-    """Verify a machine's touchdown bearings (module docstring); returns what ``verify.json`` holds and more.
+           with_recommendation: bool = True, progress: Callable[[str], None] | None = None) -> Verification:
+    """Verify a machine's touchdown bearings (module docstring): a :class:`~auxbearing.verify.result.Verification`.
 
     Parameters
     ----------
@@ -170,7 +171,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
             ["worst drop margin", f"{100 * rec['worst_margin']:+.1f} %", f"{100 * rec['as_is']:+.1f} %"]]
     result["assumptions"] = _assumptions(design["cases"], criteria, settings, quick)
     result["wall_time_s"] = time.perf_counter() - start
-    return result
+    return Verification(result)
 
 
 def _run_all(data, name, base, criteria, settings, candidate_list, quick, samples, out_dir, executor, address,

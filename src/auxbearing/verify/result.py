@@ -1,0 +1,85 @@
+"""A verification's result as a Python object: the verdict, its criteria as a table, the report and files.
+
+:func:`auxbearing.verify.run.verify` returns a :class:`Verification`, a dict (what ``verify.json`` holds,
+plus the design's cases) with the views an engineer at a prompt or in a notebook wants: the criteria as a
+pandas DataFrame, ``to_html(path)`` for the report, ``save(folder)`` for everything the command line writes,
+and a rich display in Jupyter.
+"""
+
+from __future__ import annotations
+
+import html
+from pathlib import Path
+
+#: The keys of ``verify.json`` (the rest are objects for the report: runs, datasets, rows).
+PUBLIC_KEYS_LEFT_OUT = ("design", "candidate_rows", "recommendation_rows")
+
+
+class Verification(dict):
+    """The result of a verification (a dict, as before), with views.
+
+    Examples
+    --------
+    >>> from auxbearing.verify import verify            # doctest: +SKIP
+    >>> result = verify("blower", "out/blower")        # doctest: +SKIP
+    >>> result.verdict, result.criteria[["name", "margin", "pass"]]  # doctest: +SKIP
+    >>> result.to_html("out/blower/report.html")       # doctest: +SKIP
+    """
+
+    @property
+    def verdict(self) -> str:
+        """``pass``, ``fail`` or ``incomplete``."""
+        return self["verdict"]
+
+    @property
+    def criteria(self):
+        """The design's criteria as a pandas DataFrame: name, required, found, margin, pass, unit, origin, evidence."""
+        import pandas as pd
+
+        return pd.DataFrame(self["criteria"])
+
+    def to_html(self, path: str | Path) -> Path:
+        """Write the verification report (verdicts first, figures, inputs) to ``path``; returns it."""
+        from auxbearing.report.verify_figures import build_figures
+        from auxbearing.report.verify_html import render
+
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(render(self, build_figures(self)), encoding="utf-8")
+        return path
+
+    def save(self, folder: str | Path) -> Path:
+        """Write report.html, verify.json and the design's drop and coast-down datasets into ``folder``."""
+        from auxbearing.common.io import save_dataset, write_json
+
+        folder = Path(folder)
+        folder.mkdir(parents=True, exist_ok=True)
+        cases = self["design"]["cases"]
+        for i, run in enumerate(cases.drops.values()):
+            save_dataset(run.dataset, folder / f"drop_{i}.nc", {"machine": cases.machine.describe()})
+        if cases.coastdown is not None:
+            save_dataset(cases.coastdown.history, folder / "coastdown.nc", {"machine": cases.machine.describe()})
+        self.to_html(folder / "report.html")
+        write_json(self.public(), folder / "verify.json", self["inputs"])
+        return folder
+
+    def public(self) -> dict:
+        """What ``verify.json`` holds."""
+        return {k: v for k, v in self.items() if k not in PUBLIC_KEYS_LEFT_OUT}
+
+    def __repr__(self) -> str:
+        n = len(self["criteria"])
+        return (f"<Verification of {self['machine']}: {self['verdict'].upper()}, {n} criteria; "
+                f"{self['reason']}>")
+
+    def _repr_html_(self) -> str:
+        from auxbearing.report.verify_html import verdict_rows
+
+        rows, classes = verdict_rows(self["design"]["criteria"])
+        colour = {"pass": "#2e7d32", "fail": "#c62828", "unchecked": "#8d6e00"}
+        head = "".join(f"<th>{h}</th>" for h in ("criterion", "required", "found", "margin", "pass/fail"))
+        body = "".join("<tr>" + "".join(f"<td style='color:{colour[c]}'>{html.escape(str(v))}</td>" if j == 4
+                                        else f"<td>{html.escape(str(v))}</td>" for j, v in enumerate(row)) + "</tr>"
+                       for row, c in zip(rows, classes, strict=True))
+        return (f"<p><b>Verification of {html.escape(self['machine'])}: {self['verdict'].upper()}</b>: "
+                f"{html.escape(self['reason'])}</p><table><tr>{head}</tr>{body}</table>")
