@@ -2,6 +2,7 @@
 
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -13,6 +14,7 @@ import pytest
 from click.testing import CliRunner
 
 from auxbearing.cli.main import cli
+from tests.browser import CHROMIUM, probe_report
 
 AUXBEARING = str(Path(sys.executable).with_name("auxbearing"))
 
@@ -151,6 +153,16 @@ def test_campaign_on_a_running_local_cluster_of_two_workers(tmp_path):
         assert (report / name).is_file(), name
     header = (report / "quantiles.csv").read_text().splitlines()[0]
     assert "peak_ball_stress [MPa]" in header and "peak_contact_force [N]" in header
+    page = (report / "report.html").read_text(encoding="utf-8")
+    for heading in ("Probabilities", "Outcomes", "What drives the outcomes", "Figures"):
+        assert f"<h2>{heading}" in page, heading
+    # an engineer's words on the page: no variable names, no unformatted numbers
+    assert "p_backward_whirl" not in page and "peak_ball_stress_MPa" not in page and "rotor.unbalance" not in page
+    text = re.sub(r"<[^>]+>|data:image/png;base64,[A-Za-z0-9+/=]+", " ", page)
+    assert not re.search(r"\d\.\d{7,}", text) and "nan" not in text.lower().split()
+    if CHROMIUM is not None:
+        seen = probe_report(page, tmp_path)
+        assert seen["loaded"] == seen["images"] >= 2 and seen["empty"] == []
     r = CliRunner().invoke(cli, ["campaign-report", str(store), "--out", str(tmp_path / "r2"), "--whirl-map",
                                  "rotor.speed", "rotor.unbalance"])
     assert r.exit_code == 2 and "rotor.speed" in r.stderr and not (tmp_path / "r2").exists()

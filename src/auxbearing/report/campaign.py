@@ -2,8 +2,9 @@
 
 Files: ``statistics.json`` (everything of :func:`~auxbearing.campaign.statistics.campaign_statistics`),
 ``probabilities.csv``, ``quantiles.csv``, ``sensitivity.csv``, ``samples.csv`` (one row per completed
-sample: inputs in display units, verdict, outputs of the worst plane) and the figures
-``histograms.png``, ``scatter_matrix.png``, ``whirl_map.png``.
+sample: inputs in display units, verdict, outputs of the worst plane), the figures
+``histograms.png``, ``scatter_matrix.png``, ``whirl_map.png``, and ``report.html``: the page to read, in
+words (probabilities with their 95 % intervals, outcomes' quantiles, what drives them, the figures).
 """
 
 from __future__ import annotations
@@ -87,11 +88,122 @@ def write_report(ds, folder: Path, whirl_map: tuple[str, str] | None = None) -> 
                       for field in fields] for name in names]
     _write_csv(folder / "sensitivity.csv", header, rows)
     _samples_csv(ds, folder / "samples.csv")
-    save_figure(plot_histograms(ds), folder / "histograms")
-    save_figure(plot_scatter_matrix(ds), folder / "scatter_matrix")
-    if keys is not None:
+    figures = [(plot_histograms(ds), "histograms", "Distributions of the outcomes over the runs that ended ok."),
+               (plot_scatter_matrix(ds), "scatter_matrix", "Every sample's outcomes against its inputs.")]
+    whirled = bool(np.nansum(ds["backward_whirl"].values) > 0)
+    if keys is not None and whirled:
+        figures.append((plot_whirl_map(ds, *keys), "whirl_map",
+                        f"Probability of backward whirl over {_label(keys[0])} and {_label(keys[1])}, with every "
+                        "sample's whirl class (ringed: sustained backward whirl at some time)."))
+    elif keys is not None:
         save_figure(plot_whirl_map(ds, *keys), folder / "whirl_map")
+    for fig, name, _ in figures:
+        save_figure(fig, folder / name)
+    note = None if whirled else "No drop of the campaign whirled backward, so the whirl map has nothing to show."
+    (folder / "report.html").write_text(_page(ds, stats, figures, note), encoding="utf-8")
     return stats
+
+
+#: Words for the statistics' keys (the page reads in an engineer's words, the files keep the keys).
+_WORDS = {
+    "p_backward_whirl": "Sustained backward whirl at some time", "p_backward_whirl_at_end": "Backward whirl at the end",
+    "p_out_of_range": "Run left the model's range", "p_s0_below_required": "s0 below the required value",
+    "p_s0_below_required_or_out_of_range": "s0 below required, or out of range",
+    "peak_ball_stress_MPa": "Peak ball contact stress", "peak_contact_force_N": "Peak journal/race collision force",
+    "s0_min": "Smallest static safety factor s0", "max_temperature_C": "Hottest bearing part",
+    "damage_per_drop": "Fatigue damage per drop", "allowed_drops_min": "Drops allowed (fewest over the planes)",
+    "coastdown_time_s": "Coast-down to standstill",
+}
+
+
+def _label(key: str) -> str:
+    """An input's or outcome's name as a person reads it.
+
+    ``touchdown.0.sliding_friction`` reads "sliding friction (touchdown 0)"; outcomes by :data:`_WORDS`.
+    """
+    if key in _WORDS:
+        return _WORDS[key]
+    parts = key.split(".")
+    words = parts[-1].replace("_", " ")
+    where = " ".join(parts[:-1])
+    return f"{words} ({where})" if where else words
+
+
+def _page(ds, stats: dict, figures: list, note: str | None) -> str:
+    """The campaign's report page (self-contained HTML, figures embedded)."""
+    import json
+
+    from auxbearing.report.html import _CSS, _e, _table, figure_png_base64
+
+    try:
+        described = json.loads(ds.attrs.get("campaign") or "{}")
+    except (TypeError, ValueError):
+        described = {}
+    machine = ((described.get("tables") or {}).get("machine") or {}).get("name")
+    name = f"{machine}: {described.get('name', 'campaign')}" if machine else described.get("name", "campaign")
+    counts = (f"{stats['samples']} samples, {stats['completed']} completed: {stats['ok']} ended ok, "
+              f"{stats['out_of_range']} left the model's range, {stats['failed']} failed otherwise.")
+    parts = [f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>Campaign {_e(name)}</title>"
+             f"<style>{_CSS}</style></head><body><h1>Campaign {_e(name)}</h1><p>{_e(counts)}</p>"]
+    rows = []
+    for j, spec in enumerate(described.get("inputs") or []):
+        unit = str(ds["input_display_unit"].values[j]) if "input_display_unit" in ds else ""
+        scale = float(ds["input_display_scale"].values[j]) if "input_display_scale" in ds else 1.0
+        numbers = {k: v for k, v in spec.items() if isinstance(v, (int, float)) and k not in ("key",)}
+        shown = ", ".join(f"{k} {v * scale:.4g}{' ' + unit if unit else ''}" for k, v in numbers.items())
+        rows.append([_label(spec.get("key", "?")), spec.get("distribution", "?"), shown])
+    if rows:
+        parts.append("<h2>Inputs varied</h2>" + _table(["input", "distribution", "parameters"], rows))
+    rows = []
+    for key in PROBABILITIES:
+        p = stats[key]
+        rows.append([_label(key), _percent(p["value"]), f"{_percent(p['low'])} to {_percent(p['high'])}",
+                     f"{p['successes']} of {p['trials']} ({p['among']})"])
+    for plane, entry in stats["planes"].items():
+        p = entry["p_backward_whirl"]
+        rows.append([f"Sustained backward whirl at {plane}", _percent(p["value"]),
+                     f"{_percent(p['low'])} to {_percent(p['high'])}", f"{p['successes']} of {p['trials']}"])
+    parts.append("<h2>Probabilities</h2>" + _table(["event", "estimate", "95 % interval (Wilson)", "counted"],
+                                                    rows))
+    rows = []
+    for key, entry in stats["quantiles"].items():
+        if entry["n"] == 0:
+            continue
+        unit = "" if entry["unit"] in ("-", "") else f" {entry['unit']}"
+        rows.append([_label(key), *(f"{entry[t]:.4g}{unit}" for t in ("p50", "p95")),
+                     f"{entry['max']:.4g}{unit}", entry["n"]])
+    parts.append("<h2>Outcomes</h2>" + (_table(["outcome", "median", "95th percentile", "largest", "runs"], rows)
+                                         if rows else "<p>No run ended ok: no outcome to summarise.</p>"))
+    sens = stats["sensitivity"]
+    if sens.get("method"):
+        field = "ST" if sens["method"] == "sobol" else "rho"
+        what = ("total Sobol' index" if field == "ST" else "Spearman rank correlation")
+        outputs = [o for o in sens["outputs"] if any(v.get(field) is not None and np.isfinite(v.get(field))
+                                                     for v in sens["outputs"][o].values())]
+        inputs = [str(k) for k in ds["input"].values]
+        rows = [[_label(i), *(_number(sens["outputs"][o].get(i, {}).get(field)) for o in outputs)] for i in inputs]
+        parts.append(f"<h2>What drives the outcomes ({what})</h2>"
+                     + (_table(["input", *(_label(o) for o in outputs)], rows) if outputs else
+                        "<p>No outcome varied enough over the runs to rank its drivers.</p>"))
+    else:
+        parts.append(f"<h2>What drives the outcomes</h2><p>{_e(sens.get('note', 'not computed'))}</p>")
+    parts.append("<h2>Figures</h2>")
+    if note:
+        parts.append(f"<p>{_e(note)}</p>")
+    for fig, _, caption in figures:
+        parts.append(f"<figure><img alt='{_e(caption)}' src='data:image/png;base64,{figure_png_base64(fig)}'>"
+                     f"<figcaption>{_e(caption)}</figcaption></figure>")
+    parts.append("<p class='small'>The numbers behind this page: statistics.json and the CSV files beside it "
+                 "(units in their headers).</p></body></html>")
+    return "".join(parts)
+
+
+def _percent(value) -> str:
+    return "-" if value is None or not np.isfinite(value) else f"{100.0 * value:.1f} %"
+
+
+def _number(value) -> str:
+    return "n/a" if value is None or not np.isfinite(value) else f"{value:+.2f}"
 
 
 def _samples_csv(ds, path: Path) -> None:
