@@ -30,6 +30,11 @@ _LAZY = {
 
 __all__ = ["__version__", *sorted(_LAZY)]
 
+# the module paths before the rooms (auxbearing.drop, auxbearing.life, ...) stay importable
+from auxbearing._moved import install as _install_moved  # noqa: E402
+
+_install_moved()
+
 
 def __getattr__(name: str):
     """Load a public name from its module on first use (PEP 562)."""
