@@ -163,7 +163,7 @@ def heavy_fast_rotor(repeats: int) -> None:
     wall, _, run = best_of(repeats, lambda: run_machine(machine))
     s = run.summary
     code = ("import time; t = time.perf_counter(); from auxbearing.analysis.drop import run_machine; "
-            "from auxbearing.machine.model import read_machine; r = run_machine(read_machine('heavy_fast_rotor')); "
+            "from auxbearing.machine.files import read_machine; r = run_machine(read_machine('heavy_fast_rotor')); "
             "print(r.summary['verdict'], time.perf_counter() - t)")
     fresh = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
     print(f"\nheavy fast rotor: verdict {s['verdict']} at t = {s['simulated_s'] * 1e3:.2f} ms of "
