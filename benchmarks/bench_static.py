@@ -2,17 +2,21 @@
 
     .venv/bin/python benchmarks/bench_static.py [--cases 10000] [--subset 300] [--bearing QJ202]
 
-Both solve load + F_ballset(u) = 0 for 5-DOF loads (Fa, Fx, Fy, Mx, My) drawn uniformly from
-|F| <= 3 kN, |M| <= 10 N m, with the same scaling (moments / r_ic, tilts * r_ic), the same
-analytic Jacobian and the same rigid-ring starting point:
+Both sides solve load + F_ballset(u) = 0 for the inner-ring displacement u under 5-DOF loads
+(Fa, Fx, Fy, Mx, My) drawn uniformly from |F| <= 3 kN, |M| <= 10 N m. They share the ball-set
+model, its analytic Jacobian, the scaling (moments / r_ic, tilts * r_ic) and the rigid-ring start
+(auxbearing.core.statics.initial_guess):
 
-* ours: auxbearing.core.statics.solve_cases (compiled damped Newton, all cases in one call);
-* peer: scipy.optimize.root(method="hybr", jac=True) per case, once with the vectorised numpy
-  ball-set form (the public numpy API) and once with the compiled 5-DOF kernel as the
-  residual function (scipy's own overhead only). The peer runs on the first ``--subset`` cases
-  and its time is scaled per case to ``--cases`` (stated in the output).
+* ours: auxbearing.analysis.statics.solve_cases, the library's batched solve (compiled damped
+  Newton over all cases in one call, core.statics.solve_batch);
+* peer: scipy.optimize.root(method="hybr", jac=True) looping over the cases, once with the
+  public numpy ball-set face (auxbearing.bearings.ballset.ballset_state: force and Jacobian) as
+  the right-hand side, and once with the compiled ball-set sum (auxbearing.core.ballset.accumulate)
+  so that only scipy's own per-case overhead remains. The peer runs on the first ``--subset``
+  cases; its time per case is also scaled to ``--cases`` (stated in the output).
 
-Answers are compared on the subset: max |u_ours - u_scipy| (scaled to m) relative to max |u|.
+Timings are printed, never asserted. Answers are compared on the subset: per case
+max |u_ours - u_scipy| (tilts scaled to m) relative to max |u_ours|, worst case reported.
 """
 
 from __future__ import annotations
@@ -23,9 +27,11 @@ import time
 import numpy as np
 from scipy import optimize
 
+from auxbearing.analysis.statics import solve_cases
+from auxbearing.bearings.ballset import ballset_params, ballset_state
 from auxbearing.bearings.catalogue import load_bearing
-from auxbearing.core import ballset as bs
-from auxbearing.core import static as cs
+from auxbearing.core.ballset import accumulate
+from auxbearing.core.statics import initial_guess
 
 
 def make_loads(n: int, seed: int = 0) -> np.ndarray:
@@ -37,24 +43,25 @@ def make_loads(n: int, seed: int = 0) -> np.ndarray:
 
 
 def scipy_loop(loads, params, kind):
-    ric = params[5]
+    ric = params.moment_arm
     w = np.array([1.0, 1.0, 1.0, 1.0 / ric, 1.0 / ric])
     xs = np.array([1.0, 1.0, 1.0, ric, ric])
     free = np.ones(5, dtype=np.bool_)
 
     def numpy_form(y, load):
-        s = bs.ballset_state(y / xs, params)
+        s = ballset_state(y / xs, params)
         return (load + s.force) * w, s.jacobian * w[:, None] / xs[None, :]
 
     def compiled_form(y, load):
-        force, jac, _, _ = bs.ballset_forces(y / xs, params)
+        force, jac = np.zeros(5), np.zeros((5, 5))
+        accumulate(y / xs, params, params.clearance, force, jac, True, False)
         return (load + force) * w, jac * w[:, None] / xs[None, :]
 
     fun = numpy_form if kind == "numpy" else compiled_form
     out = np.empty_like(loads)
     failures = 0
     for i, load in enumerate(loads):
-        y0 = cs.initial_guess(load, free, params) * xs
+        y0 = initial_guess(load, free, params) * xs
         sol = optimize.root(fun, y0, args=(load,), jac=True, method="hybr", options={"xtol": 1e-12})
         failures += not sol.success
         out[i] = sol.x / xs
@@ -67,17 +74,17 @@ def main() -> None:
     parser.add_argument("--subset", type=int, default=300)
     parser.add_argument("--bearing", default="QJ202")
     args = parser.parse_args()
-    params = bs.kernel_params(load_bearing(args.bearing))
+    params = ballset_params(load_bearing(args.bearing))
     loads = make_loads(args.cases)
-    ric = params[5]
+    ric = params.moment_arm
     xs = np.array([1.0, 1.0, 1.0, ric, ric])
 
-    cs.solve_cases(loads[:10], params)  # compile / load the numba cache outside the timing
+    solve_cases(loads[:10], params)  # compile / load the numba cache outside the timing
     scipy_loop(loads[:3], params, "numpy")
     scipy_loop(loads[:3], params, "compiled")
 
     t0 = time.perf_counter()
-    ours = cs.solve_cases(loads, params)
+    ours = solve_cases(loads, params)
     t_ours = time.perf_counter() - t0
     per_ours = t_ours / args.cases
 
