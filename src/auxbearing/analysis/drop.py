@@ -344,7 +344,7 @@ def _support_stiffness(plane) -> float:
     except Exception:  # a bearing the solver cannot carry radially alone: no estimate
         return 0.0
     if plane.mount is not None and k_ball > 0.0:
-        return 1.0 / (1.0 / k_ball + 1.0 / plane.mount.stiffness)
+        return 1.0 / (1.0 / k_ball + 1.0 / plane.mount.mount_stiffness)
     return k_ball
 
 

@@ -259,13 +259,15 @@ def _modes(machine: Machine) -> list[tuple[str, str, float, str]]:
         m = p.mount
         if m is None:
             continue
-        ring = m.mass
-        out.append((where + "mount_stiffness", f"the mount ({m.stiffness:.3g} N/m, mount_damping = {m.damping:g} "
-                    f"N*s/m) on a ring of {ring:.3g} kg", mode_step(ring, m.stiffness, m.damping + p.ball_damping),
-                    "throughout" if m.deadband == 0.0 else "once the ring crosses its dead band"))
-        if m.stop is not None:
+        ring = m.mount_mass
+        out.append((where + "mount_stiffness", f"the mount ({m.mount_stiffness:.3g} N/m, mount_damping = "
+                    f"{m.mount_damping:g} N*s/m) on a ring of {ring:.3g} kg",
+                    mode_step(ring, m.mount_stiffness, m.mount_damping + p.ball_damping),
+                    "throughout" if m.mount_deadband == 0.0 else "once the ring crosses its dead band"))
+        if m.mount_stop is not None:
             out.append((where + "stop_stiffness", f"the hard stop ({m.stop_stiffness:.3g} N/m) on a ring of "
-                        f"{ring:.3g} kg", mode_step(ring, m.stop_stiffness + m.stiffness, m.stop_damping + m.damping),
+                        f"{ring:.3g} kg", mode_step(ring, m.stop_stiffness + m.mount_stiffness,
+                                                    m.stop_damping + m.mount_damping),
                         "while the ring rests on its stop"))
     return out
 

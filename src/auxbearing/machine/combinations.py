@@ -108,17 +108,17 @@ def _check_mount(table: dict, plane, k: int) -> None:
     mount = plane.mount
     where = f"touchdown.{k}."
     deadband = typed(table, "mount_deadband", param_of("touchdown", "mount_deadband"))
-    if mount.stop is not None and mount.stop <= mount.deadband:
+    if mount.mount_stop is not None and mount.mount_stop <= mount.mount_deadband:
         raise InputError.for_field(where + "mount_stop", typed(table, "mount_stop"), f"not beyond {where}"
                                    f"mount_deadband = {deadband!r}: the ring crosses the dead band before its "
                                    "spring engages, and a hard stop lies beyond that")
     if "mount_travel" not in table:
         return
-    if mount.stop is not None and mount.travel <= mount.stop:
+    if mount.mount_stop is not None and mount.mount_travel <= mount.mount_stop:
         raise InputError.for_field(where + "mount_travel", typed(table, "mount_travel"), f"not beyond {where}"
                                    f"mount_stop = {typed(table, 'mount_stop')!r}: the run stops at mount_travel, so "
                                    "the ring would never reach its hard stop")
-    if mount.travel <= mount.deadband:
+    if mount.mount_travel <= mount.mount_deadband:
         raise InputError.for_field(where + "mount_travel", typed(table, "mount_travel"), f"not beyond {where}"
                                    f"mount_deadband = {deadband!r}: the run stops at mount_travel, so the mount's "
                                    "spring would never engage")

@@ -54,14 +54,14 @@ DRAG_SPEED_SCALE = 0.1
 class Mount:
     """The outer ring's support: a spring with a dead band, a damper, an optional hard stop (SI)."""
 
-    stiffness: float
-    damping: float = 0.0
-    mass: float = 0.0
-    deadband: float = 0.0
-    stop: float | None = None
+    mount_stiffness: float
+    mount_damping: float = 0.0
+    mount_mass: float = 0.0
+    mount_deadband: float = 0.0
+    mount_stop: float | None = None
     stop_stiffness: float | None = None
     stop_damping: float = 0.0
-    travel: float | None = None
+    mount_travel: float | None = None
 
 
 @dataclass(frozen=True)
@@ -278,9 +278,12 @@ def _describe_plane(p: TouchdownPlane) -> dict:
                    face_friction=p.face_friction, face_radius_mm=p.face_radius * 1e3)
     if p.mount is not None:
         m = p.mount
-        out["mount"] = {"stiffness_N_per_m": m.stiffness, "damping_N_s_per_m": m.damping, "mass_kg": m.mass,
-                        "deadband_um": m.deadband * 1e6, "stop_um": None if m.stop is None else m.stop * 1e6,
-                        "stop_stiffness_N_per_m": m.stop_stiffness, "travel_mm": m.travel * 1e3}
+        # the file's own key names (mount_stiffness, ...) with the unit after them: one name from file to report
+        out["mount"] = {"mount_stiffness_N_per_m": m.mount_stiffness, "mount_damping_N_s_per_m": m.mount_damping,
+                        "mount_mass_kg": m.mount_mass, "mount_deadband_um": m.mount_deadband * 1e6,
+                        "mount_stop_um": None if m.mount_stop is None else m.mount_stop * 1e6,
+                        "stop_stiffness_N_per_m": m.stop_stiffness, "stop_damping_N_s_per_m": m.stop_damping,
+                        "mount_travel_mm": m.mount_travel * 1e3}
     return out
 
 

@@ -50,10 +50,10 @@ def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
         race_mass=arr(lambda p: p.race_mass, 1.0), race_inertia=arr(lambda p: p.race_inertia, 1.0),
         raceway_radius=arr(lambda p: 0.5 * p.bearing.inner_raceway_diameter, 1.0),
         ball_damping=arr(lambda p: p.ball_damping), race_axial_free=arr(lambda p: float(p.catches_axially)),
-        ring_free=arr(lambda p: float(p.mount is not None)), ring_mass=mount(lambda m: m.mass, 1.0),
-        mount_stiffness=mount(lambda m: m.stiffness), mount_damping=mount(lambda m: m.damping),
-        mount_deadband=mount(lambda m: m.deadband),
-        stop_gap=mount(lambda m: m.stop if m.stop is not None else np.inf, np.inf),
+        ring_free=arr(lambda p: float(p.mount is not None)), ring_mass=mount(lambda m: m.mount_mass, 1.0),
+        mount_stiffness=mount(lambda m: m.mount_stiffness), mount_damping=mount(lambda m: m.mount_damping),
+        mount_deadband=mount(lambda m: m.mount_deadband),
+        stop_gap=mount(lambda m: m.mount_stop if m.mount_stop is not None else np.inf, np.inf),
         stop_stiffness=mount(lambda m: m.stop_stiffness or 0.0), stop_damping=mount(lambda m: m.stop_damping),
         centre_x=arr(lambda p: p.misalignment[0]), centre_y=arr(lambda p: p.misalignment[1]),
         axial_clearance=arr(lambda p: p.axial_clearance if p.catches_axially else np.inf, np.inf),
@@ -101,7 +101,7 @@ def _limits(machine: Machine) -> cm.Limits:
             groove_out[k] = groove
             angle_out[k] = math.acos(max(-1.0, 1.0 - p.shoulder_height / groove))
         if p.mount is not None:
-            travel[k] = p.mount.travel
+            travel[k] = p.mount.mount_travel
         axial[k] = b.curvature_centre_distance
     def floats(a):
         return tuple(float(v) for v in a)

@@ -42,7 +42,7 @@ def plot_machine(machine, ax=None) -> Figure:
             ax.add_patch(Rectangle((z - width / 2 - 3.0, radius), 3.0, 0.6 * (bore - radius) + 2.0, color="tab:red"))
         text = (f"{plane.name}\n{plane.bearing.name} ({plane.bearing.label})\ns = {plane.radial_clearance * 1e3:g} mm"
                 + (f", axial {plane.axial_clearance * 1e3:g} mm" if plane.catches_axially else "")
-                + ("\nmount " + f"{plane.mount.stiffness:.2g} N/m" if plane.mount is not None else "\nrigid housing"))
+                + (f"\nmount {plane.mount.mount_stiffness:.2g} N/m" if plane.mount is not None else "\nrigid housing"))
         ax.text(z, outer + 6.0, text, ha="center", va="bottom", fontsize=8)
     ax.set_xlim(left - 0.05 * span, right + 0.05 * span)
     top = max((p.bearing.outside_diameter or p.bearing.pitch_diameter * 1.4) * 0.5e3 for p in planes)

@@ -231,8 +231,8 @@ def campaign_spreads(machine: Machine, settings: dict) -> list[dict]:
             spreads.append({"key": f"touchdown.{k}.radial_clearance", "low": max(s - tol, 0.5 * s), "high": s + tol,
                             "scale": 1e6, "unit": "um", "label": f"{plane.name}: radial clearance", "origin": origin})
         if plane.mount is not None:
-            for name, value, spread_key in (("mount_stiffness", plane.mount.stiffness, "mount_stiffness_spread"),
-                                            ("mount_damping", plane.mount.damping, "mount_damping_spread")):
+            for name, value, spread_key in (("mount_stiffness", plane.mount.mount_stiffness, "mount_stiffness_spread"),
+                                            ("mount_damping", plane.mount.mount_damping, "mount_damping_spread")):
                 f = settings[spread_key]
                 if value > 0.0 and f > 0.0:
                     spreads.append({"key": f"touchdown.{k}.{name}", "low": value * (1.0 - f),

@@ -18,12 +18,12 @@ PUBLIC_KEYS_LEFT_OUT = ("design", "candidate_rows", "recommendation_rows")
 class Verification(dict):
     """The result of a verification (a dict, as before), with views.
 
-    Examples
-    --------
-    >>> from auxbearing.verify import verify            # doctest: +SKIP
-    >>> result = verify("blower", "out/blower")        # doctest: +SKIP
-    >>> result.verdict, result.criteria[["name", "margin", "pass"]]  # doctest: +SKIP
-    >>> result.to_html("out/blower/report.html")       # doctest: +SKIP
+    In use (a full verification takes minutes, so this is not run as a doctest; the README's example is)::
+
+        from auxbearing.verify import verify
+        result = verify("blower", "out/blower")
+        result.verdict, result.criteria[["name", "margin", "pass"]]
+        result.to_html("out/blower/report.html")
     """
 
     @property
