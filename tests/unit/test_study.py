@@ -1,6 +1,7 @@
 """``auxbearing study``: config, output folder, claims, errors."""
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -69,6 +70,9 @@ def test_contact_stage_writes_report_and_results(tmp_path):
         assert (out / name).stat().st_size > 0
     html = (out / "report.html").read_text()
     assert "Claims of the paper" in html and "Parameters the paper does not give" in html
+    # the inputs a person reads carry no unit-conversion noise (25.500000000000004 mm)
+    text = re.sub(r"data:image/png;base64,[A-Za-z0-9+/=]+|<[^>]+>", " ", html)
+    assert not re.findall(r"\d\.\d{7,}", text)
 
 
 def test_bearings_lists_catalogue():

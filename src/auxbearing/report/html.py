@@ -12,6 +12,7 @@ import base64
 import html
 import io
 import json
+import math
 from datetime import UTC, datetime
 
 from auxbearing import __version__
@@ -38,6 +39,20 @@ def figure_png_base64(fig) -> str:
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=110, bbox_inches="tight")
     return base64.b64encode(buffer.getvalue()).decode("ascii")
+
+
+def tidy_numbers(value):
+    """A copy of nested inputs with every float cut to six significant digits, for a page a person reads.
+
+    Unit conversions leave noise in the last digits (25.500000000000004 mm); files keep the full values.
+    """
+    if isinstance(value, dict):
+        return {k: tidy_numbers(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [tidy_numbers(v) for v in value]
+    if isinstance(value, float) and math.isfinite(value):
+        return float(f"{value:.6g}")
+    return value
 
 
 def _e(text: object) -> str:
@@ -136,7 +151,7 @@ def render_report(sections: list[Section], summary_rows: list[list[str]], inputs
     parts.append("<h2 id='inputs'>Inputs and version</h2>")
     parts.append(f"<p>auxbearing {__version__}. Every data file (NetCDF, JSON) in this folder carries the same "
                  "inputs and version in its attributes.</p>")
-    parts.append(f"<pre class='small'>{_e(json.dumps(inputs, indent=2, default=str))}</pre>")
+    parts.append(f"<pre class='small'>{_e(json.dumps(tidy_numbers(inputs), indent=2, default=str))}</pre>")
     parts.append("</body></html>")
     return "\n".join(parts)
 

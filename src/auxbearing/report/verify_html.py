@@ -17,7 +17,7 @@ from auxbearing import __version__
 from auxbearing.common.params import display_value
 from auxbearing.machine.judging import CRITERIA
 from auxbearing.machine.params import COASTDOWN, LIFE, SIMULATION
-from auxbearing.report.html import _CSS, _e, _table, figure_png_base64
+from auxbearing.report.html import _CSS, _e, _table, figure_png_base64, tidy_numbers
 
 _EXTRA_CSS = """
 pre{white-space:pre-wrap;word-break:break-word}
@@ -193,17 +193,7 @@ def readable_inputs(inputs: dict) -> dict:
     Each parameter-table value is in its display unit ("0.5 mm", "120 degC"), every other number is cut
     to six significant digits (no 18.000000000000004); ``verify.json`` keeps the full values.
     """
-
-    def tidy(value):
-        if isinstance(value, dict):
-            return {k: tidy(v) for k, v in value.items()}
-        if isinstance(value, (list, tuple)):
-            return [tidy(v) for v in value]
-        if isinstance(value, float) and math.isfinite(value):
-            return float(f"{value:.6g}")
-        return value
-
-    out = tidy(inputs)
+    out = tidy_numbers(inputs)
     for path, rows in _ROWS.items():
         table = out
         for key in path:
