@@ -22,9 +22,14 @@ from auxbearing.verify.cases import Cases, campaign_size, collect_cases, plan_ca
 from auxbearing.verify.convergence import convergence_started
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, worst_margin
 from auxbearing.verify.designs import recommend, recommended_tables
-from auxbearing.verify.judge import judge
+from auxbearing.verify.judge import WHIRL_PROBABILITY, judge
 from auxbearing.verify.result import Verification
 from auxbearing.verify.schedule import verification_cluster
+
+#: Drops in the campaign of a candidate that already fails on a criterion no campaign decides (a power of two
+#: for Sobol' balance). 32 drops can show a whirl rate above the default 5 % (two or more whirling drops fail
+#: it) but never one below it (73 whirl-free drops are needed), so its criterion fails or is not checked.
+FAILING_CANDIDATE_SAMPLES = 32
 
 
 def _drop_rows(cases: Cases) -> list[list]:
@@ -178,6 +183,10 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
              with_recommendation, say):
     """Every case of the verification on one cluster, independent ones side by side (module docstring).
 
+    A candidate that already fails on a criterion no campaign decides (a drop leaving the model's range, a
+    temperature, a clearance) gets a campaign of :data:`FAILING_CANDIDATE_SAMPLES` drops, enough to show
+    its whirl tendency; its verdict cannot change, and its whirl criterion says how few drops it rests on.
+
     The drops and coast-downs of the design and of every candidate go to the cluster at once; the campaigns
     follow on the same cluster (their batches queue behind those runs, so no worker idles), then the geometry
     search's grid in one batch. Once the design is judged, its governing case runs again tighter, beside
@@ -192,14 +201,29 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
         cases = plan_cases(tables, title, base, quick)
         say(f"{label}: drops and coast-down")
         planned[label] = (cases, submit_cases(cases, executor), tables, title, store)
-    for label, (cases, _, tables, title, store) in planned.items():
-        say(f"{label}: campaign of {n} drops")
-        run_campaign_of(cases, tables, title, base, n, store, None, address, criteria["min_s0"])
+    collected, short = set(), {}
+    for label, (cases, futures, tables, title, store) in planned.items():
+        size = n
+        if label != "design" and n > FAILING_CANDIDATE_SAMPLES:
+            # the design's campaign has run meanwhile, so this candidate's drops and coast-down are done
+            collect_cases(cases, futures)
+            collected.add(label)
+            failing = [c.name for c in judge(cases, criteria) if c.passed is False]
+            if failing:
+                size = FAILING_CANDIDATE_SAMPLES
+                short[label] = (f"a campaign of {size} drops, not {n}: the candidate already fails on "
+                                f"{'; '.join(failing)}, which no campaign can change")
+        say(f"{label}: campaign of {size} drops")
+        run_campaign_of(cases, tables, title, base, size, store, None, address, criteria["min_s0"])
     rec = recommend(data, name, base, criteria, quick, say, executor) if with_recommendation else None
     judged = {}
     for label, (cases, futures, *_) in planned.items():
-        collect_cases(cases, futures)
+        if label not in collected:
+            collect_cases(cases, futures)
         judged[label] = _design(cases, criteria)
+        if label in short:
+            judged[label]["criteria"] = [c._replace(evidence=f"{c.evidence} ({short[label]})")
+                                         if c.name == WHIRL_PROBABILITY else c for c in judged[label]["criteria"]]
     design = judged.pop("design")
     converging = None
     if rec is not None and rec["passes"]:
