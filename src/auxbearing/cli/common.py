@@ -120,26 +120,36 @@ def echo_json(obj: object) -> None:
 
 
 class ProgressReporter:
-    """Progress on stderr: a bar on a terminal, otherwise a plain line every :attr:`every` seconds.
+    """Progress on stderr: a bar on a terminal, otherwise a plain line at least every :attr:`every` seconds.
 
-    Use as a context manager; call it with (fraction done, status text).
+    Use as a context manager; call it with (fraction done, status text). Off a terminal (a log, a pipe) a
+    line names what is being done at least every :attr:`every` seconds, with the time since the start, also
+    while one long step (a campaign, a coast-down on the cluster) reports nothing new: a log never looks
+    stuck.
     """
 
     every = 5.0
 
     def __init__(self, label: str, quiet: bool = False) -> None:
         import sys
+        import threading
         import time
 
         self.label = label
         self.quiet = quiet
         self.tty = sys.stderr.isatty()
         self._clock = time.monotonic
-        self._last = self._clock()
+        self._start = self._last = self._clock()
         self._bar = None
+        self._state = (0.0, "")
+        self._lock = threading.Lock()
+        self._stop = threading.Event()
+        self._beat = None
 
     def __enter__(self) -> ProgressReporter:
-        if not self.quiet and self.tty:
+        if self.quiet:
+            return self
+        if self.tty:
             from rich.console import Console
             from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
@@ -147,6 +157,11 @@ class ProgressReporter:
                                  TimeElapsedColumn(), console=Console(stderr=True), transient=True)
             self._bar.__enter__()
             self._task = self._bar.add_task(self.label, total=1.0)
+        else:
+            import threading
+
+            self._beat = threading.Thread(target=self._heartbeat, name="progress", daemon=True)
+            self._beat.start()
         return self
 
     def __call__(self, fraction: float, status: str = "") -> None:
@@ -156,12 +171,27 @@ class ProgressReporter:
         if self._bar is not None:
             self._bar.update(self._task, completed=fraction, description=f"{self.label} {status}".strip())
             return
-        now = self._clock()
-        if now - self._last >= self.every:
-            self._last = now
-            click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status}".rstrip(), err=True)
+        with self._lock:
+            self._state = (fraction, status)
+            if self._clock() - self._last >= self.every:
+                self._line()
+
+    def _line(self) -> None:
+        fraction, status = self._state
+        self._last = self._clock()
+        elapsed = self._last - self._start
+        click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status} ({elapsed:.0f} s)".replace("  ", " "), err=True)
+
+    def _heartbeat(self) -> None:
+        while not self._stop.wait(self.every / 5.0):
+            with self._lock:
+                if self._clock() - self._last >= self.every and self._state[1]:
+                    self._line()
 
     def __exit__(self, *exc) -> None:
+        self._stop.set()
+        if self._beat is not None:
+            self._beat.join(timeout=1.0)
         if self._bar is not None:
             self._bar.__exit__(*exc)
 

@@ -1,0 +1,23 @@
+"""Progress off a terminal names what is being done at least every few seconds (cli.common.ProgressReporter)."""
+
+import time
+
+from auxbearing.cli.common import ProgressReporter
+
+
+def test_a_long_step_is_named_again_while_it_reports_nothing(capsys):
+    reporter = ProgressReporter("verify demo")
+    reporter.every = 0.05
+    with reporter:
+        reporter(0.25, "design: campaign of 128 drops")
+        time.sleep(0.4)
+    lines = [ln for ln in capsys.readouterr().err.splitlines() if ln]
+    assert len(lines) >= 3, lines
+    assert all(ln.startswith("verify demo: 25 % design: campaign of 128 drops (") and ln.endswith(" s)")
+               for ln in lines), lines
+
+
+def test_quiet_prints_nothing(capsys):
+    with ProgressReporter("verify demo", quiet=True) as reporter:
+        reporter(0.5, "anything")
+    assert capsys.readouterr().err == ""
