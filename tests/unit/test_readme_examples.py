@@ -10,6 +10,8 @@ import re
 import shutil
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[2]
 README = ROOT / "README.md"
 FENCE = re.compile(r"^```python[^\n]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
@@ -25,6 +27,7 @@ def test_blocks_are_found():
     assert python_blocks(text) == [(3, "x = 1\n"), (9, "y = x + 1\n")]
 
 
+@pytest.mark.slow  # the examples run a drop, a coast-down and a quick verification: 10 s
 def test_readme_python_examples_run(tmp_path, monkeypatch):
     blocks = python_blocks(README.read_text())
     assert blocks, "README.md has no ```python block"
