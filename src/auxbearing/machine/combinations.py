@@ -10,6 +10,7 @@ import math
 
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import display_value
+from auxbearing.machine.params import TABLES
 
 #: Keys of ``[[touchdown]]`` that act only in a compliant mount (with ``mount_stiffness``).
 MOUNT_KEYS = ("mount_damping", "mount_mass", "mount_deadband", "mount_stop", "stop_stiffness", "stop_damping",
@@ -34,8 +35,6 @@ def typed(table: dict | None, key: str, param=None) -> object:
 
 def param_of(section: str, key: str):
     """The parameter-table row of ``[section] key`` (its unit, default and rule for a message)."""
-    from auxbearing.machine.params import TABLES
-
     return TABLES[section][key]
 
 
