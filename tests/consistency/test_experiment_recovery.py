@@ -31,6 +31,7 @@ import pytest
 
 from auxbearing.experiment.run import run_experiment
 from auxbearing.paper.experiment_stage import EXAMPLES
+from auxbearing.plots.experiment import experiment_figures
 
 TOLERANCE = {"sliding_friction": 0.015, "clearance": 2.0, "unbalance_phase": 5.0}
 
@@ -64,7 +65,8 @@ def test_recovers_friction_clearance_and_phase(example):
 
 @pytest.mark.slow
 def test_peak_stress_from_the_orbit(example):
-    _, (datasets, summary, figures) = example
+    _, (datasets, summary, drawing) = example
+    figures = experiment_figures(drawing)
     true_stress = summary["truth"]["simulated_peak_ball_stress_MPa"]
     assert summary["measured"]["peak_ball_stress_MPa"] == pytest.approx(true_stress, rel=0.05)
     assert summary["measured"]["peak_stress_if_clearance_minus_1um_MPa"] > summary["measured"]["peak_ball_stress_MPa"]

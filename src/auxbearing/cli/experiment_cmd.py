@@ -112,6 +112,7 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     from auxbearing.experiment.orbit import Preprocessing
     from auxbearing.experiment.run import run_experiment
     from auxbearing.planar.params import DropCase, Rotor, read_config
+    from auxbearing.plots.experiment import experiment_figures
     unit_map = _units(units)
     cfg_bearing, rotor_kw, drop_kw = None, {}, {}
     if config is not None:
@@ -149,7 +150,7 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     with atomic_output_dir(out_dir) as tmp:
         for name, ds in result.datasets.items():
             save_dataset(ds, tmp / f"{name}.nc", inputs)
-        for name, fig in result.figures.items():
+        for name, fig in experiment_figures(result.drawing).items():
             save_figure(fig, tmp / name)
         write_json(result.summary, tmp / "experiment_summary.json", inputs)
     if as_json:

@@ -17,7 +17,6 @@ from typing import NamedTuple
 
 import numpy as np
 import xarray as xr
-from matplotlib.figure import Figure
 
 from auxbearing.bearings.ballset import ballset_params
 from auxbearing.bearings.catalogue import load_bearing
@@ -27,7 +26,6 @@ from auxbearing.experiment.io import read_measured
 from auxbearing.experiment.orbit import Preprocessing, contact_from_orbit, orbit_features, preprocess
 from auxbearing.planar.params import DropCase, Rotor
 from auxbearing.planar.rig import planar_machine
-from auxbearing.plots.experiment import plot_fit_window, plot_force_stress, plot_orbits
 
 #: Peak quantities compared in the table: (summary key, label, format).
 PEAK_ROWS = (
@@ -41,12 +39,24 @@ PEAK_ROWS = (
 )
 
 
+class ExperimentDrawing(NamedTuple):
+    """What the experiment's figures are drawn from (:func:`auxbearing.plots.experiment.experiment_figures`)."""
+
+    label: str  #: the figures' title stem: bearing, and whether the measurement is synthetic
+    orbit: object  #: the measured orbit (:func:`auxbearing.experiment.orbit.orbit_from_probes`)
+    simulated: dict  #: name -> simulated drop dataset
+    clearance: float  #: the clearance the comparison used [m]
+    clearances: dict  #: name of each simulation -> its clearance [m]
+    measured: xr.Dataset  #: force and stress from the measured orbit
+    fitted_orbit: tuple | None  #: (time, simulated xy, measured xy) of the fitted stretch, None without a fit
+
+
 class ExperimentResult(NamedTuple):
-    """What :func:`run_experiment` returns (unpacks as ``datasets, summary, figures``)."""
+    """What :func:`run_experiment` returns (unpacks as ``datasets, summary, drawing``); it draws nothing."""
 
     datasets: dict[str, xr.Dataset]
     summary: dict
-    figures: dict[str, Figure]
+    drawing: ExperimentDrawing
 
 
 def _fmt(fmt: str, value: object) -> str:
@@ -126,7 +136,8 @@ def run_experiment(
         ``datasets``: ``measured`` (orbit, force, ball loads and stress over time since the
         drop) and ``simulated_<label>`` (:func:`auxbearing.planar.rig.run_drop` output);
         ``summary``: JSON-ready (``warnings``: sentences on results that mean little, such as an orbit that
-        never reaches the clearance used); ``figures``: orbits, force/stress and (with the fit) the fit window.
+        never reaches the clearance used); ``drawing``: what the figures are drawn from (orbits, force and
+        stress, the fitted stretch: :func:`auxbearing.plots.experiment.experiment_figures`).
     """
     def step(fraction: float, label: str) -> None:
         if progress is not None:
@@ -198,14 +209,8 @@ def run_experiment(
         columns[f"sim {label}"] = sim_summary
         if label == "fitted" or fitted is None:
             columns[f"sim {label} via orbit"] = seen_summary
-    step(0.95, "figures")
     synthetic = str(data.attrs.get("synthetic", "")).lower() in ("true", "1", "yes")
     label = f"{bearing.name}: {'SYNTHETIC ' if synthetic else ''}measured drop"
-    figures = {
-        "experiment_orbits": plot_orbits(orbit, sims, s_used, f"{label}: orbits in the clearance circle",
-                                         {f"simulated, {k}": c.clearance for k, c in cases.items()}),
-        "experiment_force_stress": plot_force_stress(measured_ds, sims, f"{label}: force and stress"),
-    }
     summary = {
         "bearing": bearing.name,
         "source_file": data.attrs.get("source_file"),
@@ -217,9 +222,9 @@ def run_experiment(
         "peak_table": peak_table(columns),
         "warnings": warnings,
     }
+    fitted_orbit = None
     if fitted is not None:
-        tau, sim_xy, meas_xy = fitted.pop("fitted_orbit")
-        figures["experiment_fit_window"] = plot_fit_window(tau, sim_xy, meas_xy, f"{label}: fitted stretch")
+        fitted_orbit = fitted.pop("fitted_orbit")
         summary["fit"] = {k: v for k, v in fitted.items() if k != "case"}
     truth = _truth(data.attrs)
     if truth:
@@ -233,7 +238,9 @@ def run_experiment(
         method="force and stress from the orbit: quasi-static series split of line contact (Eq. 19) and ball set "
                "(Eq. 10-16, 22); see auxbearing.experiment.orbit")
     step(1.0, "done")
-    return ExperimentResult(datasets, summary, figures)
+    drawing = ExperimentDrawing(label, orbit, sims, s_used, {f"simulated, {k}": c.clearance for k, c in cases.items()},
+                                measured_ds, fitted_orbit)
+    return ExperimentResult(datasets, summary, drawing)
 
 
 def recovery_table(fitted: dict, truth: dict) -> list[dict]:

@@ -14,6 +14,7 @@ from pathlib import Path
 from auxbearing.experiment.run import run_experiment
 from auxbearing.experiment.synth import EXAMPLE_DIR
 from auxbearing.planar.params import DropCase, Rotor, from_mapping
+from auxbearing.plots.experiment import experiment_figures
 from auxbearing.report.claims import CANNOT_CHECK, Assumption, Claim
 from auxbearing.report.model import Figure, Section
 
@@ -52,7 +53,8 @@ def experiment_stage(config=None, examples=EXAMPLES) -> Section:
     case = DropCase(**from_mapping(sections.get("drop"), "drop"))
     results, figures, tables, data = {}, [], [], {}
     for k, (bearing, path) in enumerate(examples):
-        datasets, summary, figs = run_experiment(Path(path), bearing, rotor, case, fit=True)
+        datasets, summary, drawing = run_experiment(Path(path), bearing, rotor, case, fit=True)
+        figs = experiment_figures(drawing)
         results[bearing] = summary
         data[f"experiment_{bearing.lower().replace('-', '_')}"] = datasets["measured"]
         table = summary["peak_table"]

@@ -162,3 +162,20 @@ def plot_fit_window(tau: np.ndarray, simulated: np.ndarray, measured: np.ndarray
     if title:
         fig.suptitle(title)
     return fig
+
+
+def experiment_figures(drawing) -> dict:
+    """The experiment's figures from what :func:`auxbearing.experiment.run.run_experiment` returns to draw.
+
+    ``experiment_orbits``, ``experiment_force_stress`` and, after a fit, ``experiment_fit_window``.
+    """
+    d = drawing
+    figures = {
+        "experiment_orbits": plot_orbits(d.orbit, d.simulated, d.clearance, f"{d.label}: orbits in the clearance "
+                                         "circle", d.clearances),
+        "experiment_force_stress": plot_force_stress(d.measured, d.simulated, f"{d.label}: force and stress"),
+    }
+    if d.fitted_orbit is not None:
+        tau, sim_xy, meas_xy = d.fitted_orbit
+        figures["experiment_fit_window"] = plot_fit_window(tau, sim_xy, meas_xy, f"{d.label}: fitted stretch")
+    return figures
