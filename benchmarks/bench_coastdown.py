@@ -53,8 +53,12 @@ class Split:
         self.calls: list[tuple[float, float, float, float]] = []  # wall clock, CPU clock, simulated time, rpm
 
     def __call__(self, fraction: float, status: str) -> None:
+        # the status says the simulated time and the speed ("t = 12.34 s, 9000 rpm"); the fraction is the share
+        # of the speed lost when running to standstill, not of the time
         found = re.search(r"([-+\d.]+) rpm", status)
-        self.calls.append((time.perf_counter(), time.process_time(), fraction * self.t_end,
+        at = re.search(r"t = ([-+\d.eE]+) s", status)
+        t = float(at.group(1)) if at else fraction * self.t_end
+        self.calls.append((time.perf_counter(), time.process_time(), t,
                            abs(float(found.group(1))) if found else 0.0))
 
     def report(self, start: tuple[float, float], stop: tuple[float, float]) -> dict:
