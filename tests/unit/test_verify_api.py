@@ -21,3 +21,20 @@ def test_a_verification_reads_as_a_dict_a_table_a_page_and_files(tmp_path):
     saved = json.loads((folder / "verify.json").read_text())
     assert saved["verdict"] == "incomplete" and "design" not in saved
     assert (folder / "report.html").read_text().count("<h2>") > 3
+
+
+def test_the_drivers_table_names_inputs_in_words_and_leaves_out_what_did_not_vary():
+    from auxbearing.verify.run import _campaign_rows
+
+    stats = {"p_backward_whirl": {"value": 0.0, "low": 0.0, "high": 0.3, "among": "runs that ended ok"},
+             "p_out_of_range": {"value": 0.0, "low": 0.0, "high": 0.3, "among": "completed samples"},
+             "p_s0_below_required": {"value": 0.0, "low": 0.0, "high": 0.3, "among": "runs that ended ok"},
+             "quantiles": {"peak_ball_stress_MPa": {"p50": 1446.0, "p95": 1493.0, "unit": "MPa"}},
+             "sensitivity": {"outputs": {"backward_whirl": {"rotor.unbalance": {"rho": float("nan")}},
+                                         "peak_ball_stress_MPa": {"rotor.unbalance": {"rho": -0.29}}}}}
+    spreads = [{"key": "rotor.unbalance", "label": "static unbalance (mass-centre offset)"}]
+    rows, drivers = _campaign_rows(stats, spreads)
+    assert rows[-1][0] == "peak ball contact stress, median / 95th percentile"
+    assert drivers["columns"] == ["input", "rank correlation with the peak ball stress"]
+    assert drivers["rows"] == [["static unbalance (mass-centre offset)", "-0.29"]]
+    assert "backward whirl: it did not vary" in drivers["caption"]

@@ -130,9 +130,11 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
         if main.get("spread_rows"):
             parts.append(_table(["uncontrolled condition", "spread (uniform)", "where the spread comes from"],
                                 main["spread_rows"], "The drop conditions the campaign varies; set them in [verify]."))
-        if main.get("drivers"):
-            parts.append(_table(["input", "rank correlation with backward whirl", "with peak stress"],
-                                main["drivers"], "What drives the outcome (Spearman rank correlations)"))
+        drivers = main.get("drivers")
+        if drivers:
+            parts.append(_table(drivers["columns"], drivers["rows"], drivers["caption"]))
+        else:
+            parts.append("<p>No outcome of the campaign varied enough to rank what drives it.</p>")
         parts += [_figure(f, c) for f, c in figures.get("campaign", [])]
     else:
         parts.append("<p>No campaign was run (--campaign-samples 0).</p>")

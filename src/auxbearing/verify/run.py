@@ -56,28 +56,42 @@ def _coastdown_rows(cases: Cases) -> list[list]:
             for p in cases.coastdown.summary["planes"]]
 
 
-def _campaign_rows(stats: dict | None) -> tuple[list[list], list[list]]:
+def _campaign_rows(stats: dict | None, spreads: list | None = None) -> tuple[list[list], dict]:
+    """The campaign's probabilities and stress quantiles as rows, and its drivers table (columns, rows, caption).
+
+    Inputs are named as the spreads table names them; a column with nothing to rank (an outcome that did not
+    vary, such as whirl in a campaign where no drop whirled) is left out and the caption says why.
+    """
     if not stats:
-        return [], []
+        return [], {}
     rows = []
     for key, label in (("p_backward_whirl", "probability of sustained backward whirl"),
                        ("p_out_of_range", "probability of leaving the model's range"),
                        ("p_s0_below_required", "probability of s0 below the required value")):
         p = stats[key]
         rows.append([label, f"{p['value']:.3f}", f"{p['low']:.3f}-{p['high']:.3f}", p["among"]])
-    for name, entry in stats.get("quantiles", {}).items():
-        if "stress" in name and entry.get("p95") is not None:
-            rows.append([f"{name} p50 / p95", f"{entry['p50']:.0f} / {entry['p95']:.0f} {entry['unit']}", "-", "-"])
-    drivers = []
-    sens = stats.get("sensitivity", {})
-    outputs = sens.get("outputs", {})
-    names = set()
-    for values in outputs.values():
-        names.update(values)
-    for name in sorted(names):
-        drivers.append([name, _driver(outputs, "backward_whirl", name),
-                        _driver(outputs, "peak_ball_stress_max_MPa", name)])
-    return rows, drivers
+    stress = stats.get("quantiles", {}).get("peak_ball_stress_MPa")
+    if stress and stress.get("p95") is not None and math.isfinite(stress["p95"]):
+        rows.append(["peak ball contact stress, median / 95th percentile",
+                     f"{stress['p50']:.0f} / {stress['p95']:.0f} {stress['unit']}", "-", "-"])
+    outputs = stats.get("sensitivity", {}).get("outputs", {})
+    labels = {s["key"]: s["label"] for s in spreads or []}
+    names = sorted({name for values in outputs.values() for name in values})
+    columns, skipped = [], []
+    for output, title in (("backward_whirl", "rank correlation with backward whirl"),
+                          ("peak_ball_stress_MPa", "rank correlation with the peak ball stress")):
+        values = [_driver(outputs, output, name) for name in names]
+        if any(v != "-" for v in values):
+            columns.append((title, values))
+        else:
+            skipped.append(title.removeprefix("rank correlation with "))
+    if not names or not columns:
+        return rows, {}
+    caption = "What drives the outcome (Spearman rank correlations)"
+    if skipped:
+        caption += f"; nothing to rank for {' and '.join(skipped)}: it did not vary over the campaign's drops"
+    table_rows = [[labels.get(name, name), *(values[i] for _, values in columns)] for i, name in enumerate(names)]
+    return rows, {"columns": ["input", *(title for title, _ in columns)], "rows": table_rows, "caption": caption}
 
 
 def _driver(outputs: dict, output: str, name: str) -> str:
@@ -88,7 +102,7 @@ def _driver(outputs: dict, output: str, name: str) -> str:
 
 def _design(cases: Cases, criteria: dict) -> dict:
     judged = judge(cases, criteria)
-    campaign_rows, drivers = _campaign_rows(cases.campaign)
+    campaign_rows, drivers = _campaign_rows(cases.campaign, cases.spreads)
     return {"criteria": judged, "worst_margin": worst_margin(judged),
             "verdict": overall_verdict(judged),
             "drop_rows": _drop_rows(cases), "coastdown_rows": _coastdown_rows(cases),
