@@ -8,7 +8,6 @@ and a rich display in Jupyter.
 
 from __future__ import annotations
 
-import html
 from pathlib import Path
 
 #: The keys of ``verify.json`` (the rest are objects for the report: runs, datasets, rows).
@@ -73,13 +72,9 @@ class Verification(dict):
                 f"{self['reason']}>")
 
     def _repr_html_(self) -> str:
+        from auxbearing.report.html import _e, _table
         from auxbearing.report.verify_html import verdict_rows
 
-        rows, classes = verdict_rows(self["design"]["criteria"])
-        colour = {"pass": "#2e7d32", "fail": "#c62828", "unchecked": "#8d6e00"}
-        head = "".join(f"<th>{h}</th>" for h in ("criterion", "required", "found", "margin", "pass/fail"))
-        body = "".join("<tr>" + "".join(f"<td style='color:{colour[c]}'>{html.escape(str(v))}</td>" if j == 4
-                                        else f"<td>{html.escape(str(v))}</td>" for j, v in enumerate(row)) + "</tr>"
-                       for row, c in zip(rows, classes, strict=True))
-        return (f"<p><b>Verification of {html.escape(self['machine'])}: {self['verdict'].upper()}</b>: "
-                f"{html.escape(self['reason'])}</p><table><tr>{head}</tr>{body}</table>")
+        rows, _ = verdict_rows(self["design"]["criteria"])
+        return (f"<p><b>Verification of {_e(self['machine'])}: {self['verdict'].upper()}</b>: {_e(self['reason'])}"
+                f"</p>{_table(['criterion', 'required', 'found', 'margin', 'pass/fail'], rows)}")
