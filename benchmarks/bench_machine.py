@@ -63,7 +63,7 @@ def rhs_check(name: str, duration: float) -> float:
     peak = int(np.argmax(normal_forces(grid, core).max(axis=1)))
     rows = sorted({0, peak, *np.linspace(0, grid.shape[0] - 1, 8).astype(int)})
     f = make_rhs(core)
-    ours = np.zeros((len(rows), cm.N_STATE))
+    ours = np.zeros((len(rows), grid.shape[1]))
     for i, row in enumerate(rows):
         cm.rhs(0.0, grid[row].copy(), core, ours[i])
     peer = np.array([f(0.0, grid[row]) for row in rows])

@@ -83,10 +83,11 @@ def make_rhs(core):
     """dy/dt of the machine ``core`` (an :class:`auxbearing.core.machine.Machine`) as ``f(t, y)``."""
     rot = core.rotor
     p = core.planes
-    planes = [k for k in range(cm.MAX_PLANES) if p.active[k] > 0.0]
+    planes = [k for k in range(len(p.active)) if p.active[k] > 0.0]
+    at = cm.layout_of(core)
 
     def rhs(t, y):
-        out = np.zeros(cm.N_STATE)
+        out = np.zeros(at.size)
         om = y[cm.OMEGA]
         be, bc = y[cm.PHI] + rot.unbalance_phase, y[cm.PHI] + rot.couple_phase
         e, chi = rot.unbalance, rot.couple_unbalance
@@ -111,7 +112,7 @@ def make_rhs(core):
 
         for k in planes:
             b = cm.N_ROTOR + k * cm.N_PLANE
-            heat = cm.HEAT_AT + 3 * k
+            heat = at.heat_at + 3 * k
             a, r, s, veps = p.position[k], p.journal_radius[k], p.clearance[k], p.slip_velocity[k]
             jx, jy = y[cm.X] + a * y[cm.TY], y[cm.Y] - a * y[cm.TX]
             rx, ry, rz = y[b + cm.RX], y[b + cm.RY], y[b + cm.RZ]
@@ -168,7 +169,7 @@ def make_rhs(core):
             fy_r += fey - cb * rely
             fz_r += fez - cb * relz
             out[heat + 1] += cb * (relx * relx + rely * rely + relz * relz)
-            out[cm.BALLSET_WORK] -= fex * relx + fey * rely + fez * relz
+            out[at.ballset_work] -= fex * relx + fey * rely + fez * relz
             ring_fx, ring_fy = -fex + cb * relx, -fey + cb * rely
             fe = math.sqrt(fex * fex + fey * fey)
             mu2, ri = p.rolling_friction[k], p.raceway_radius[k]
@@ -217,9 +218,9 @@ def make_rhs(core):
         drag = -(rot.drag_constant * math.tanh(om / rot.drag_speed_scale) + rot.drag_viscous * om
                  + rot.drag_windage * om * abs(om))
         q[5] += drag + rot.process_torque
-        out[cm.W_IN] = (rot.force_x * (y[cm.VX] + eux * om) + rot.force_y * (y[cm.VY] + euy * om)
+        out[at.work_in] = (rot.force_x * (y[cm.VX] + eux * om) + rot.force_y * (y[cm.VY] + euy * om)
                         + rot.force_z * y[cm.VZ] + rot.process_torque * om)
-        out[cm.DRAG_LOSS] = -drag * om
+        out[at.drag_loss] = -drag * om
         spin_acc = q[5] / rot.polar_inertia
         out[cm.X], out[cm.Y], out[cm.PHI] = y[cm.VX], y[cm.VY], om
         out[cm.VX] = q[0] / rot.mass + rot.gravity_x + e * math.cos(be) * om * om - eux * spin_acc
@@ -238,11 +239,11 @@ def make_rhs(core):
 
 
 def normal_forces(states: np.ndarray, core) -> np.ndarray:
-    """Journal/race contact force F_n of each active plane [N] on states of shape (n, N_STATE); (n, planes)."""
+    """Journal/race contact force F_n of each active plane [N] on states of shape (n, state size); (n, planes)."""
     p = core.planes
     y = states.T
     cols = []
-    for k in range(cm.MAX_PLANES):
+    for k in range(len(p.active)):
         if p.active[k] <= 0.0:
             continue
         b = cm.N_ROTOR + k * cm.N_PLANE

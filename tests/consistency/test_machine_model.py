@@ -37,7 +37,7 @@ def _integrate(km, y, t_end, n_out=0, out_step=1.0):
     if n_out:
         grid[0] = y
         memory.next_output[0] = 1
-    watch = cw.new_watch(y.size, 1.0, 2, km.energy0)
+    watch = cw.new_watch(y.size, len(km.machine.planes.active), 1.0, 2, km.energy0)
     settings = km.settings._replace(output_step=out_step, step_budget=10**9)
     status = drive.advance(km.machine, watch, y, t_end, settings, memory, grid)
     return status, grid

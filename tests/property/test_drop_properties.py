@@ -69,7 +69,7 @@ def _energy_drift(name, clearance=2e-4, start=(0.0, 0.0), speed=628.0, tol=1e-9,
     grid[0] = y
     memory = ig.new_memory(0.0, 1e-7, y.size)
     memory.next_output[0] = 1
-    watch = cw.new_watch(y.size, 1.0, 2, km.energy0)
+    watch = cw.new_watch(y.size, len(km.machine.planes.active), 1.0, 2, km.energy0)
     assert drive.advance(km.machine, watch, y, duration, km.settings._replace(step_budget=10**9, output_step=1e-4),
                          memory, grid) == ig.FINISHED
     drift = max(abs(np.subtract(*cm.energy_balance(row, km.machine, km.energy0)[:2])) for row in grid)

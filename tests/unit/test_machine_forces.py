@@ -33,7 +33,7 @@ def _state(km, **values):
 
 
 def _rhs(km, y):
-    out = np.zeros(cm.N_STATE)
+    out = np.zeros(y.size)
     cm.rhs(0.0, y, km.machine, out)
     return out
 

@@ -36,6 +36,7 @@ from auxbearing.core import integrate as ig
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
 from auxbearing.core.watch import WHIRL_FIELDS
 from auxbearing.machine.model import DRAG_SPEED_SCALE, Machine
+from auxbearing.machine.pack import plane_blocks
 
 #: A race rolls on its journal when the contact's mean slip is within this fraction of the journal's surface speed.
 ROLL_SLIP = 0.02
@@ -176,7 +177,7 @@ def spin_model(machine: Machine, windows: list[PlaneWindow], omega: float, race_
     A coupled race keeps the ratio to the rotor it has at the stretch's start (``race_speeds``, ``omega``): the
     spin energy the stretch starts from is then the full model's, and the energy audit closes across it.
     """
-    n = spin.MAX_PLANES
+    n = plane_blocks(machine.planes)  # padded as the full model's tuples: one compiled kernel for 1 and 2 planes
 
     def per_plane(values, fill=0.0):
         out = [fill] * n
@@ -227,24 +228,25 @@ SPIN_RTOL = 1e-9
 
 def integrate_stretch(model: spin.SpinModel, omega: float, race_speeds: list, span: float) -> Stretch:
     """Integrate the reduced model from the speeds given for at most ``span`` seconds or to its floor."""
-    y = spin.new_state(omega, race_speeds)
-    atol = np.full(spin.N_STATE, np.inf)
+    at = spin.layout.py_func(len(model.active))
+    n, size = at.planes, at.size
+    y = spin.new_state(omega, race_speeds, n)
+    atol = np.full(size, np.inf)
     scale = max(abs(omega), 1.0)
     atol[spin.OMEGA] = 1e-12 * scale
-    atol[spin.RACE_AT:spin.RACE_AT + spin.MAX_PLANES] = 1e-12 * scale
+    atol[spin.RACE_AT:spin.RACE_AT + n] = 1e-12 * scale
     settings = ig.Settings(SPIN_RTOL, atol, math.inf, 1e-14, 10**6, math.inf)
-    memory = ig.new_memory(0.0, min(1e-3, span), spin.N_STATE)
-    obs = np.zeros(spin.N_STATE + 2)
-    status = drive.advance_spin(model, obs, y, span, settings, memory, np.empty((0, spin.N_STATE)))
+    memory = ig.new_memory(0.0, min(1e-3, span), size)
+    obs = np.zeros(size + 2)
+    status = drive.advance_spin(model, obs, y, span, settings, memory, np.empty((0, size)))
     if status == ig.STOPPED:
-        y = obs[:spin.N_STATE].copy()
-        duration = float(obs[spin.N_STATE])
+        y = obs[:size].copy()
+        duration = float(obs[size])
     elif status == ig.FINISHED:
         duration = span
     else:  # a smooth two-speed problem that fails to integrate is a defect, not a machine's verdict
         raise RuntimeError(f"the reduced coast-down model did not integrate ({ig.STATUS_TEXT[status]})")
-    n = spin.MAX_PLANES
-    heat = [tuple(float(y[spin.HEAT_AT + 3 * k + j]) for j in range(3)) for k in range(n)]
+    heat = [tuple(float(y[at.heat_at + 3 * k + j]) for j in range(3)) for k in range(n)]
     return Stretch(duration, float(y[spin.OMEGA]), [float(y[spin.RACE_AT + k]) for k in range(n)], heat,
-                   float(y[spin.DRAG_LOSS]), float(y[spin.WORK_IN]),
-                   [float(y[spin.TURN_AT + k]) / (2.0 * math.pi) for k in range(n)], int(memory.steps[0]))
+                   float(y[at.drag_loss]), float(y[at.work_in]),
+                   [float(y[at.turn_at + k]) / (2.0 * math.pi) for k in range(n)], int(memory.steps[0]))

@@ -1,6 +1,6 @@
 """``auxbearing drop``, ``auxbearing machines`` and ``auxbearing drop-compare``.
 
-``drop --machine FILE_OR_NAME`` runs a machine (rigid rotor on one or two touchdown planes,
+``drop --machine FILE_OR_NAME`` runs a machine (rigid rotor on one or more touchdown planes,
 :mod:`auxbearing.machine.model`); without it, ``drop`` runs the source paper's planar drop (Sec. II.D,
 Fig. 9-11), whose rotor and drop parameters of :data:`auxbearing.planar.params.PARAMETERS` are options
 (generated from that table, so help, unit and default cannot drift apart) and keys of the
@@ -197,7 +197,7 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_conta
                  quiet):
     """Drop of a rotor onto its touchdown bearings.
 
-    With --machine: a rigid rotor on one or two touchdown planes (gyroscopics, axial touchdown,
+    With --machine: a rigid rotor on one or more touchdown planes (gyroscopics, axial touchdown,
     compliant mounts). The run watches the model's range and ends with a verdict: "ok", or the limit it
     crossed (then no peak is reported as a result). Whirl is judged window by window.
 

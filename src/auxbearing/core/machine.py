@@ -1,4 +1,4 @@
-"""Right-hand side of a machine touchdown: rigid rotor, one or two touchdown planes, races, mounts.
+"""Right-hand side of a machine touchdown: rigid rotor, any number of touchdown planes, races, mounts.
 
 The source paper's drop (Sec. II.D, Eq. 17-26, read as docs/paper_notes.md items 1-9) is the
 planar special case: one plane at the mass centre with tilt and axial motion locked. Everything is
@@ -33,8 +33,11 @@ hard stop), and an optional axial face contact of a rotor collar on the race fac
 and damping; friction against the local slip averaged over the face's mean circle, which turns an
 axial load into a torque and a lateral force on the rotor: Wilkes et al., GT2013-94594).
 
-State layout: :data:`STATE_NAMES` (rotor, then :data:`MAX_PLANES` planes, then bookkeeping integrals
-of work and heat that the energy audit uses; these carry ``atol = inf`` so they never steer the step).
+State layout (:func:`layout`, generated from the number of planes): the rotor's :data:`ROTOR_STATES`, one
+block of :data:`PLANE_STATES` per plane, then the bookkeeping integrals of work and heat that the energy
+audit uses (:data:`LEDGER`, then :data:`PLANE_LEDGER` per plane); these carry ``atol = inf`` so they never
+steer the step. The kernels read the plane count from the packed planes' tuples (a compile-time constant:
+numba compiles one specialisation per count, and :data:`MIN_PLANES` pads the common machines to one).
 """
 
 from __future__ import annotations
@@ -48,26 +51,64 @@ from numba import njit
 from auxbearing.core.ballset import accumulate
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
 
-MAX_PLANES = 2
+#: Plane blocks a packed machine has at least: machines of one and two planes share one compiled kernel.
+MIN_PLANES = 2
 ROTOR_STATES = ("x", "y", "z", "tilt_x", "tilt_y", "spin_angle",
                 "vx", "vy", "vz", "tilt_rate_x", "tilt_rate_y", "spin_speed")
 PLANE_STATES = ("race_x", "race_y", "race_z", "race_angle", "race_vx", "race_vy", "race_vz", "race_speed",
                 "ring_x", "ring_y", "ring_vx", "ring_vy")
-#: Bookkeeping integrals [J]: work of process forces and torque, drag loss, energy stored in the ball
-#: sets, and per plane the heat made at the journal/race and face contacts, inside the bearing
-#: (ball damping, rolling resistance) and in the mount damper.
-LEDGER = ("work_in", "drag_loss", "ballset_work", "heat_contact_0", "heat_bearing_0", "heat_mount_0",
-          "heat_contact_1", "heat_bearing_1", "heat_mount_1")
+#: Bookkeeping integrals [J]: work of process forces and torque, drag loss, energy stored in the ball sets;
+#: then per plane the heat made at the journal/race and face contacts, inside the bearing (ball damping,
+#: rolling resistance) and in the mount damper.
+LEDGER = ("work_in", "drag_loss", "ballset_work")
+PLANE_LEDGER = ("heat_contact", "heat_bearing", "heat_mount")
 N_ROTOR = len(ROTOR_STATES)
 N_PLANE = len(PLANE_STATES)
-LEDGER_AT = N_ROTOR + MAX_PLANES * N_PLANE
-N_STATE = LEDGER_AT + len(LEDGER)
-STATE_NAMES = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(MAX_PLANES) for name in PLANE_STATES), *LEDGER)
 
 X, Y, Z, TX, TY, PHI, VX, VY, VZ, WX, WY, OMEGA = range(N_ROTOR)
 RX, RY, RZ, RPSI, RVX, RVY, RVZ, ROMEGA, OX, OY, OVX, OVY = range(N_PLANE)
-W_IN, DRAG_LOSS, BALLSET_WORK = LEDGER_AT, LEDGER_AT + 1, LEDGER_AT + 2
-HEAT_AT = LEDGER_AT + 3  # + 3 k + (0 contact, 1 bearing, 2 mount)
+#: Offsets inside the ledger (:func:`ledger_at`); plane k's heat from ``L_HEAT + 3 k`` (contact, bearing, mount).
+L_WORK_IN, L_DRAG_LOSS, L_BALLSET_WORK, L_HEAT = range(4)
+
+
+@njit(cache=True, inline="always")
+def ledger_at(n_planes):
+    """Index of the ledger in the state of a machine packed with ``n_planes`` plane blocks."""
+    return N_ROTOR + n_planes * N_PLANE
+
+
+class Layout(NamedTuple):
+    """Where each quantity sits in the state vector of a machine with ``planes`` plane blocks (:func:`layout`)."""
+
+    planes: int
+    size: int
+    ledger_at: int
+    work_in: int
+    drag_loss: int
+    ballset_work: int
+    heat_at: int  #: + 3 k + (0 contact, 1 bearing, 2 mount)
+    names: tuple  #: every state's name, in order
+
+    def plane(self, k: int) -> int:
+        """First index of plane k's block."""
+        return N_ROTOR + k * N_PLANE
+
+    def heat(self, k: int, source: int) -> int:
+        """Index of plane k's heat from ``source`` (0 contact, 1 bearing, 2 mount)."""
+        return self.heat_at + 3 * k + source
+
+
+def layout(n_planes: int) -> Layout:
+    """The state layout of a machine packed with ``n_planes`` plane blocks (module docstring)."""
+    at = ledger_at.py_func(n_planes)  # the kernels' own formula, run as Python
+    names = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_STATES), *LEDGER,
+             *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_LEDGER))
+    return Layout(n_planes, len(names), at, at + L_WORK_IN, at + L_DRAG_LOSS, at + L_BALLSET_WORK, at + L_HEAT, names)
+
+
+def layout_of(m) -> Layout:
+    """The state layout of a packed :class:`Machine`."""
+    return layout(len(m.planes.active))
 
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
 #: integrates the first harmonics of the slip field exactly).
@@ -105,7 +146,7 @@ class Rotor(NamedTuple):
 
 
 class Planes(NamedTuple):
-    """Touchdown-plane parameters, each a tuple of :data:`MAX_PLANES` floats (SI).
+    """Touchdown-plane parameters, each a tuple of one float per plane block (SI).
 
     Tuples, not arrays: compiled code passes them by value, while each array of a struct costs a
     reference-count update wherever the struct is used (34 of them made half the right-hand side).
@@ -176,7 +217,7 @@ class Machine(NamedTuple):
     limits: Limits
     scratch: np.ndarray  #: (:data:`SCRATCH`,) generalised forces, ball-set displacement and resultant
     jac_stub: np.ndarray  #: (1, 1): the Jacobian argument of the ball-set kernel, unused here
-    last_diag: np.ndarray  #: (MAX_PLANES, len(DIAG_FIELDS)): each plane's diagnostics at the last rhs call
+    last_diag: np.ndarray  #: (planes, len(DIAG_FIELDS)): each plane's diagnostics at the last rhs call
 
 
 #: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5).
@@ -184,9 +225,9 @@ _Q, _DISP, _FORCE = 0, 6, 11
 SCRATCH = 16
 
 
-def new_scratch() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Fresh (scratch, jac_stub, last_diag) for a :class:`Machine`."""
-    return np.zeros(SCRATCH), np.zeros((1, 1)), np.zeros((MAX_PLANES, len(DIAG_FIELDS)))
+def new_scratch(n_planes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fresh (scratch, jac_stub, last_diag) for a :class:`Machine` of ``n_planes`` plane blocks."""
+    return np.zeros(SCRATCH), np.zeros((1, 1)), np.zeros((n_planes, len(DIAG_FIELDS)))
 
 
 # ----------------------------------------------------------------------------- rotor kinematics
@@ -251,7 +292,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
     """
     p = m.planes
     b = N_ROTOR + k * N_PLANE
-    heat = HEAT_AT + 3 * k
+    heat = ledger_at(len(p.active)) + L_HEAT + 3 * k
     a = p.position[k]
     r = p.journal_radius[k]
     s = p.clearance[k]
@@ -363,7 +404,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
     fy_r += fey + dampy
     fz_r += fez + dampz
     out[heat + 1] += cb * (relx * relx + rely * rely + relz * relz)
-    out[BALLSET_WORK] -= fex * relx + fey * rely + fez * relz
+    out[ledger_at(len(p.active)) + L_BALLSET_WORK] -= fex * relx + fey * rely + fez * relz
     ring_fx = -fex - dampx
     ring_fy = -fey - dampy
     fe = math.sqrt(fex * fex + fey * fey)
@@ -443,10 +484,10 @@ def rhs(t, y, m, out):
     --------
     >>> from auxbearing.planar.rig import paper_rig
     >>> from auxbearing.machine.pack import pack
-    >>> from auxbearing.core.machine import N_STATE, VY
+    >>> from auxbearing.core.machine import VY
     >>> import numpy as np
     >>> model = pack(paper_rig())
-    >>> d = np.zeros(N_STATE); rhs(0.0, model.y0, model.machine, d)
+    >>> d = np.zeros(model.y0.size); rhs(0.0, model.y0, model.machine, d)
     >>> round(float(d[VY]), 5)  # the journal centre falls freely at the start
     -9.80665
     """
@@ -457,7 +498,8 @@ def rhs(t, y, m, out):
     q = m.scratch[_Q:_Q + 6]  # generalised forces on G (3), theta_p (2), phi
     for i in range(6):
         q[i] = 0.0
-    for k in range(MAX_PLANES):
+    n_planes = len(m.planes.active)
+    for k in range(n_planes):
         if m.planes.active[k] > 0.0:
             plane_forces(k, y, m, kin, q, out, m.last_diag[k])
     om = y[OMEGA]
@@ -470,8 +512,10 @@ def rhs(t, y, m, out):
     drag = -(rotor.drag_constant * math.tanh(om / rotor.drag_speed_scale) + rotor.drag_viscous * om
              + rotor.drag_windage * om * abs(om))
     q[5] += drag + rotor.process_torque
-    out[W_IN] = rotor.force_x * vgx + rotor.force_y * vgy + rotor.force_z * y[VZ] + rotor.process_torque * om
-    out[DRAG_LOSS] = -drag * om
+    ledger = ledger_at(n_planes)
+    out[ledger + L_WORK_IN] = (rotor.force_x * vgx + rotor.force_y * vgy + rotor.force_z * y[VZ]
+                               + rotor.process_torque * om)
+    out[ledger + L_DRAG_LOSS] = -drag * om
     spin_acc = q[5] / rotor.polar_inertia
     # mass centre, then the geometric centre O = G - e u (module docstring)
     gx = q[0] / mass + rotor.gravity_x
@@ -522,7 +566,7 @@ def energy(y, m):
     be = y[PHI] + rotor.unbalance_phase
     gx_, gy_ = y[X] + e * math.cos(be), y[Y] + e * math.sin(be)
     potential = -rotor.mass * (rotor.gravity_x * gx_ + rotor.gravity_y * gy_ + rotor.gravity_z * y[Z])
-    for k in range(MAX_PLANES):
+    for k in range(len(p.active)):
         if p.active[k] <= 0.0:
             continue
         b = N_ROTOR + k * N_PLANE
@@ -562,10 +606,12 @@ def energy_balance(y, m, e0):
     term, so the relative error means something when the start energy is near zero (a rotor at rest).
     """
     kinetic, potential = energy(y, m)
+    ledger = ledger_at(len(m.planes.active))
     heat = 0.0
-    for i in range(HEAT_AT, N_STATE):
+    for i in range(ledger + L_HEAT, y.size):
         heat += y[i]
-    energy_in = e0 + y[W_IN]
-    accounted = kinetic + potential + y[BALLSET_WORK] + y[DRAG_LOSS] + heat
-    scale = abs(e0) + abs(y[W_IN]) + kinetic + abs(potential) + abs(y[BALLSET_WORK]) + abs(y[DRAG_LOSS]) + abs(heat)
+    work_in, ballset, drag = y[ledger + L_WORK_IN], y[ledger + L_BALLSET_WORK], y[ledger + L_DRAG_LOSS]
+    energy_in = e0 + work_in
+    accounted = kinetic + potential + ballset + drag + heat
+    scale = abs(e0) + abs(work_in) + kinetic + abs(potential) + abs(ballset) + abs(drag) + abs(heat)
     return energy_in, accounted, scale

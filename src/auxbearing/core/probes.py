@@ -16,7 +16,6 @@ from auxbearing.core.machine import (
     D_FN,
     D_PEN,
     DIAG_FIELDS,
-    MAX_PLANES,
     N_PLANE,
     N_ROTOR,
     OX,
@@ -105,17 +104,18 @@ def orbit(y, m, k):
 
 @njit(cache=True)
 def series(grid, m, with_stress):
-    """Per output instant and plane: the diagnostics and the largest ball stress, (n, 2, len(DIAG_FIELDS) + 1).
+    """Per output instant and plane block: diagnostics and largest ball stress, (n, planes, len(DIAG_FIELDS) + 1).
 
     Without ``with_stress`` the stress column is left at zero (a summary that needs no time series of it).
     """
     n = grid.shape[0]
-    out = np.zeros((n, MAX_PLANES, len(DIAG_FIELDS) + 1))
+    n_planes = len(m.planes.active)
+    out = np.zeros((n, n_planes, len(DIAG_FIELDS) + 1))
     work = np.zeros(grid.shape[1])
     q = np.zeros(6)
     diag = np.zeros(len(DIAG_FIELDS))
     for i in range(n):
-        for k in range(MAX_PLANES):
+        for k in range(n_planes):
             if m.planes.active[k] <= 0.0:
                 continue
             _diagnostics_into(grid[i], m, k, work, q, diag)

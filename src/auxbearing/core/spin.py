@@ -23,7 +23,8 @@ journal, m (s w_whirl)^2 / 2, is of order 1e-6 of it and is left out):
 with P_k = (T_contact + T_mount) |Omega| + (T_rest + M_0(w_race)) |w_race|. Torques carry
 tanh(speed / scale) so that a speed through zero meets no jump (as the full model's drag).
 
-State layout: :data:`STATE_NAMES`. :func:`observe` stops the integration where |Omega| falls to the
+State layout (:func:`layout`, from the number of planes): rotor speed, race speeds, heats, drag loss, work in,
+race turns, rotor turn. :func:`observe` stops the integration where |Omega| falls to the
 stretch's floor (a speed step, or standstill), located on the dense output.
 """
 
@@ -38,22 +39,33 @@ from numba import njit
 from auxbearing.core import integrate as ig
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
 
-MAX_PLANES = 2
 OMEGA = 0
 RACE_AT = 1  #: + k: race spin speed of plane k [rad/s]
-HEAT_AT = RACE_AT + MAX_PLANES  #: + 3 k + (0 contact, 1 bearing, 2 mount) [J]
-DRAG_LOSS = HEAT_AT + 3 * MAX_PLANES  #: [J]
-WORK_IN = DRAG_LOSS + 1  #: work of the process torque [J]
-TURN_AT = WORK_IN + 1  #: + k: angle the race of plane k turned [rad]
-ROTOR_TURN = TURN_AT + MAX_PLANES  #: angle the rotor turned [rad]
-N_STATE = ROTOR_TURN + 1
-STATE_NAMES = ("rotor_speed", *(f"race_speed_{k}" for k in range(MAX_PLANES)),
-               *(f"heat_{kind}_{k}" for k in range(MAX_PLANES) for kind in ("contact", "bearing", "mount")),
-               "drag_loss", "work_in", *(f"race_turn_{k}" for k in range(MAX_PLANES)), "rotor_turn")
+
+
+class Layout(NamedTuple):
+    """Where each quantity sits in the state of a stretch with ``planes`` planes (:func:`layout`)."""
+
+    planes: int
+    heat_at: int  #: + 3 k + (0 contact, 1 bearing, 2 mount) [J]
+    drag_loss: int  #: [J]
+    work_in: int  #: work of the process torque [J]
+    turn_at: int  #: + k: angle the race of plane k turned [rad]
+    rotor_turn: int  #: angle the rotor turned [rad]
+    size: int
+
+
+@njit(cache=True, inline="always")
+def layout(n_planes):
+    """The state layout of a stretch with ``n_planes`` planes (module docstring)."""
+    heat_at = RACE_AT + n_planes
+    drag_loss = heat_at + 3 * n_planes
+    turn_at = drag_loss + 2
+    return Layout(n_planes, heat_at, drag_loss, drag_loss + 1, turn_at, turn_at + n_planes, turn_at + n_planes + 1)
 
 
 class SpinModel(NamedTuple):
-    """Parameters of one stretch (SI); per-plane fields are tuples of :data:`MAX_PLANES` floats."""
+    """Parameters of one stretch (SI); per-plane fields are tuples of one float per plane."""
 
     inertia: float  #: J_p + sum over coupled planes of J_race rho^2 [kg m^2]
     drag_constant: float  #: T0 [N m]
@@ -90,34 +102,35 @@ def rhs(t, y, m, out):
     sign = math.tanh(om / m.speed_scale)
     aom = abs(om)
     load = 0.0  # power-equivalent torque of the coupled planes on the rotor [N m]
-    for k in range(MAX_PLANES):
+    at = layout(len(m.active))
+    for k in range(at.planes):
         if m.active[k] <= 0.0:
             continue
         wr = y[RACE_AT + k]
         race_sign = math.tanh(wr / m.speed_scale)
         bearing = (m.bearing_torque[k] + _viscous(m, k, wr)) * race_sign
-        out[TURN_AT + k] = abs(wr)
-        out[HEAT_AT + 3 * k + 1] = bearing * wr
+        out[at.turn_at + k] = abs(wr)
+        out[at.heat_at + 3 * k + 1] = bearing * wr
         if m.coupled[k] > 0.0:
-            out[HEAT_AT + 3 * k] = m.contact_torque[k] * sign * om
-            out[HEAT_AT + 3 * k + 2] = m.mount_torque[k] * sign * om
+            out[at.heat_at + 3 * k] = m.contact_torque[k] * sign * om
+            out[at.heat_at + 3 * k + 2] = m.mount_torque[k] * sign * om
             load += (m.contact_torque[k] + m.mount_torque[k]) * sign + bearing * m.ratio[k] * (1.0 if wr * om >= 0.0
                                                                                                else -1.0)
         else:
             out[RACE_AT + k] = -bearing / m.race_inertia[k]
     drag = m.drag_constant * sign + m.drag_viscous * om + m.drag_windage * om * aom
     out[OMEGA] = (m.process_torque - drag - load) / m.inertia
-    for k in range(MAX_PLANES):
+    for k in range(at.planes):
         if m.active[k] > 0.0 and m.coupled[k] > 0.0:
             out[RACE_AT + k] = m.ratio[k] * out[OMEGA] * (1.0 if y[RACE_AT + k] * om >= 0.0 else -1.0)
-    out[DRAG_LOSS] = drag * om
-    out[WORK_IN] = m.process_torque * om
-    out[ROTOR_TURN] = aom
+    out[at.drag_loss] = drag * om
+    out[at.work_in] = m.process_torque * om
+    out[at.rotor_turn] = aom
 
 
 @njit(cache=True)
 def observe(t, h, y0, y1, coeff, m, obs):
-    """Stop where |Omega| reaches the floor; ``obs`` (N_STATE + 2,): the state there, then t and a flag.
+    """Stop where |Omega| reaches the floor; ``obs`` (state size + 2,): the state there, then t and a flag.
 
     The crossing is bisected on the step's dense output (60 halvings, as
     :func:`auxbearing.core.integrate.dense_root`).
@@ -144,9 +157,9 @@ def observe(t, h, y0, y1, coeff, m, obs):
     return 1
 
 
-def new_state(omega: float, race_speeds) -> np.ndarray:
-    """A stretch's initial state: the speeds given, every integral zero."""
-    y = np.zeros(N_STATE)
+def new_state(omega: float, race_speeds, n_planes: int) -> np.ndarray:
+    """A stretch's initial state for a model of ``n_planes`` planes: the speeds given, every integral zero."""
+    y = np.zeros(layout.py_func(n_planes).size)
     y[OMEGA] = omega
     for k, w in enumerate(race_speeds):
         y[RACE_AT + k] = w

@@ -34,7 +34,6 @@ from auxbearing.core.machine import (
     D_PEN,
     D_QMAX,
     DIAG_FIELDS,
-    MAX_PLANES,
     N_PLANE,
     N_ROTOR,
     OMEGA,
@@ -62,32 +61,32 @@ _FORCE, _STRESS, _AXIAL = range(3)
 class Watch(NamedTuple):
     """The observer's memory (arrays, updated in place)."""
 
-    peak: np.ndarray  #: (3, 2): largest line force [N], ball stress [Pa], |axial force| [N]; per plane
-    peak_time: np.ndarray  #: (3, 2) [s]
-    peak_load: np.ndarray  #: (2,) largest ball-pair load [N]
-    shoulder_use: np.ndarray  #: (2,) largest (alpha + a/r) / shoulder angle seen
-    history: np.ndarray  #: (3, 2, 2): quantity, plane, (value a step back, value now)
+    peak: np.ndarray  #: (3, planes): largest line force [N], ball stress [Pa], |axial force| [N]; per plane
+    peak_time: np.ndarray  #: (3, planes) [s]
+    peak_load: np.ndarray  #: (planes,) largest ball-pair load [N]
+    shoulder_use: np.ndarray  #: (planes,) largest (alpha + a/r) / shoulder angle seen
+    history: np.ndarray  #: (3, planes, 2): quantity, plane, (value a step back, value now)
     prev_coeff: np.ndarray  #: (5, n) dense output of the previous step
     prev_h: np.ndarray  #: (1,)
-    in_contact: np.ndarray  #: (2,)
-    onsets: np.ndarray  #: (2,)
-    first_contact: np.ndarray  #: (2,) [s], -1 before
+    in_contact: np.ndarray  #: (planes,)
+    onsets: np.ndarray  #: (planes,)
+    first_contact: np.ndarray  #: (planes,) [s], -1 before
     stop: np.ndarray  #: (4,) code, plane, time [s], value
     energy_in0: np.ndarray  #: (1,) mechanical energy at the start [J]
     energy_error: np.ndarray  #: (2,) largest |accounted - in| / scale seen, and the last one (see energy_balance)
     window: np.ndarray  #: (1,) length of a whirl window [s]
     window_count: np.ndarray  #: (1,) int64, closed windows
     window_end: np.ndarray  #: (1,) end time of the open window [s]
-    whirl_acc: np.ndarray  #: (2, len(WHIRL_FIELDS)) running integrals of the open window
-    whirl: np.ndarray  #: (n_windows, 2, len(WHIRL_FIELDS)) closed windows
+    whirl_acc: np.ndarray  #: (planes, len(WHIRL_FIELDS)) running integrals of the open window
+    whirl: np.ndarray  #: (n_windows, planes, len(WHIRL_FIELDS)) closed windows
     searches: np.ndarray  #: (2,) int64: peak refinements and contact-onset searches made (cost bookkeeping)
     tmp: np.ndarray  #: (n,) working state for the dense-output searches
-    diags: np.ndarray  #: (2, len(DIAG_FIELDS)) each plane's diagnostics at the step's end
+    diags: np.ndarray  #: (planes, len(DIAG_FIELDS)) each plane's diagnostics at the step's end
 
 
-def new_watch(n_states: int, window: float, n_windows: int, energy0: float) -> Watch:
-    """A fresh observer memory for a run with room for ``n_windows`` whirl windows of ``window`` seconds."""
-    two = MAX_PLANES
+def new_watch(n_states: int, n_planes: int, window: float, n_windows: int, energy0: float) -> Watch:
+    """A fresh observer memory: ``n_planes`` plane blocks, room for ``n_windows`` whirl windows of ``window`` s."""
+    two = n_planes  # plane blocks of the packed machine (its tuples' length)
     n_fields = len(WHIRL_FIELDS)
     return Watch(np.zeros((3, two)), np.zeros((3, two)), np.zeros(two), np.zeros(two), np.zeros((3, two, 2)),
                  np.zeros((5, n_states)), np.zeros(1), np.zeros(two), np.zeros(two), np.full(two, -1.0),
@@ -134,7 +133,8 @@ def _stop(w, code, k, t, value):
 @njit(cache=True, inline="always")
 def _whirl_step(w, y0, y1, m, t, h, diags):
     """Add one step to the open whirl window of every active plane; close the window when it ends."""
-    for k in range(MAX_PLANES):
+    n_planes = len(m.planes.active)
+    for k in range(n_planes):
         if m.planes.active[k] <= 0.0:
             continue
         b = N_ROTOR + k * N_PLANE
@@ -154,7 +154,7 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
     if t + h >= w.window_end[0]:
         i = w.window_count[0]
         if i < w.whirl.shape[0]:
-            for k in range(MAX_PLANES):
+            for k in range(n_planes):
                 acc = w.whirl_acc[k]
                 span = acc[5]
                 if span > 0.0:
@@ -182,11 +182,12 @@ def observe(t, h, y0, y1, coeff, m, w):
     tmp = w.tmp
     lim = m.limits
     diags = w.diags
-    for k in range(MAX_PLANES):
+    n_planes = len(m.planes.active)
+    for k in range(n_planes):
         for i in range(diags.shape[1]):
             diags[k, i] = m.last_diag[k, i] if m.planes.active[k] > 0.0 else 0.0
     code = 0
-    for k in range(MAX_PLANES):
+    for k in range(n_planes):
         if m.planes.active[k] <= 0.0:
             continue
         diag = diags[k]

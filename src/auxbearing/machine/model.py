@@ -17,7 +17,6 @@ from pathlib import Path
 from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import accept, read_table, unknown
-from auxbearing.core import machine as cm
 from auxbearing.core.hertz import line_contact_constant
 from auxbearing.machine.params import (
     AXIAL_DIRECTIONS,
@@ -192,7 +191,7 @@ class Life:
 
 @dataclass(frozen=True)
 class Machine:
-    """A machine: rotor, one or two touchdown planes, orientation and run settings."""
+    """A machine: rotor, its touchdown planes (one or more), orientation and run settings."""
 
     name: str
     rotor: MachineRotor
@@ -206,8 +205,8 @@ class Machine:
     def __post_init__(self) -> None:
         if self.orientation not in ORIENTATIONS:
             raise InputError.for_field("machine.orientation", self.orientation, "must be horizontal or vertical")
-        if not 1 <= len(self.planes) <= cm.MAX_PLANES:
-            raise InputError.for_field("touchdown", len(self.planes), "give one or two [[touchdown]] tables")
+        if not self.planes:
+            raise InputError.for_field("touchdown", 0, "give at least one [[touchdown]] table")
         if self.tilt_free and self.rotor.transverse_inertia is None:
             raise InputError("rotor.transverse_inertia: missing; a rotor on two touchdown planes needs it")
         if self.orientation == "vertical" and not any(p.catches_axially for p in self.planes):
@@ -216,14 +215,15 @@ class Machine:
         if not self.tilt_free and self.rotor.couple_unbalance > 0.0:
             raise InputError.for_field("rotor.couple_unbalance", f"{self.rotor.couple_unbalance * 1e3:g} mrad",
                                        "needs two touchdown planes (one plane locks the tilt)")
-        if len(self.planes) == 2 and abs(self.planes[0].position - self.planes[1].position) < 1e-6:
-            raise InputError.for_field("touchdown.1.position", f"{self.planes[1].position * 1e3:g} mm",
-                                       "two planes must sit at different axial positions")
+        for j, plane in enumerate(self.planes):
+            if any(abs(other.position - plane.position) < 1e-6 for other in self.planes[:j]):
+                raise InputError.for_field(f"touchdown.{j}.position", f"{plane.position * 1e3:g} mm",
+                                           "touchdown planes must sit at different axial positions")
 
     @property
     def tilt_free(self) -> bool:
-        """Two planes: the rotor tilts (one plane is the planar rotor of the source paper)."""
-        return len(self.planes) == 2
+        """Two planes or more: the rotor tilts (one plane is the planar rotor of the source paper)."""
+        return len(self.planes) >= 2
 
     @property
     def axial_free(self) -> bool:
@@ -425,7 +425,7 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     rotor = MachineRotor(**{k: rotor_values.get(k, default("rotor", k)) for k in TABLES["rotor"]})
     tables = data.get("touchdown")
     if not isinstance(tables, list) or not tables or not all(isinstance(t, dict) for t in tables):
-        raise InputError.for_field("touchdown", tables, "give one or two [[touchdown]] tables")
+        raise InputError.for_field("touchdown", tables, "give one or more [[touchdown]] tables")
     planes = []
     for k, table in enumerate(tables):
         where = f"touchdown.{k}."

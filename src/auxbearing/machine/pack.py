@@ -25,11 +25,17 @@ class KernelModel(NamedTuple):
     y0: np.ndarray
     settings: ig.Settings
     energy0: float  #: mechanical energy at the start [J]
+    layout: cm.Layout  #: where each quantity sits in the state
+
+
+def plane_blocks(planes) -> int:
+    """Plane blocks a machine is packed with: its planes, at least :data:`auxbearing.core.machine.MIN_PLANES`."""
+    return max(len(planes), cm.MIN_PLANES)
 
 
 
 def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
-    n = cm.MAX_PLANES
+    n = plane_blocks(planes)
 
     def arr(get, fill=0.0):
         # tuples of floats, not arrays: the compiled code passes them by value, while every use of a
@@ -85,7 +91,7 @@ def journal_pressure(plane: TouchdownPlane, force: float) -> tuple[float, float]
 
 def _limits(machine: Machine) -> cm.Limits:
     sim = machine.simulation
-    n = cm.MAX_PLANES
+    n = plane_blocks(machine.planes)
     journal_force = np.full(n, np.inf)
     shoulder_i, shoulder_o = np.full(n, np.pi), np.full(n, np.pi)
     groove_i, groove_o = np.ones(n), np.ones(n)
@@ -129,13 +135,15 @@ def pack(machine: Machine) -> KernelModel:
         drag_speed_scale=DRAG_SPEED_SCALE,
         tilt_free=machine.tilt_free, axial_free=machine.axial_free)
     ballsets = [ballset_params(p.bearing, p.ball_constant) for p in planes]
-    while len(ballsets) < cm.MAX_PLANES:
+    n = plane_blocks(planes)
+    while len(ballsets) < n:
         ballsets.append(ballsets[0])
-    clearance = np.zeros(cm.MAX_PLANES)
+    clearance = np.zeros(n)
     for k, p in enumerate(planes):
         clearance[k] = p.bearing.diametral_clearance
-    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine), *cm.new_scratch())
-    y0 = np.zeros(cm.N_STATE)
+    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine), *cm.new_scratch(n))
+    layout = cm.layout(n)
+    y0 = np.zeros(layout.size)
     y0[cm.OMEGA] = r.speed
     y0[cm.X], y0[cm.Y] = r.start_x, r.start_y
     for k, p in enumerate(planes):
@@ -149,7 +157,7 @@ def pack(machine: Machine) -> KernelModel:
     rotor_scale = (s, s, s, s / length, s / length, 1.0, v, v, v, v / length, v / length, w)
     free = (True, True, machine.axial_free, machine.tilt_free, machine.tilt_free, True,
             True, True, machine.axial_free, machine.tilt_free, machine.tilt_free, True)
-    atol = np.full(cm.N_STATE, np.inf)
+    atol = np.full(layout.size, np.inf)
     for i in range(cm.N_ROTOR):
         if free[i]:
             atol[i] = sim.atol * rotor_scale[i]
@@ -165,4 +173,4 @@ def pack(machine: Machine) -> KernelModel:
                 atol[b + i] = sim.atol * sc
     settings = ig.Settings(sim.rtol, atol, sim.max_step, 1e-14, 20000, sim.output_step)
     kinetic, potential = cm.energy(y0, core)
-    return KernelModel(core, y0, settings, kinetic + potential)
+    return KernelModel(core, y0, settings, kinetic + potential, layout)

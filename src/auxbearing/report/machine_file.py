@@ -35,7 +35,7 @@ This page is generated: `python -m auxbearing.report.machine_file > docs/machine
 |---|---|
 | `[machine]` | `name`, `orientation` (`horizontal` or `vertical`), `source` (where the numbers come from) |
 | `[rotor]` | the rigid rotor: mass, inertias, speed, unbalance, process loads |
-| `[[touchdown]]` | one per touchdown plane (one or two): bearing, clearances, mount, friction, heat |
+| `[[touchdown]]` | one per touchdown plane (one or more): bearing, clearances, mount, friction, heat |
 | `[drop]` | the drop simulation: duration, tolerances, budgets |
 | `[coastdown]` | drag of the rotor and the ambient, for `coastdown` and `verify` |
 {life_row}
