@@ -74,8 +74,6 @@ WHOLE_DOCUMENT = [
                                          'distribution = "uniform"\nlow = "1000 rpm"\nhigh = "2000 rpm"\n')}),
     case("doc-table-typo", "drop --machine m.toml", "[criterion]", "criteria",
          files={"m.toml": machine(tables="[criterion]\nmin_s0 = 2\n")}),
-    *on_every_command("doc-touchdown-duplex-set", machine(bearing="7202 DB"), "touchdown.0.bearing", "7202 DB",
-                      "matched set"),
     *on_every_command("doc-candidate-duplex-set", machine(tables='[[candidate]]\nbearing = "7202 DB"\n'),
                       "candidate.0", "7202 DB"),
     case("doc-touchdown-typo", "drop --machine m.toml", "touchdown.0.mount_dampng", "mount_damping",

@@ -135,8 +135,10 @@ def test_a_candidate_must_fit_the_seat():
         check_candidate_seat(design, qj202.with_changes(bore=None), "x")
     check_candidate_seat(design, qj202.with_changes(width=10e-3, outside_diameter=34e-3), "x")  # smaller fits
     blower = read_machine("blower")
-    for name in ("7208", "6208"):  # the blower's own candidates
+    for name in ("7208 DB", "QJ208 hybrid", "6208"):  # the blower's own candidates
         check_candidate_seat(blower, get_bearing(name), name)
+    with pytest.raises(InputError, match=r"its width 40.1 mm is larger than the axial room .*touchdown.0.axial_room"):
+        check_candidate_seat(blower, get_bearing("7208 DB").with_changes(spacer=4e-3 + 1e-4), "x")
 
 
 def test_the_file_reader_refuses_deep_nesting_in_one_line(tmp_path):

@@ -30,6 +30,11 @@ _RADIAL_ONLY = (math.inf, 1.0, 0.0, 1.0, 0.0)
 
 
 def _factors(bearing) -> tuple:
+    row = getattr(bearing, "row", None)
+    if row is not None:  # a matched pair: DB/DF as a double row, DT as its rows
+        table = cf.ANGULAR_CONTACT_FACTORS if bearing.arrangement == "DT" else cf.ANGULAR_CONTACT_PAIR_FACTORS
+        nearest = min(table, key=lambda a: abs(a - math.degrees(row.contact_angle)))
+        return table[nearest]
     if bearing.type == "four_point":
         return cf.FOUR_POINT_FACTORS
     if bearing.type == "angular_contact":
@@ -40,8 +45,28 @@ def _factors(bearing) -> tuple:
 
 
 def equivalent_load(bearing, radial: float, axial: float) -> float:
-    """ISO 281 dynamic equivalent load P = X Fr + Y Fa [N] of a bearing type."""
+    """ISO 281 dynamic equivalent load P = X Fr + Y Fa [N] of a bearing type or a matched pair."""
     return float(cf.equivalent_dynamic_load(abs(radial), abs(axial), _factors(bearing)))
+
+
+def _drop_fatigue(plane, drop_ds: xr.Dataset, k: int) -> dict:
+    """The drop's rainflow damage of plane k; a matched pair's rows as a series system of two bearings.
+
+    Each row is counted on its own rings; the set fails with its first row, so the rows' damages combine as
+    Lundberg-Palmgren ring damages do, D = (D_1^e + D_2^e)^(1/e) (:func:`auxbearing.core.fatigue.bearing_damage`).
+    """
+    t, speed = drop_ds.time.values, drop_ds.race_speed.isel(plane=k).values
+    inner, outer = drop_ds[f"stress_inner_{k}"].values, drop_ds[f"stress_outer_{k}"].values
+    bearing = plane.bearing
+    if plane.rows == 1:
+        return drop_damage(t, speed, inner, outer, bearing)
+    per = inner.shape[2] // plane.rows
+    rows = [drop_damage(t, speed, inner[:, :, j * per:(j + 1) * per], outer[:, :, j * per:(j + 1) * per], bearing)
+            for j in range(plane.rows)]
+    worst = max(range(plane.rows), key=lambda j: rows[j]["worst_contact"]["damage"])
+    contact = dict(rows[worst]["worst_contact"], pair=rows[worst]["worst_contact"]["pair"] + worst * per, row=worst)
+    return {"damage": float(cf.bearing_damage(rows[0]["damage"], rows[1]["damage"])), "worst_contact": contact,
+            "rows": rows}
 
 
 def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolling: list[tuple[float, float]]) -> dict:
@@ -64,14 +89,13 @@ def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolli
     bearing = plane.bearing
     out: dict = {}
     if f"stress_inner_{k}" in drop_ds:
-        fatigue = drop_damage(drop_ds.time.values, drop_ds.race_speed.isel(plane=k).values,
-                              drop_ds[f"stress_inner_{k}"].values, drop_ds[f"stress_outer_{k}"].values, bearing)
+        fatigue = _drop_fatigue(plane, drop_ds, k)
         out["drop_damage"] = float(fatigue["damage"])
         out["worst_contact"] = fatigue["worst_contact"]
     else:  # a drop too long to keep its ball arrays: count it as the coast-down does
         fatigue = None
         out["drop_damage"] = 0.0
-    rating = dynamic_load_rating(bearing)
+    rating = dynamic_load_rating(plane.unit)
     coast = 0.0
     for revolutions, load in overrolling:
         if load > 0.0 and revolutions > 0.0:

@@ -298,12 +298,14 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
         if lean or n * bs.cos_azimuth.size * bs.signs.size > MAX_BALL_SERIES:
             continue
         b = cm.N_ROTOR + k * cm.N_PLANE
-        disp = np.zeros((n, 5))
-        if plane.catches_axially:
-            disp[:, 0] = grid[:, b + cm.RZ]
-        disp[:, 1] = grid[:, b + cm.RX] - grid[:, b + cm.OX]
-        disp[:, 2] = grid[:, b + cm.RY] - grid[:, b + cm.OY]
-        states[k] = ballset_state(disp, bs, model.machine.ballset_clearance[k], resultant=False)
+        race = (grid[:, b + cm.RZ] if plane.catches_axially else np.zeros(n), grid[:, b + cm.RX] - grid[:, b + cm.OX],
+                grid[:, b + cm.RY] - grid[:, b + cm.OY])
+        rows = []
+        for row in range(plane.rows):  # a matched pair's rows side by side along the pair axis
+            disp = np.zeros((n, 5))
+            disp[:, 0], disp[:, 1], disp[:, 2] = cm.row_displacement.py_func(model.machine, k, row, *race)
+            rows.append(ballset_state(disp, bs, model.machine.ballset_clearance[k], resultant=False))
+        states[k] = rows[0] if len(rows) == 1 else _stack_rows(rows)
     diag = probes.series(grid, model.machine, not lean and len(states) < n_planes)[:, :n_planes]
     for i, name in enumerate(cm.DIAG_FIELDS):
         unit, long_name = _DIAG_SERIES[name]
@@ -328,6 +330,14 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
                           "corrected per docs/paper_notes.md as its planar case",
                     machine=json.dumps(to_jsonable(machine.describe())))
     return ds
+
+
+def _stack_rows(rows):
+    """The ball states of a matched pair's two rows as one, the rows' contact pairs side by side."""
+    first = rows[0]
+    return first._replace(**{name: np.concatenate([getattr(r, name) for r in rows], axis=2)
+                             for name in ("distance", "compression", "load", "contact_angle", "stress_inner",
+                                          "stress_outer")})
 
 
 def _support_stiffness(plane) -> float:
@@ -403,7 +413,7 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
         spun = np.nonzero(rolling)[0]
         angle, pressure = journal_pressure(plane, float(watch.peak[0, k]))
         planes.append({
-            "name": plane.name, "bearing": plane.bearing.name, "type": plane.bearing.type,
+            "name": plane.name, "bearing": plane.unit.name, "type": plane.unit.type,
             # peaks up to the end of the run, also of one that stopped at a limit or a budget: they are what the
             # model saw inside its range (the verdict says whether the run finished); a failed integration has none
             "peak_contact_force_N": float(watch.peak[0, k]) if seen else None,

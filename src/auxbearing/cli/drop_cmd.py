@@ -394,7 +394,7 @@ def machines_command(as_json):
         m = read_machine_file(name)
         rows.append({"name": name, "title": m.name, "orientation": m.orientation, "mass_kg": m.rotor.mass,
                      "speed_rpm": m.rotor.speed * 30.0 / math.pi,
-                     "planes": [{"name": p.name, "bearing": p.bearing.name,
+                     "planes": [{"name": p.name, "bearing": p.unit.name,
                                  "radial_clearance_mm": p.radial_clearance * 1e3,
                                  "axial": p.catches_axially, "mount": p.mount is not None} for p in m.planes],
                      "source": m.source})

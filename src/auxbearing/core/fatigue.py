@@ -70,6 +70,10 @@ ISO76_DENT_RATIO = 1e-4
 ANGULAR_CONTACT_FACTORS = {25: (0.68, 1.0, 0.0, 0.41, 0.87), 30: (0.80, 1.0, 0.0, 0.39, 0.76),
                            40: (1.14, 1.0, 0.0, 0.35, 0.57)}
 FOUR_POINT_FACTORS = (0.95, 1.0, 0.66, 0.6, 1.07)
+#: A matched pair back-to-back or face-to-face: the double-row factors of ISO 281 Table 3 for the set's Fr and
+#: Fa, as NSK CAT. No. E1102e lists them for DB and DF pairs (a tandem pair takes the single-row factors).
+ANGULAR_CONTACT_PAIR_FACTORS = {25: (0.68, 1.0, 0.92, 0.67, 1.41), 30: (0.80, 1.0, 0.78, 0.63, 1.24),
+                                40: (1.14, 1.0, 0.55, 0.57, 0.93)}
 
 
 def iso281_fc(gamma):

@@ -186,6 +186,10 @@ class Planes(NamedTuple):
     pitch_diameter: tuple  #: d_m of the bearing [m]
     lubricant_viscosity: tuple  #: kinematic viscosity of the bearing's oil [m^2/s]
     viscous_factor: tuple  #: Palmgren's f_0 of the bearing's load-free torque [-] (0: none)
+    rows: tuple  #: 1.0 for a single bearing, 2.0 for a matched pair (two identical rows on one race)
+    facing_a: tuple  #: s of the pair's first row: +1 carries the race's axial load along +z, -1 along -z
+    facing_b: tuple  #: s of the second row
+    row_push: tuple  #: axial displacement of each row into its balls in the clamped, unloaded pair [m]
 
 
 class Limits(NamedTuple):
@@ -283,6 +287,47 @@ def _friction(mu_fn, vx, vy, vz, v_eps):
 
 
 # ----------------------------------------------------------------------------- one plane
+@njit(cache=True, inline="always")
+def row_displacement(m, k, j, dz, dx, dy):
+    """Race displacement (axial, x, y) relative to the ring in the own coordinates of row j of plane k.
+
+    A matched pair (:mod:`auxbearing.bearings.duplex`: row maps M_k with the race tilt neglected, so the rows'
+    axial offsets from the set's centre drop out) turns a row that faces -z end for end, (dz, dx, dy) ->
+    (-dz, dx, -dy), and pushes each row its share of the preload into its balls. A single bearing is its own
+    row 0.
+    """
+    p = m.planes
+    if p.rows[k] <= 1.0:
+        return dz, dx, dy
+    s = p.facing_a[k] if j == 0 else p.facing_b[k]
+    return s * dz + p.row_push[k], dx, s * dy
+
+
+@njit(cache=True, inline="always")
+def _pair_reaction(k, dz, dx, dy, m, disp, force):
+    """Axial and radial force of both rows of a matched pair on the race [N], and their largest ball load.
+
+    Each row on the one ball-set kernel at its own displacement (:func:`row_displacement`); its force comes back
+    through the same map (M_k^T f_k), as the pair's statics do
+    (:func:`auxbearing.bearings.duplex_statics.set_reaction`).
+    """
+    p = m.planes
+    fa = fx = fy = 0.0
+    qmax = 0.0
+    for j in range(2):
+        s = p.facing_a[k] if j == 0 else p.facing_b[k]
+        for i in range(5):
+            disp[i] = 0.0
+            force[i] = 0.0
+        disp[0], disp[1], disp[2] = row_displacement(m, k, j, dz, dx, dy)
+        q, _ = accumulate(disp, m.ballsets[k], m.ballset_clearance[k], force, m.jac_stub, False, False)
+        fa += s * force[0]
+        fx += force[1]
+        fy += s * force[2]
+        qmax = max(qmax, q)
+    return fa, fx, fy, qmax
+
+
 @njit(cache=True, inline="always")
 def plane_forces(k, y, m, kin, q, out, diag):
     """Forces of touchdown plane k (module docstring).
@@ -390,13 +435,16 @@ def plane_forces(k, y, m, kin, q, out, diag):
     for i in range(5):
         disp[i] = 0.0
         force[i] = 0.0
-    disp[0] = rz
-    disp[1] = rx - ox_
-    disp[2] = ry - oy_
-    qmax, _ = accumulate(disp, m.ballsets[k], m.ballset_clearance[k], force, m.jac_stub, False, False)
-    fex, fey = force[1], force[2]
-    fez = force[0] if p.race_axial_free[k] > 0.0 else 0.0
-    diag[D_BFX], diag[D_BFY], diag[D_BFZ], diag[D_QMAX] = fex, fey, force[0], qmax
+    if p.rows[k] > 1.0:
+        faz, fex, fey, qmax = _pair_reaction(k, rz, rx - ox_, ry - oy_, m, disp, force)
+    else:
+        disp[0] = rz
+        disp[1] = rx - ox_
+        disp[2] = ry - oy_
+        qmax, _ = accumulate(disp, m.ballsets[k], m.ballset_clearance[k], force, m.jac_stub, False, False)
+        faz, fex, fey = force[0], force[1], force[2]
+    fez = faz if p.race_axial_free[k] > 0.0 else 0.0
+    diag[D_BFX], diag[D_BFY], diag[D_BFZ], diag[D_QMAX] = fex, fey, faz, qmax
     cb = p.ball_damping[k]
     relx, rely, relz = rvx - ovx, rvy - ovy, rvz
     dampx, dampy, dampz = -cb * relx, -cb * rely, -cb * relz

@@ -29,6 +29,7 @@ from auxbearing.core.machine import (
     Y,
     plane_forces_once,
     rotor_kinematics,
+    row_displacement,
 )
 
 
@@ -57,23 +58,22 @@ def ball_extremes(y, m, k):
     bs = m.ballsets[k]
     pd = m.ballset_clearance[k]
     lim = m.limits
-    zr = y[b + RZ]
-    dx = y[b + RX] - y[b + OX]
-    dy = y[b + RY] - y[b + OY]
     worst = 0.0
     use = 0.0
-    for j in range(bs.cos_azimuth.size):
-        radial = dx * bs.cos_azimuth[j] + dy * bs.sin_azimuth[j]
-        for i in range(bs.signs.size):
-            q, alpha, _, _, _, _, _, _ = pair(bs.signs[i], zr, radial, bs, pd, False)
-            if q <= 0.0:
-                continue
-            s_i, s_o = pair_stress(q, alpha, bs)
-            worst = max(worst, s_i, s_o)
-            a_i, a_o = pair_semi_major(q, alpha, bs)
-            x = abs(alpha)
-            use = max(use, (x + a_i / lim.groove_radius_inner[k]) / lim.shoulder_angle_inner[k],
-                      (x + a_o / lim.groove_radius_outer[k]) / lim.shoulder_angle_outer[k])
+    for row in range(2 if m.planes.rows[k] > 1.0 else 1):
+        zr, dx, dy = row_displacement(m, k, row, y[b + RZ], y[b + RX] - y[b + OX], y[b + RY] - y[b + OY])
+        for j in range(bs.cos_azimuth.size):
+            radial = dx * bs.cos_azimuth[j] + dy * bs.sin_azimuth[j]
+            for i in range(bs.signs.size):
+                q, alpha, _, _, _, _, _, _ = pair(bs.signs[i], zr, radial, bs, pd, False)
+                if q <= 0.0:
+                    continue
+                s_i, s_o = pair_stress(q, alpha, bs)
+                worst = max(worst, s_i, s_o)
+                a_i, a_o = pair_semi_major(q, alpha, bs)
+                x = abs(alpha)
+                use = max(use, (x + a_i / lim.groove_radius_inner[k]) / lim.shoulder_angle_inner[k],
+                          (x + a_o / lim.groove_radius_outer[k]) / lim.shoulder_angle_outer[k])
     return worst, use
 
 

@@ -190,7 +190,9 @@ def check_candidate_seat(design: Machine, bearing, where: str) -> None:
                              f"+ radial clearance {plane.radial_clearance * 1e3:.4g} mm); a candidate must take the "
                              "same journal, another bore is another rotor")
         for key, room in (("outside_diameter", "housing bore"), ("width", "axial room")):
-            limit = getattr(plane.bearing, key, None)
+            limit = getattr(plane.unit, key, None)
+            if key == "width" and plane.axial_room is not None:
+                limit = plane.axial_room
             if limit is None:
                 continue
             size = sizes[key]
@@ -198,9 +200,10 @@ def check_candidate_seat(design: Machine, bearing, where: str) -> None:
                 raise InputError(f"{where}: gives no {key}, so its fit in the {room} of {seat} "
                                  f"({limit * 1e3:g} mm) cannot be checked; give its {key}")
             if size > limit + SEAT_TOLERANCE:
+                given = (f"touchdown.{k}.axial_room" if key == "width" and plane.axial_room is not None
+                         else f"the design bearing {plane.unit.name}'s {key}")
                 raise InputError(f"{where}: its {key} {size * 1e3:g} mm is larger than the {room} of {seat}, "
-                                 f"{limit * 1e3:g} mm (the design bearing {plane.bearing.name}'s {key}): it does "
-                                 "not fit")
+                                 f"{limit * 1e3:g} mm ({given}): it does not fit")
 
 
 # ----------------------------------------------------------------------------- stiffness before the run

@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
+from auxbearing.bearings.duplex import DuplexSet
 from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import accept, read_table, unknown
@@ -98,11 +99,24 @@ class TouchdownPlane:
     emissivity: float = 0.0
     journal_pressure_limit: float = 4000e6
     defaults: tuple[str, ...] = ()  #: keys filled from geometry or defaults, for the report
+    #: a matched pair (duplex set) in the plane; ``bearing`` is then one of its two identical rows
+    bearing_set: DuplexSet | None = None
+    axial_room: float | None = None  #: axial length of the seat [m] (None: the bearing's width)
 
     @property
     def catches_axially(self) -> bool:
         """True when a collar meets the race face."""
         return self.axial_clearance is not None
+
+    @property
+    def unit(self) -> BearingGeometry | DuplexSet:
+        """The touchdown bearing as one unit: the matched set, or the single bearing."""
+        return self.bearing if self.bearing_set is None else self.bearing_set
+
+    @property
+    def rows(self) -> int:
+        """Rows of balls in the plane: 2 for a matched pair, else 1."""
+        return 1 if self.bearing_set is None else 2
 
 
 @dataclass(frozen=True)
@@ -264,7 +278,7 @@ class Machine:
 
 
 def _describe_plane(p: TouchdownPlane) -> dict:
-    out = {"name": p.name, "bearing": p.bearing.describe(), "position_mm": p.position * 1e3,
+    out = {"name": p.name, "bearing": p.unit.describe(), "position_mm": p.position * 1e3,
            "radial_clearance_mm": p.radial_clearance * 1e3, "journal_radius_mm": p.journal_radius * 1e3,
            "race_mass_kg": p.race_mass, "race_inertia_kg_m2": p.race_inertia,
            "line_stiffness_N_per_m10_9": p.line_stiffness, "line_damping_N_s_per_m": p.line_damping,
@@ -272,6 +286,8 @@ def _describe_plane(p: TouchdownPlane) -> dict:
            "sliding_friction": p.sliding_friction, "rolling_friction": p.rolling_friction,
            "slip_velocity_m_per_s": p.slip_velocity, "shoulder_height_mm": p.shoulder_height * 1e3,
            "misalignment_um": [p.misalignment[0] * 1e6, p.misalignment[1] * 1e6], "from_defaults": list(p.defaults)}
+    if p.axial_room is not None:
+        out["axial_room_mm"] = p.axial_room * 1e3
     if p.catches_axially:
         out.update(axial_clearance_mm=p.axial_clearance * 1e3, axial_direction=p.axial_direction,
                    face_stiffness_N_per_m=p.face_stiffness, face_damping_N_s_per_m=p.face_damping,
@@ -292,9 +308,16 @@ def _density(bearing: BearingGeometry) -> float:
     return bearing.ring_material.density or STEEL_DENSITY
 
 
-def make_plane(bearing: BearingGeometry, values: dict, name: str, index: int) -> TouchdownPlane:
-    """A plane from SI values of a ``[[touchdown]]`` table, every missing value derived (see the table)."""
+def make_plane(bearing: BearingGeometry | DuplexSet, values: dict, name: str, index: int) -> TouchdownPlane:
+    """A plane from SI values of a ``[[touchdown]]`` table, every missing value derived (see the table).
+
+    A matched pair's rows are each the one bearing its geometry comes from; the race (both inner rings and
+    the spacer between them, on one journal) is as wide as the set.
+    """
     where = f"touchdown.{index}."
+    bearing_set = None
+    if isinstance(bearing, DuplexSet):
+        bearing_set, bearing = bearing, bearing.row
     given = dict(values)
     filled: list[str] = []
 
@@ -319,7 +342,7 @@ def make_plane(bearing: BearingGeometry, values: dict, name: str, index: int) ->
         raise InputError.for_field(where + "journal_radius", f"{r * 1e3:g} mm",
                                    f"journal_radius + radial_clearance = {bore_radius * 1e3:g} mm must be below the "
                                    f"inner raceway radius {0.5e3 * bearing.inner_raceway_diameter:g} mm")
-    width = bearing.width
+    width = bearing.width if bearing_set is None else bearing_set.width
     race_mass, race_inertia = given.get("race_mass"), given.get("race_inertia")
     if race_mass is None or race_inertia is None:
         if width is None:
@@ -387,7 +410,8 @@ def make_plane(bearing: BearingGeometry, values: dict, name: str, index: int) ->
         lubricant_viscosity=value("lubricant_viscosity"), viscous_factor=value("viscous_factor"),
         housing_mass=given.get("housing_mass"), housing_to_ambient=given.get("housing_to_ambient"),
         journal_to_ambient=given.get("journal_to_ambient"), emissivity=value("emissivity"),
-        journal_pressure_limit=value("journal_pressure_limit"), defaults=tuple(dict.fromkeys(filled)), **face)
+        journal_pressure_limit=value("journal_pressure_limit"), defaults=tuple(dict.fromkeys(filled)),
+        bearing_set=bearing_set, axial_room=given.get("axial_room"), **face)
 
 
 # ----------------------------------------------------------------------------- reading files
@@ -443,10 +467,6 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                 raise InputError(str(err)) from None
         else:
             bearing = read_bearing_spec(_text(table, "bearing", where, ""), base, where + "bearing")
-        if not isinstance(bearing, BearingGeometry):
-            # a matched set's statics and ratings exist (auxbearing.bearings); its rows in the drop do not yet
-            raise InputError(f"{where}bearing = {table.get('bearing')!r}: a matched set (duplex pair) is not yet "
-                             "modelled in a machine; give one bearing (its statics and ratings: auxbearing bearings)")
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
         planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")

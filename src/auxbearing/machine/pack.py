@@ -68,6 +68,10 @@ def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
         face_stiffness=arr(lambda p: p.face_stiffness), face_damping=arr(lambda p: p.face_damping),
         face_friction=arr(lambda p: p.face_friction), face_radius=arr(lambda p: p.face_radius, 1.0),
         pitch_diameter=arr(lambda p: p.bearing.pitch_diameter, 1.0),
+        rows=arr(lambda p: p.rows, 1.0),
+        facing_a=arr(lambda p: p.bearing_set.row_facings[0] if p.bearing_set else 1.0, 1.0),
+        facing_b=arr(lambda p: p.bearing_set.row_facings[1] if p.bearing_set else 1.0, 1.0),
+        row_push=arr(lambda p: p.bearing_set.row_preload_displacement if p.bearing_set else 0.0),
         lubricant_viscosity=arr(lambda p: p.lubricant_viscosity), viscous_factor=arr(lambda p: p.viscous_factor),
     )
 

@@ -102,6 +102,10 @@ TOUCHDOWN: tuple[Param, ...] = (
     Param("touchdown", "shoulder_height", "length", None, "mm", "optional_positive",
           "Groove shoulder height above the groove bottom (both rings); default 0.25 x ball diameter",
           "ours: an assumption; give the maker's value"),
+    Param("touchdown", "axial_room", "length", None, "mm", "optional_positive",
+          "Axial length the seat offers a touchdown bearing; default the bearing's own width. A verify candidate "
+          "wider than it (a duplex pair in place of one bearing) does not fit",
+          "ours: the machine's drawing"),
     Param("touchdown", "lubricant_viscosity", "kinematic_viscosity", 0.0, "mm**2/s", "nonnegative",
           "Kinematic viscosity of the bearing's oil (base oil of a grease) for Palmgren's load-free torque",
           "Harris & Kotzalas 2007, Essential Concepts Ch. 10; 0: no load-free torque"),

@@ -40,7 +40,7 @@ def plot_machine(machine, ax=None) -> Figure:
                 ax.plot([z - width / 2, z + width / 2], [sign * (outer + 1.5)] * 2, color="tab:green", lw=3)
         if plane.catches_axially:
             ax.add_patch(Rectangle((z - width / 2 - 3.0, radius), 3.0, 0.6 * (bore - radius) + 2.0, color="tab:red"))
-        text = (f"{plane.name}\n{plane.bearing.name} ({plane.bearing.label})\ns = {plane.radial_clearance * 1e3:g} mm"
+        text = (f"{plane.name}\n{plane.unit.name} ({plane.unit.label})\ns = {plane.radial_clearance * 1e3:g} mm"
                 + (f", axial {plane.axial_clearance * 1e3:g} mm" if plane.catches_axially else "")
                 + (f"\nmount {plane.mount.mount_stiffness:.2g} N/m" if plane.mount is not None else "\nrigid housing"))
         ax.text(z, outer + 6.0, text, ha="center", va="bottom", fontsize=8)

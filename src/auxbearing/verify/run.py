@@ -150,7 +150,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         except InputError as err:
             raise InputError(f"candidate '{label}': {err}") from None
         # a candidate must fit the design's seat: same bore, no larger outside diameter or width
-        check_candidate_seat(design_machine, candidate.planes[0].bearing,
+        check_candidate_seat(design_machine, candidate.planes[0].unit,
                              f"--candidates = {label!r}" if from_option else f"candidate '{label}'")
 
     def say(text: str) -> None:
@@ -170,7 +170,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
                    "candidates": [label for label, _ in candidate_list], "quick": quick},
     }
-    ranked = sorted([(machine.planes[0].bearing.name + " (the design)", design), *others],
+    ranked = sorted([(machine.planes[0].unit.name + " (the design)", design), *others],
                     key=lambda item: ranking_key(item[1]["criteria"]))
     result["margins"] = MARGINS
     result["reason"] = _reason(design["criteria"])

@@ -1,0 +1,74 @@
+"""A matched pair in a touchdown plane: the drop's kernel against the pair's own statics (consistency checks).
+
+The machine kernel (auxbearing.core.machine) puts both rows of a duplex set on one race through the rows' maps
+of auxbearing.bearings.duplex with the race tilt neglected; at any race displacement its ball-set force on
+the race must be the statics' set reaction (auxbearing.bearings.duplex_statics.set_reaction) at the same
+displacement with no tilt, preload included. A drop and a short coast-down of the blower on 7208 DB pairs
+run through, with both rows' ball states and damage.
+"""
+
+import copy
+
+import numpy as np
+import pytest
+
+from auxbearing import get_bearing
+from auxbearing.analysis.coastdown import run_coastdown
+from auxbearing.analysis.drop import run_machine
+from auxbearing.bearings.duplex_statics import set_reaction
+from auxbearing.core import machine as cm
+from auxbearing.core.probes import plane_diagnostics
+from auxbearing.machine.files import machine_table
+from auxbearing.machine.model import machine_from_mapping
+from auxbearing.machine.pack import pack
+
+
+def _blower(bearing: str, duration: str = "0.05 s"):
+    data, _, base = machine_table("blower")
+    data = copy.deepcopy(data)
+    for key in ("criteria", "candidate"):
+        data.pop(key)
+    data["drop"]["duration"] = duration
+    for table in data["touchdown"]:
+        table["bearing"] = bearing
+    return machine_from_mapping(data, "blower", base)
+
+
+@pytest.mark.parametrize("name", ["7208 DB", "7208 DF", "7208 DT", "7208 DB heavy"])
+@pytest.mark.parametrize("u", [(0.0, 0.0, 0.0), (12e-6, 0.0, 0.0), (-9e-6, 4e-6, -7e-6), (2e-6, -15e-6, 3e-6)])
+def test_kernel_force_on_the_race_is_the_pair_reaction(name, u):
+    machine = _blower(name)
+    model = pack(machine)
+    y = model.y0.copy()
+    b = cm.N_ROTOR  # plane 0, the drive end, which catches axially
+    y[b + cm.RZ], y[b + cm.RX], y[b + cm.RY] = u
+    y[cm.Y] = -1e-3  # the journal well away from the race: only the balls act on it
+    diag = plane_diagnostics(y, model.machine, 0)
+    pair = get_bearing(name)
+    expected, _, _ = set_reaction(pair, np.array([u[0], u[1], u[2], 0.0, 0.0]), with_jac=False)
+    scale = max(1.0, float(np.abs(expected[:3]).max()))
+    assert diag[cm.D_BFZ] == pytest.approx(expected[0], abs=1e-9 * scale)
+    assert diag[cm.D_BFX] == pytest.approx(expected[1], abs=1e-9 * scale)
+    assert diag[cm.D_BFY] == pytest.approx(expected[2], abs=1e-9 * scale)
+
+
+def test_a_pair_plane_is_described_as_the_pair():
+    plane = _blower("7208 DB").planes[0]
+    assert plane.rows == 2 and plane.unit.name == "7208 DB" and plane.bearing.name == "7208"
+    assert plane.unit.width == pytest.approx(2.0 * plane.bearing.width)
+
+
+@pytest.mark.slow
+def test_drop_and_coastdown_on_pairs():
+    drop = run_machine(_blower("7208 DB"))
+    assert drop.summary["verdict"] == "ok"
+    single = run_machine(_blower("7208")).summary["planes"][0]
+    pair = drop.summary["planes"][0]
+    assert pair["bearing"] == "7208 DB"
+    # both rows' contacts in the ball arrays: one 7208 row has 15 balls and one pair of contacts per ball
+    assert drop.dataset["stress_inner_0"].shape[1:] == (15, 2)
+    assert pair["peak_ball_stress_MPa"] > 0.0 and single["peak_ball_stress_MPa"] > 0.0
+    run = run_coastdown(_blower("7208 DB"), duration=0.5)
+    assert run.summary["verdict"] == "ok"
+    life = run.life[0]
+    assert life["damage_per_drop"] > 0.0 and 0 <= life["worst_contact"]["row"] <= 1
