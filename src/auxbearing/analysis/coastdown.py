@@ -16,8 +16,10 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   T0 + c1 Omega + c2 Omega^2 and the process torque; the temperatures follow their networks. A stretch ends
   when the speed has fallen by ``coastdown.speed_step`` or a clearance has moved by :data:`CLEARANCE_STEP`,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
-  :data:`SETTLE_TIME` of it after a stretch is run and booked but not judged, since the stretch's jump in
-  speeds and clearances still rings in it.
+  ``coastdown.settle_time`` of it after a stretch is run and booked but not judged, since the stretch's jump
+  in speeds and clearances still rings in it (measured on the blower: the windows just after a stretch carried
+  2-6 % less load than full dynamics at the same speed, so stretches that start from them carry 4-5 % too
+  little damage; 150 ms of settling brings every non-chaotic example within 1 %, at 2.5 times the cost).
 
 Heat goes into one lumped network per plane (:mod:`auxbearing.analysis.thermal`; journal, inner race, balls,
 outer race, housing, ambient): contact heat split between journal and race by Charron's partition,
@@ -74,13 +76,6 @@ MAX_STRETCH = 60.0
 SHAFT_CONDUCTIVITY = 60.5
 #: Shortest shaft length from a plane to the rotor body held at ambient [m] (a plane at the mass centre).
 MIN_SHAFT_LENGTH = 0.05
-#: Full dynamics after a reduced stretch that no decision to start another one looks at [s]. A stretch moves the
-#: speeds and the clearances at once, and the motion takes a while to forget it: on the shipped blower the
-#: windows just after a stretch carried 2-6 % less load than full dynamics at the same speed, and the stretches
-#: that started from them 4-5 % too little damage. Measured over 30 s against full dynamics, damage per drop on
-#: the blower and its candidates and the vertical machine: within 2.6 % with 80 ms of settling, within 1 % with
-#: 150 ms (a 1e-6 rad change of the unbalance phase moves full dynamics' own damage by up to 0.6 % there).
-SETTLE_TIME = 0.15
 OK = "ok"
 
 
@@ -442,7 +437,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         reduced_time += stretch.duration
         counts["stretches"] += 1
         checked = []  # the next windows start from a new state: they are judged on their own
-        settling = math.ceil(SETTLE_TIME / max(coast.check_window, session.window) - 1e-9)
+        settling = math.ceil(coast.settle_time / max(coast.check_window, session.window) - 1e-9)
         verdict, reason = limits.update(temps, session.t)
         record(1)
         if progress is not None:

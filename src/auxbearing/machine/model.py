@@ -178,6 +178,7 @@ class Coastdown:
     speed_step: float = default("coastdown", "speed_step")
     max_steps: float = default("coastdown", "max_steps")
     check_window: float = default("coastdown", "check_window")
+    settle_time: float = default("coastdown", "settle_time")
     vacuum: bool = False
 
     def __post_init__(self) -> None:
@@ -222,7 +223,7 @@ class Machine:
         if not self.planes:
             raise InputError.for_field("touchdown", 0, "give at least one [[touchdown]] table")
         if self.tilt_free and self.rotor.transverse_inertia is None:
-            raise InputError("rotor.transverse_inertia: missing; a rotor on two touchdown planes needs it")
+            raise InputError("rotor.transverse_inertia: missing; a rotor on two or more touchdown planes needs it")
         if self.orientation == "vertical" and not any(p.catches_axially for p in self.planes):
             raise InputError.for_field("machine.orientation", "vertical",
                                        "a vertical rotor rests on an axial touchdown: give axial_clearance on a plane")
