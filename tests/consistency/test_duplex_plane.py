@@ -72,3 +72,24 @@ def test_drop_and_coastdown_on_pairs():
     assert run.summary["verdict"] == "ok"
     life = run.life[0]
     assert life["damage_per_drop"] > 0.0 and 0 <= life["worst_contact"]["row"] <= 1
+
+
+def test_preload_given_as_a_key_of_the_plane_or_the_candidate():
+    from auxbearing.common.errors import InputError
+    from auxbearing.machine.judging import candidate_tables
+
+    data, _, base = machine_table("blower")
+    data = copy.deepcopy(data)
+    for table in data["touchdown"]:
+        table.update(bearing="7208 DB", preload="500 N")
+    plane = machine_from_mapping(data, "blower", base).planes[0]
+    assert plane.unit.preload_force == pytest.approx(500.0) and plane.unit.name == "7208 DB 500 N"
+    data["touchdown"][0]["preload"] = "lite"
+    with pytest.raises(InputError, match=r"^touchdown.0.preload = 'lite': cannot read it"):
+        machine_from_mapping(data, "blower", base)
+    data["touchdown"][0].update(bearing="QJ208", preload="light")
+    with pytest.raises(InputError, match=r"^touchdown.0.preload = 'light': only a matched pair takes a preload"):
+        machine_from_mapping(data, "blower", base)
+    (label, tables), = candidate_tables(data, [{"name": "pair", "bearing": "7208 DB", "preload": "heavy"}])
+    assert label == "pair" and {t["preload"] for t in tables["touchdown"]} == {"heavy"}
+    assert machine_from_mapping(tables, "blower", base).planes[1].unit.preload == "heavy"

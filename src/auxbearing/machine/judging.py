@@ -104,14 +104,16 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
     out = []
     for i, spec in enumerate(specs):
         if isinstance(spec, dict):
-            unknown = [k for k in spec if k not in ("name", "bearing")]
+            unknown = [k for k in spec if k not in ("name", "bearing", "preload")]
             if unknown:
                 raise InputError.for_field(f"candidate.{i}.{unknown[0]}", spec[unknown[0]],
-                                           "unknown key; allowed keys: name, bearing")
+                                           "unknown key; allowed keys: name, bearing, preload")
             if "bearing" not in spec:
                 raise InputError(f"candidate.{i}.bearing: missing; a [[candidate]] names its bearing")
             bearing, label = spec["bearing"], str(spec.get("name", spec["bearing"]))
+            preload = spec.get("preload")
         else:
+            preload = None
             bearing, label = str(spec).strip(), str(spec).strip()
             if not bearing:
                 raise InputError.for_field("--candidates", spec, "an empty name in the list")
@@ -119,6 +121,9 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
         tables = copy.deepcopy(data)
         for plane in tables["touchdown"]:
             plane["bearing"] = bearing
+            plane.pop("preload", None)  # the design's preload is not the candidate's
+            if preload is not None:
+                plane["preload"] = preload
             for derived in ("race_mass", "race_inertia", "line_stiffness", "face_stiffness", "face_radius"):
                 plane.pop(derived, None)  # follow the new bearing
         out.append((label, tables))

@@ -423,6 +423,21 @@ def _text(table: dict, key: str, where: str, fallback: str) -> str:
     return value.strip()
 
 
+def with_preload(bearing, preload, field: str) -> DuplexSet:
+    """A matched pair with its preload given apart from its name (a class, a force or an axial offset)."""
+    from auxbearing.bearings.duplex import duplex_set
+
+    if not isinstance(bearing, DuplexSet):
+        raise InputError.for_field(field, preload, f"only a matched pair takes a preload ({bearing.name} is one "
+                                   "bearing; name a pair such as '7208 DB')")
+    text = str(preload).strip()
+    try:
+        return duplex_set(bearing.row, bearing.arrangement, preload=text, spacer=bearing.spacer,
+                          name=f"{bearing.row.name} {bearing.arrangement} {text}")
+    except InputError as err:
+        raise InputError(f"{field} = {preload!r}: {str(err).split(': ', 1)[-1]}") from None
+
+
 def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
     """A machine from the tables of a machine TOML file (values with units); every key checked first.
 
@@ -468,6 +483,8 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                 raise InputError(str(err)) from None
         else:
             bearing = read_bearing_spec(_text(table, "bearing", where, ""), base, where + "bearing")
+        if "preload" in table:
+            bearing = with_preload(bearing, table["preload"], where + "preload")
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
         planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")

@@ -125,7 +125,7 @@ TOUCHDOWN: tuple[Param, ...] = (
           "Emissivity of the housing for radiation to ambient", "ours: none unless given"),
 )
 #: Keys of ``[[touchdown]]`` that are text, not quantities.
-TOUCHDOWN_TEXT = ("name", "bearing", "axial_direction")
+TOUCHDOWN_TEXT = ("name", "bearing", "axial_direction", "preload")
 AXIAL_DIRECTIONS = ("both", "+z", "-z")
 
 SIMULATION: tuple[Param, ...] = (

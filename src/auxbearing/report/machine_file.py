@@ -41,13 +41,17 @@ This page is generated: `python -m auxbearing.report.machine_file > docs/machine
 {life_row}
 | `[criteria]` | the acceptance values `verify` judges against |
 | `[verify]` | the cases and the campaign of `verify` |
-| `[[candidate]]` | bearings for the same seats (same bore, no larger outside diameter or width): `name`, `bearing` |
+| `[[candidate]]` | bearings for the same seats (same bore, no larger outside diameter, width within `axial_room`): \
+`name`, `bearing`, `preload` |
 | `[campaign]` | a Monte Carlo campaign over this machine (`auxbearing campaign --config`; keys below) |
 
 In `[[touchdown]]`, `bearing` is a catalogue name (`auxbearing bearings`), the path of a bearing TOML
 file (relative to the machine file) or an inline table with the keys of a bearing file
-(`examples/my_bearing.toml`). A default written as "derived" is computed from the bearing or the rotor
-and stated in the reports.
+(`examples/my_bearing.toml`). A matched pair of angular-contact bearings is named as makers write it
+(`"7208 DB"`, `"7208 DF"`, `"7208 DT"`); its `preload` is `light`, `medium` or `heavy` (this project's classes:
+1, 2 and 4 % of a row's C0), a force (`"500 N"`) or an axial offset (`"8 um"`), given in the name
+(`"7208 DB medium"`) or as the key `preload`. A default written as "derived" is computed from the bearing
+or the rotor and stated in the reports.
 """
 
 
