@@ -66,7 +66,7 @@ def test_drop_and_coastdown_on_pairs():
     pair = drop.summary["planes"][0]
     assert pair["bearing"] == "7208 DB"
     # both rows' contacts in the ball arrays: one 7208 row has 15 balls and one pair of contacts per ball
-    assert drop.dataset["stress_inner_0"].shape[1:] == (15, 2)
+    assert drop.dataset["stress_inner"].sizes["ball"] == 15 and drop.dataset["stress_inner"].sizes["pair"] == 2
     assert pair["peak_ball_stress_MPa"] > 0.0 and single["peak_ball_stress_MPa"] > 0.0
     run = run_coastdown(_blower("7208 DB"), duration=0.5)
     assert run.summary["verdict"] == "ok"
@@ -93,3 +93,22 @@ def test_preload_given_as_a_key_of_the_plane_or_the_candidate():
     (label, tables), = candidate_tables(data, [{"name": "pair", "bearing": "7208 DB", "preload": "heavy"}])
     assert label == "pair" and {t["preload"] for t in tables["touchdown"]} == {"heavy"}
     assert machine_from_mapping(tables, "blower", base).planes[1].unit.preload == "heavy"
+
+
+def test_ball_arrays_of_planes_with_different_bearings_share_one_grid():
+    """A plane dimension for the ball arrays: a QJ208 plane (11 balls x 2 pairs) beside a 6208 plane (9 x 1),
+    the smaller one padded with NaN and cut back to its own size by plane_ball_arrays."""
+    from auxbearing.analysis.drop import plane_ball_arrays
+
+    data, _, base = machine_table("blower")
+    data = copy.deepcopy(data)
+    for key in ("criteria", "candidate"):
+        data.pop(key)
+    data["drop"]["duration"] = "5 ms"
+    data["touchdown"][1]["bearing"] = "6208"
+    ds = run_machine(machine_from_mapping(data, "blower", base)).dataset
+    assert ds.stress_inner.dims == ("time", "plane", "ball", "pair")
+    assert (ds.sizes["ball"], ds.sizes["pair"]) == (11, 2)
+    own = plane_ball_arrays(ds, 1, 9, 1)
+    assert own["stress_outer"].shape == (ds.sizes["time"], 9, 1) and np.isfinite(own["stress_outer"]).all()
+    assert np.isnan(ds.stress_inner.values[:, 1, 9:, :]).all() and np.isnan(ds.stress_inner.values[:, 1, :, 1]).all()

@@ -21,6 +21,7 @@ import math
 import numpy as np
 import xarray as xr
 
+from auxbearing.analysis.drop import plane_ball_arrays
 from auxbearing.analysis.life import dent_per_drop, drop_damage, dynamic_load_rating, governing
 from auxbearing.core import fatigue as cf
 
@@ -56,8 +57,9 @@ def _drop_fatigue(plane, drop_ds: xr.Dataset, k: int) -> dict:
     Lundberg-Palmgren ring damages do, D = (D_1^e + D_2^e)^(1/e) (:func:`auxbearing.core.fatigue.bearing_damage`).
     """
     t, speed = drop_ds.time.values, drop_ds.race_speed.isel(plane=k).values
-    inner, outer = drop_ds[f"stress_inner_{k}"].values, drop_ds[f"stress_outer_{k}"].values
     bearing = plane.bearing
+    arrays = plane_ball_arrays(drop_ds, k, bearing.ball_count, bearing.pairs_per_ball * plane.rows)
+    inner, outer = arrays["stress_inner"], arrays["stress_outer"]
     if plane.rows == 1:
         return drop_damage(t, speed, inner, outer, bearing)
     per = inner.shape[2] // plane.rows
@@ -78,8 +80,8 @@ def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolli
     k : int
         Plane index.
     drop_ds : xarray.Dataset
-        The drop's time series (:func:`auxbearing.analysis.drop.run_machine`), with ``stress_inner_k``,
-        ``stress_outer_k`` over (time, ball, pair).
+        The drop's time series (:func:`auxbearing.analysis.drop.run_machine`), with ``stress_inner`` and
+        ``stress_outer`` over (time, plane, ball, pair).
     drop_plane : dict
         The drop summary's entry of the plane (its ``peak_ball_load_N``).
     overrolling : list of (revolutions, equivalent load [N])
@@ -88,7 +90,7 @@ def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolli
     plane = machine.planes[k]
     bearing = plane.bearing
     out: dict = {}
-    if f"stress_inner_{k}" in drop_ds:
+    if plane_ball_arrays(drop_ds, k, 1, 1) is not None:
         fatigue = _drop_fatigue(plane, drop_ds, k)
         out["drop_damage"] = float(fatigue["damage"])
         out["worst_contact"] = fatigue["worst_contact"]

@@ -318,12 +318,21 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
                                    {"units": "Pa", "long_name": "Hertz max stress of the most loaded ball contact"})
     coords = {"time": ("time", t, {"units": "s", "long_name": "Time since the drop"}),
               "plane": ("plane", [p.name for p in machine.planes])}
-    for k, st in states.items():
-        plane = machine.planes[k]
-        dims = ("time", f"ball_{k}", f"pair_{k}")
-        data[f"ball_load_{k}"] = (dims, st.load, {"units": "N", "long_name": f"Contact-pair load, {plane.name}"})
-        for race, values in (("inner", st.stress_inner), ("outer", st.stress_outer)):
-            data[f"stress_{race}_{k}"] = (dims, values, {"units": "Pa", "long_name": f"Hertz max stress, {race} race"})
+    if states:
+        # every plane's balls on one (time, plane, ball, pair) grid, NaN where a plane has fewer balls or pairs
+        # (a matched pair's two rows sit side by side along pair) or kept none
+        balls = max(st.load.shape[1] for st in states.values())
+        pairs = max(st.load.shape[2] for st in states.values())
+        arrays = {name: np.full((n, n_planes, balls, pairs), np.nan)
+                  for name in ("load", "stress_inner", "stress_outer")}
+        for k, st in states.items():
+            for name, values in arrays.items():
+                values[:, k, :st.load.shape[1], :st.load.shape[2]] = getattr(st, name)
+        dims = ("time", "plane", "ball", "pair")
+        data["ball_load"] = (dims, arrays["load"], {"units": "N", "long_name": "Contact-pair load"})
+        for race in ("inner", "outer"):
+            data[f"stress_{race}"] = (dims, arrays[f"stress_{race}"],
+                                      {"units": "Pa", "long_name": f"Hertz max stress, {race} race"})
     ds = xr.Dataset(data, coords=coords)
     ds.attrs.update(title=f"Touchdown of {machine.name}", auxbearing_version=__version__,
                     model="rigid rotor on touchdown planes (auxbearing.core.machine); source paper Sec. II.D "
@@ -486,12 +495,20 @@ def _stop_sentence(verdict: str, where: str, t: float, value: float, machine: Ma
 def planar_view(ds: xr.Dataset) -> xr.Dataset:
     """A one-plane run's Dataset without the plane dimension.
 
-    Per-plane variables are over time only; the ball arrays become ``ball_load``, ``stress_inner`` and
-    ``stress_outer`` over (time, ball, pair).
+    Per-plane variables are over time only; the ball arrays ``ball_load``, ``stress_inner`` and ``stress_outer``
+    over (time, ball, pair).
     """
     out = ds.isel(plane=0, drop=True)
     out.attrs["plane_name"] = str(ds.plane.values[0])
-    names = {f"{base}_0": base for base in ("ball_load", "stress_inner", "stress_outer") if f"{base}_0" in out}
-    if names:
-        out = out.rename(names).rename_dims({"ball_0": "ball", "pair_0": "pair"})
     return out
+
+
+def plane_ball_arrays(ds: xr.Dataset, k: int, balls: int, pairs: int) -> dict | None:
+    """Plane k's ball arrays (``ball_load``, ``stress_inner``, ``stress_outer``) over (time, ball, pair).
+
+    Cut to the plane's own ``balls`` and ``pairs`` (a run pads every plane to the largest); None when the run
+    kept none for it.
+    """
+    if "stress_inner" not in ds or not np.isfinite(ds.stress_inner.values[:1, k]).any():
+        return None
+    return {name: ds[name].values[:, k, :balls, :pairs] for name in ("ball_load", "stress_inner", "stress_outer")}
