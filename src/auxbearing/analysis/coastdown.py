@@ -106,14 +106,11 @@ def plane_network(machine: Machine, k: int, contact_load: float):
 
 
 def _static_share(machine: Machine, k: int) -> float:
-    """The weight a plane carries at rest [N] (lever rule), for the contact sizes of its network."""
+    """The weight a plane carries at rest [N] (:meth:`Machine.rest_share`), for the contact sizes of its network."""
     m = machine.rotor.mass * machine.simulation.gravity
-    planes = machine.planes
     if machine.orientation == "vertical":
-        return m if planes[k].catches_axially else 0.0
-    if len(planes) == 1:
-        return m
-    return m * abs(planes[1 - k].position) / abs(planes[1].position - planes[0].position)
+        return m if machine.planes[k].catches_axially else 0.0
+    return m * machine.rest_share(k)
 
 
 def _heat_per_node(network, contact: float, bearing: float, mount: float) -> np.ndarray:

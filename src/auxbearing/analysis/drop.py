@@ -370,27 +370,8 @@ def _support_stiffness(plane) -> float:
 
 
 def _plane_mass(machine: Machine, k: int) -> float:
-    """Mass a plane carries at rest [kg], for the whirl's natural frequency: its race and its share of the rotor.
-
-    Two planes share the rotor by the lever rule. With more, the rotor rests on the two that bracket its mass
-    centre (or the two nearest it, when all lie on one side), which carry it by the lever rule; the others
-    carry their race alone (the statically indeterminate split is not this estimate's business).
-    """
-    planes = machine.planes
-    m = machine.rotor.mass
-    if len(planes) == 1:
-        return m + planes[0].race_mass
-    below = [j for j, p in enumerate(planes) if p.position <= 0.0]
-    above = [j for j, p in enumerate(planes) if p.position > 0.0]
-    if below and above:
-        pair = (max(below, key=lambda j: planes[j].position), min(above, key=lambda j: planes[j].position))
-    else:
-        pair = tuple(sorted(range(len(planes)), key=lambda j: abs(planes[j].position))[:2])
-    if k not in pair:
-        return planes[k].race_mass
-    other = pair[1] if k == pair[0] else pair[0]
-    share = abs(planes[other].position) / abs(planes[pair[1]].position - planes[pair[0]].position)
-    return m * share + planes[k].race_mass  # lever rule: the other plane's arm
+    """Mass a plane carries at rest [kg], for the whirl's natural frequency: its race and its share of the rotor."""
+    return machine.rotor.mass * machine.rest_share(k) + machine.planes[k].race_mass
 
 
 def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration: float) -> dict:

@@ -240,6 +240,28 @@ class Machine:
         """Two planes or more: the rotor tilts (one plane is the planar rotor of the source paper)."""
         return len(self.planes) >= 2
 
+    def rest_share(self, k: int) -> float:
+        """Share of the rotor's weight plane k carries at rest, horizontal (estimates of contact sizes and modes).
+
+        Two planes share it by the lever rule (an overhung rotor loads the near plane by more than its weight).
+        With more, the rotor rests on the two planes that bracket its mass centre (or the two nearest it, when
+        all lie on one side), by the lever rule; the others carry none (the statically indeterminate split is
+        not these estimates' business).
+        """
+        planes = self.planes
+        if len(planes) == 1:
+            return 1.0
+        below = [j for j, p in enumerate(planes) if p.position <= 0.0]
+        above = [j for j, p in enumerate(planes) if p.position > 0.0]
+        if below and above:
+            pair = (max(below, key=lambda j: planes[j].position), min(above, key=lambda j: planes[j].position))
+        else:
+            pair = tuple(sorted(range(len(planes)), key=lambda j: abs(planes[j].position))[:2])
+        if k not in pair:
+            return 0.0
+        other = pair[1] if k == pair[0] else pair[0]
+        return abs(planes[other].position) / abs(planes[pair[1]].position - planes[pair[0]].position)
+
     @property
     def axial_free(self) -> bool:
         """The rotor moves axially when a plane catches axially."""
