@@ -62,8 +62,8 @@ def expected_damage(b, revs, radial, rows=None):
 def test_constant_rated_load_gives_n_over_l10(name):
     b, t, speed, s, radial = stribeck_drop(name)
     r = drop_damage(t, speed, s["inner"], s["outer"], b, ball_angles="cage")
-    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial), rel=0.01)
-    assert r["drops_to_failure"] == pytest.approx(1.0 / r["damage"])
+    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial), rel=0.01, abs=0.0)
+    assert r["drops_to_failure"] == pytest.approx(1.0 / r["damage"], abs=0.0)
     assert r["race_revolutions"] == pytest.approx(20.0)
 
 
@@ -71,19 +71,19 @@ def test_constant_rated_load_gives_n_over_l10(name):
 def test_finer_points_converge_to_n_over_l10():
     b, t, speed, s, radial = stribeck_drop("209")
     r = drop_damage(t, speed, s["inner"], s["outer"], b, ball_angles="cage", elements=4000)
-    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial), rel=0.002)
+    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial), rel=0.002, abs=0.0)
 
 
 def test_fixed_stations_carried_by_nearest_ball():
     b, t, speed, s, radial = stribeck_drop("209", mode="stations")
     r = drop_damage(t, speed, s["inner"], s["outer"], b, ball_angles="stations")
-    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial), rel=0.01)
+    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial), rel=0.01, abs=0.0)
 
 
 def test_four_point_with_one_pair_loaded_is_a_single_row_bearing():
     b, t, speed, s, radial = stribeck_drop("QJ202", pairs_loaded=1)
     r = drop_damage(t, speed, s["inner"], s["outer"], b, ball_angles="cage")
-    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial, rows=1), rel=0.01)
+    assert r["damage"] == pytest.approx(expected_damage(b, 20, radial, rows=1), rel=0.01, abs=0.0)
     assert r["worst_contact"]["pair"] == 0
     assert np.all(r["point_damage"]["inner"][1] == 0.0)
 
@@ -97,9 +97,9 @@ def test_uniform_load_gives_lundberg_palmgren_ring_lives():
     s = {race: np.full((t.size, b.ball_count, 1), c[race]["stress_coefficient"] * q ** (1 / 3)) for race in c}
     r = drop_damage(t, np.full_like(t, 2 * np.pi), s["inner"], s["outer"], b, ball_angles="cage")
     lives = [(c[race]["capacity_load"] / q) ** 3 * cf.RATING_REVOLUTIONS for race in ("inner", "outer")]
-    assert r["damage_inner"] == pytest.approx(10.0 / lives[0], rel=0.01)
-    assert r["damage_outer"] == pytest.approx(10.0 / lives[1], rel=0.01)
-    assert r["damage"] == pytest.approx(float(cf.bearing_damage(10.0 / lives[0], 10.0 / lives[1])), rel=0.01)
+    assert r["damage_inner"] == pytest.approx(10.0 / lives[0], rel=0.01, abs=0.0)
+    assert r["damage_outer"] == pytest.approx(10.0 / lives[1], rel=0.01, abs=0.0)
+    assert r["damage"] == pytest.approx(float(cf.bearing_damage(10.0 / lives[0], 10.0 / lives[1])), rel=0.01, abs=0.0)
 
 
 @pytest.mark.parametrize("exponent", [9.0, 12.0])
@@ -121,11 +121,11 @@ def test_standing_bouncing_ball_charges_one_point_with_its_rainflow_cycles():
     cyc = count_cycles(np.r_[0.0, bounce, 0.0])
     point = np.sum(cyc["counts"] * cf.cycle_damage(cyc["ranges"], c["inner"]["capacity_stress"],
                                                    c["inner"]["capacity_cycles"]))
-    assert r["worst_point"]["damage"] == pytest.approx(point, rel=1e-12)
+    assert r["worst_point"]["damage"] == pytest.approx(point, rel=1e-12, abs=0.0)
     assert np.count_nonzero(r["point_damage"]["inner"]) == 1
     assert (r["worst_contact"]["race"], r["worst_contact"]["ball"]) == ("inner", 3)
     n = r["elements"]["inner"]
-    assert r["damage"] == pytest.approx(point * n ** (-1.0 / cf.WEIBULL_SLOPE), rel=1e-12)
+    assert r["damage"] == pytest.approx(point * n ** (-1.0 / cf.WEIBULL_SLOPE), rel=1e-12, abs=0.0)
     peak = drop_damage(t, np.zeros_like(t), s, np.zeros_like(s), b, ball_angles="cage", cycle_stress="peak")
     assert peak["damage"] > r["damage"]
 
