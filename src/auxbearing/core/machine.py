@@ -303,9 +303,12 @@ def row_displacement(m, k, j, dz, dx, dy):
     return s * dz + p.row_push[k], dx, s * dy
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _pair_reaction(k, dz, dx, dy, m, disp, force):
     """Axial and radial force of both rows of a matched pair on the race [N], and their largest ball load.
+
+    Called, not inlined: the ball-set kernel inlined twice more into every right-hand side made each cold
+    compile longer for the single bearings that never take this branch.
 
     Each row on the one ball-set kernel at its own displacement (:func:`row_displacement`); its force comes back
     through the same map (M_k^T f_k), as the pair's statics do
