@@ -13,7 +13,7 @@ import pytest
 from click.testing import CliRunner
 
 from auxbearing.cli.main import cli
-from tests.browser import needs_chromium, probe_report
+from tests.browser import needs_chromium, probe_report, unreadable_numbers
 
 
 def _run(*args):
@@ -98,6 +98,8 @@ def test_verify_report_loads_every_figure_and_shows_no_paper_number(blower_verif
     assert data["loaded"] == data["images"]
     assert data["sections"] >= 8
     assert data["empty"] == []
+    # every number formatted for a person, every input quantity with its unit
+    assert unreadable_numbers(html) == []
     # a user's machine: nothing of the source paper's reproduction (claims, its bearings, its figures)
     for text in ("claim", "QJ202", "7202", "Sun et al", "Fig. "):
         assert text not in html

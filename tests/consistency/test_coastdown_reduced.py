@@ -48,10 +48,11 @@ CASES = ["paper_rig", "paper_rig_two_planes", "blower", "blower:7208", "blower:6
 SPEED_TOLERANCE = {"paper_rig": 0.05, "paper_rig_two_planes": 0.05}
 #: Damage per drop of the blower's non-drive end over the first 2 s: the two stretches there carry nine tenths
 #: of the revolutions, and their load comes from the few windows after the drop, on a plane loaded at a
-#: third of the drive end. Measured: blower +16.5 %, with the 7208 +26.5 %, with the 6208 +13.1 % (the drive
-#: ends +1.5, +2.0 and +0.2 %); over 30 s the same planes are -4.1, +3.5 and +2.5 % (closing note of the
-#: coast-down issue), so these bounds hold the first seconds to what they are, not to the 2 % target.
-DAMAGE_TOLERANCE = {("blower", 1): 0.20, ("blower:7208", 1): 0.30, ("blower:6208", 1): 0.16}
+#: third of the drive end. Measured (contacts carried across the clearance steps): blower +14.1 %, with the
+#: 7208 +29.4 %, with the 6208 +12.9 % (the drive ends +1.3, +1.2 and +0.2 %); over 30 s the same planes are
+#: -2.2, +0.8 and +2.9 % (closing note of the coast-down issue), so these bounds hold the first seconds to
+#: what they are, not to the 2 % target.
+DAMAGE_TOLERANCE = {("blower", 1): 0.18, ("blower:7208", 1): 0.33, ("blower:6208", 1): 0.16}
 
 
 @pytest.mark.slow

@@ -13,8 +13,16 @@ def test_a_long_step_is_named_again_while_it_reports_nothing(capsys):
         time.sleep(0.4)
     lines = [ln for ln in capsys.readouterr().err.splitlines() if ln]
     assert len(lines) >= 3, lines
-    assert all(ln.startswith("verify demo: 25 % design: campaign of 128 drops (") and ln.endswith(" s)")
+    assert all(ln.startswith("verify demo: 25 % design: campaign of 128 drops (") and ln.endswith(" s left)")
                for ln in lines), lines
+
+
+def test_time_left_is_the_pace_so_far_once_a_twentieth_is_done():
+    from auxbearing.cli.common import _time_left
+
+    assert _time_left(0.25, 30.0) == ", about 90 s left"
+    assert _time_left(0.1, 60.0) == ", about 9 min left"
+    assert _time_left(0.01, 60.0) == "" and _time_left(1.0, 60.0) == ""
 
 
 def test_quiet_prints_nothing(capsys):

@@ -119,6 +119,19 @@ def echo_json(obj: object) -> None:
     click.echo(dumps(obj))
 
 
+def _time_left(fraction: float, elapsed: float) -> str:
+    """", about N s left": the time left at the mean pace so far, once a twentieth of the work is done.
+
+    The fraction is of work whose size is known (the speed a coast-down still has to lose, the drops a campaign
+    still has to run), so the pace is that of the work itself; a coast-down's slow end takes longer per share
+    than its start, and the estimate says "about".
+    """
+    if not 0.05 <= fraction < 1.0 or elapsed <= 0.0:
+        return ""
+    left = elapsed * (1.0 - fraction) / fraction
+    return f", about {left:.0f} s left" if left < 120.0 else f", about {left / 60.0:.0f} min left"
+
+
 class ProgressReporter:
     """Progress on stderr: a bar on a terminal, otherwise a plain line at least every :attr:`every` seconds.
 
@@ -151,10 +164,11 @@ class ProgressReporter:
             return self
         if self.tty:
             from rich.console import Console
-            from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+            from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
             self._bar = Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
-                                 TimeElapsedColumn(), console=Console(stderr=True), transient=True)
+                                 TimeElapsedColumn(), TimeRemainingColumn(), console=Console(stderr=True),
+                                 transient=True)
             self._bar.__enter__()
             self._task = self._bar.add_task(self.label, total=1.0)
         else:
@@ -180,7 +194,8 @@ class ProgressReporter:
         fraction, status = self._state
         self._last = self._clock()
         elapsed = self._last - self._start
-        click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status} ({elapsed:.0f} s)".replace("  ", " "), err=True)
+        click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status} ({elapsed:.0f} s{_time_left(fraction, elapsed)})"
+                   .replace("  ", " "), err=True)
 
     def _heartbeat(self) -> None:
         while not self._stop.wait(self.every / 5.0):

@@ -109,9 +109,12 @@ def display_value(param: Param, value: float) -> object:
     """The value in the parameter's display unit, as a user would type it (SI when it has none)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         return value
+    if math.isinf(value):
+        return "no limit"  # a guard switched off, as a person says it (not "inf s")
     unit = param.display_unit or si_unit(param.dimension)
     if not unit:
-        return value
+        # a count or a whole ratio reads as an integer (50000000, not 50000000.0)
+        return int(value) if float(value).is_integer() and abs(value) < 1e15 else value
     if unit == si_unit(param.dimension):
         return f"{value:.6g} {unit}"
     if _DISPLAY_SCALE.get(unit) is not None:
