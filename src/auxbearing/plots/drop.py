@@ -136,12 +136,14 @@ def plot_speeds(ds: xr.Dataset, ax=None) -> Figure:
     return fig
 
 
-def plot_ball_stress(ds: xr.Dataset, ax=None) -> Figure:
-    """Hertz max stress of the most loaded ball contact of each plane [MPa]."""
+def plot_ball_stress(ds: xr.Dataset, ax=None, limit_MPa: float | None = None) -> Figure:
+    """Hertz max stress of the most loaded ball contact of each plane [MPa], with the limit judged against."""
     fig, ax = _axes(ax, (7, 4))
     t_ms = ds.time.values * 1e3
     for k in range(_n_planes(ds)):
         ax.plot(t_ms, _plane(ds, k).max_ball_stress.values / 1e6, lw=0.7, label=_plane_name(ds, k))
+    if limit_MPa is not None:
+        ax.axhline(limit_MPa, color="tab:red", ls="--", lw=1.0, label=f"limit {limit_MPa:.0f} MPa")
     ax.set_xlabel("Time [ms]")
     ax.set_ylabel("Max ball contact stress [MPa]")
     ax.legend(fontsize=8)

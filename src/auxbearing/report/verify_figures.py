@@ -9,6 +9,7 @@ from matplotlib.figure import Figure
 def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     """Section key -> [(figure, caption)] for :func:`auxbearing.report.verify_html.render`."""
     from auxbearing.analysis.coastdown_life import cycles_of_worst_contact
+    from auxbearing.bearings.ratings import ISO76_BALL_STRESS
     from auxbearing.plots import coastdown as pc
     from auxbearing.plots import drop as pd
     from auxbearing.plots.machine import plot_machine
@@ -16,13 +17,21 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     cases = result["design"]["cases"]
     out: dict[str, list] = {"machine": [(plot_machine(cases.machine), "Rotor, touchdown planes, bearings, "
                                          "clearances (radially enlarged), mounts and collars.")]}
+    out["criteria"] = [(_criteria_margins(result["design"]["criteria"]),
+                        "Every criterion's margin against its limit (the line at zero): green holds, red fails; "
+                        "a yes/no criterion is drawn at +-100 %, one not checked is named with no bar.")]
+    min_s0 = result.get("inputs", {}).get("criteria", {}).get("min_s0")
+    # ISO 76: s0 = (4200 MPa / sigma)^3 for a ball contact, so s0 >= min_s0 holds below 4200 / min_s0^(1/3) MPa
+    stress_limit = None if not min_s0 else ISO76_BALL_STRESS / 1e6 / float(min_s0) ** (1.0 / 3.0)
     drops = []
     for case, run in cases.drops.items():
         ds, summary = run.dataset, run.summary
         if case == "drop at the maximum speed":
             for k in range(ds.sizes["plane"]):
                 drops.append((pd.plot_orbit(ds, k), f"{case}: orbit of the journal at {ds.plane.values[k]}"))
-            drops.append((pd.plot_ball_stress(ds), f"{case}: largest ball contact stress"))
+            drops.append((pd.plot_ball_stress(ds, limit_MPa=stress_limit), f"{case}: largest ball contact stress"
+                          + ("" if stress_limit is None else f"; dashed: the stress at which s0 falls to "
+                             f"criteria.min_s0 = {float(min_s0):g} (ISO 76)")))
             drops.append((pd.plot_tilt(ds), f"{case}: tilt and axial position of the rotor"))
         drops.append((pd.plot_contact_force(ds), f"{case}: journal/race collision force ({summary['verdict']})"))
         drops.append((pd.plot_whirl_timeline(summary), f"{case}: whirl, window by window"))
@@ -66,6 +75,39 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     if rec:
         out["recommendation"] = [(_recommendation_map(rec), "Worst drop margin of every design tried")]
     return out
+
+
+#: Margins beyond +-200 % are drawn cut at the axis' end with their value written on the bar.
+CLIP = 2.0
+
+
+def _criteria_margins(criteria: list) -> Figure:
+    """One bar per criterion: its margin in per cent, the limit at zero; yes/no at +-100 %, unchecked named only."""
+    fig = Figure(figsize=(8, 0.45 * len(criteria) + 1.2), layout="constrained")
+    ax = fig.add_subplot()
+    labels, values, colours = [], [], []
+    for c in criteria:
+        if c.passed is None:
+            value, colour = 0.0, "0.6"
+        elif c.margin is None:
+            value, colour = (100.0 if c.passed else -100.0), ("tab:green" if c.passed else "tab:red")
+        else:
+            value, colour = 100.0 * max(min(c.margin, CLIP), -CLIP), ("tab:green" if c.passed else "tab:red")
+        labels.append(c.name if len(c.name) <= 48 else c.name[:46] + "...")
+        values.append(value)
+        colours.append(colour)
+    ax.barh(labels, values, color=colours)
+    for i, c in enumerate(criteria):
+        if c.passed is None:
+            ax.text(0.0, i, "  not checked", va="center", fontsize=8, color="0.35")
+        elif c.margin is not None and abs(c.margin) > CLIP:  # a bar cut at the axis' end says its value
+            ax.text(values[i], i, f" {100.0 * c.margin:+.0f} % ", va="center", fontsize=8,
+                    ha="right" if c.margin > 0 else "left", color="white")
+    ax.axvline(0.0, color="black", lw=1.0)
+    ax.set_xlabel("Margin [%] (0: at the limit)")
+    ax.invert_yaxis()
+    ax.grid(axis="x", alpha=0.3)
+    return fig
 
 
 def _candidate_bars(result: dict) -> Figure:

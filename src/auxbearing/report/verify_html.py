@@ -103,6 +103,7 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                         "Margin: " + "; ".join(f"{kind}: {text}" for kind, text in result["margins"].items()
                                                if kind not in ("yes/no", "not checked")) + ".",
                         classes))
+    parts += [_figure(f, c) for f, c in figures.get("criteria", [])]
     conv = result.get("convergence")
     if conv:
         parts.append("<h3>Convergence of the governing result</h3>")
