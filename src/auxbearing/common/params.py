@@ -151,6 +151,8 @@ def check(param: Param, value: object, field: str | None = None, typed: object =
         raise InputError.for_field(name, shown, "must lie in (0, 1]")
     if rule == "tolerance" and not 0.0 < value <= 1e-2:
         raise InputError.for_field(name, shown, "must lie in (0, 0.01]")
+    if rule == "temperature_rise" and not 0.0 <= value <= 10.0:  # "0.05 degC" reads as 273.2 K: refused here
+        raise InputError.for_field(name, shown, "must be a temperature rise in K within [0, 10]")
     if rule == "count" and (value != int(value) or value < 1):
         raise InputError.for_field(name, shown, "must be a whole number >= 1")
 

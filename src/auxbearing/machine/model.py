@@ -179,6 +179,7 @@ class Coastdown:
     max_steps: float = default("coastdown", "max_steps")
     check_window: float = default("coastdown", "check_window")
     settle_time: float = default("coastdown", "settle_time")
+    tail_temperature_rise: float = default("coastdown", "tail_temperature_rise")
     vacuum: bool = False
 
     def __post_init__(self) -> None:

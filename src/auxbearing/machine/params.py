@@ -182,6 +182,11 @@ COASTDOWN: tuple[Param, ...] = (
           "ours: a tenth of the drop's rate of steps per simulated second kept up for an hour of coast-down"),
     Param("coastdown", "check_window", "time", 0.01, "ms", "positive",
           "Length of the full-dynamics windows that check the motion is settled and measure the losses", "ours"),
+    Param("coastdown", "tail_temperature_rise", "temperature", 0.05, "K", "temperature_rise",
+          "A run to standstill ends once the spin energy left, all of it made heat in the smallest part, would warm "
+          "that part by less than this and its revolutions could add less than 0.1 % to any damage; the time left "
+          "to standstill is then extrapolated at the last deceleration (0: simulate down to stop_speed)",
+          "ours: 0.05 K, below what the temperature criteria resolve"),
     Param("coastdown", "settle_time", "time", 0.0, "ms", "nonnegative",
           "Full dynamics after each reduced stretch that is run and booked but not judged for the next one: the "
           "stretch's jump in speeds and clearances rings there, and the load those windows measure is low",

@@ -77,7 +77,7 @@ def _cell(text: str) -> str:
 def _default(param: Param) -> str:
     if param.default is None:
         return "required" if param.source == "required" else "derived / none"
-    if param.dimension == "temperature":
+    if param.dimension == "temperature" and param.display_unit == "degC":  # a rise in K has no offset
         return f"{param.default - 273.15:.6g} degC"
     shown = display_value(param, param.default)
     return f"`{shown}`" if isinstance(shown, str) else f"`{shown:g}`"
