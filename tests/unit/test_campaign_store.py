@@ -264,3 +264,44 @@ def test_damaged_stores_are_one_line_naming_the_store(tmp_path):
     (path / ".zattrs").write_text("[1, 2]")
     with pytest.raises(InputError, match="is not a table of attributes"):
         read_attrs(path)
+
+
+def test_complete_run_counts_samples_from_the_first_without_a_gap():
+    import numpy as np
+
+    from auxbearing.campaign.run import _complete_run
+
+    assert _complete_run(np.array([True, True, False, True])) == 2
+    assert _complete_run(np.array([False, True])) == 0
+    assert _complete_run(np.ones(3, bool)) == 3
+
+
+@pytest.mark.slow
+def test_a_decided_campaign_stops_on_its_first_complete_samples(tmp_path):
+    from auxbearing.campaign.run import run_campaign
+
+    asked = []
+
+    def decided(store, n):
+        asked.append(n)
+        return n >= 4
+
+    out = run_campaign(small(samples=12, batch=2), tmp_path / "s.zarr", workers=1, decided=decided)
+    # asked of every batch end in design order, each once; stopped at the first that settles it
+    assert asked == [2, 4]
+    assert out["decided_at"] == 4
+    assert out["completed"] < 12
+    # a resumed store that already settles it runs nothing more, and stops where the first run did
+    asked.clear()
+    again = run_campaign(small(samples=12, batch=2), tmp_path / "s.zarr", workers=1, decided=decided)
+    assert again["decided_at"] == 4 and again["new"] == 0 and asked == [2, 4]
+
+
+def test_the_whirl_criterion_fails_whatever_follows_only_when_the_rest_cannot_save_it():
+    from auxbearing.verify.criteria import whirl_fails_whatever_follows
+
+    # 7 whirls among 60 drops, 68 left: at best 7 / 128 = 0.055 > 0.05
+    assert whirl_fails_whatever_follows(7, 60, 68, 0.05)
+    # 6 whirls: 6 / 128 = 0.047, the rest could still bring the estimate within the limit
+    assert not whirl_fails_whatever_follows(6, 60, 68, 0.05)
+    assert not whirl_fails_whatever_follows(0, 0, 0, 0.05)

@@ -16,6 +16,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import NamedTuple
 
+import numpy as np
+
 from auxbearing.campaign.config import Campaign
 from auxbearing.campaign.evaluate import evaluate_batch, warm_up
 from auxbearing.campaign.sampling import design
@@ -85,7 +87,8 @@ def on_every_worker(client, fn, *args) -> dict:
 
 
 def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = None, workers: int | None = None,
-                 progress: Callable[[Progress], None] | None = None) -> dict:
+                 progress: Callable[[Progress], None] | None = None,
+                 decided: Callable[[Path, int], bool] | None = None) -> dict:
     """Run every sample of ``campaign`` not yet in ``store``; returns counts and timing.
 
     Parameters
@@ -99,6 +102,11 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         Worker processes of the local cluster; default one per core.
     progress : callable, optional
         Called with a :class:`Progress` after every stored batch.
+    decided : callable, optional
+        ``decided(store, n)``: True when the first ``n`` samples (in design order) already settle what the
+        campaign is run for. It is asked each time the run of complete samples from the first one grows, never
+        of a set that depends on which batches a busy cluster finished first; when it says True the rest is
+        cancelled and ``decided_at`` is n. Batches past n that were already stored stay in the store.
 
     Returns
     -------
@@ -106,7 +114,7 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         ``runs``, ``completed``, ``new`` (this call), ``lost`` (samples of batches whose worker died;
         run again to retry), ``workers``, ``warm_up_s`` (largest per worker), ``startup_s``,
         ``run_s`` (first task to last record), ``wall_time_s`` and ``drops_per_second`` (new / run_s);
-        ``lost_reason`` is the first error of a lost batch.
+        ``lost_reason`` is the first error of a lost batch; ``decided_at`` (None unless ``decided`` ended it).
     """
     start = time.perf_counter()
     points = design(campaign)
@@ -117,21 +125,49 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         with store_lock(store):
             prepare_store(store, campaign, points)
             todo = pending_batches(store, campaign.runs, campaign.batch_size)
-            return _run(campaign, store, points, todo, client, scheduler, workers, progress, start)
+            return _run(campaign, store, points, todo, client, scheduler, workers, progress, start, decided)
     finally:
         if client is not None:
             client.close()
 
 
+def _complete_run(have: np.ndarray) -> int:
+    """Samples complete from the first one on, without a gap."""
+    missing = np.flatnonzero(~have)
+    return int(missing[0]) if missing.size else int(have.size)
+
+
+def _first_settled(decided, store: Path, ends: list, before: int, now: int) -> int | None:
+    """The first batch end in (before, now] at which ``decided`` says the campaign is settled, or None.
+
+    Every batch end is asked in design order, also when several batches complete the run at once: where the
+    campaign stops does not depend on the order in which a cluster happened to finish them.
+    """
+    if decided is None:
+        return None
+    for n in ends:
+        if before < n <= now and decided(store, n):
+            return n
+    return None
+
+
 def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler: str | None, workers: int | None,
-         progress, start: float) -> dict:
+         progress, start: float, decided=None) -> dict:
     """The batches still to do, on the cluster (started here unless ``client`` is given), into the store."""
     from distributed import as_completed
 
     runs = campaign.runs
     done = runs - sum(b - a for a, b in todo)
     out = {"runs": runs, "completed": done, "new": 0, "lost": 0, "lost_reason": None, "workers": 0, "warm_up_s": 0.0,
-           "startup_s": 0.0, "run_s": 0.0, "wall_time_s": 0.0, "drops_per_second": None}
+           "startup_s": 0.0, "run_s": 0.0, "wall_time_s": 0.0, "drops_per_second": None, "decided_at": None}
+    have = np.ones(runs, dtype=bool)
+    for a, b in todo:
+        have[a:b] = False
+    ends = [min(a + campaign.batch_size, runs) for a in range(0, runs, campaign.batch_size)]
+    prefix = _complete_run(have)
+    settled = _first_settled(decided, store, ends, 0, prefix)  # a resumed store may settle it already
+    if settled is not None:
+        todo, out["decided_at"] = [], settled
     if not todo:
         out["wall_time_s"] = time.perf_counter() - start
         return out
@@ -178,6 +214,15 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
                 interrupt.check()  # a Ctrl-C that a Dask callback swallowed
                 new += b - a
                 done += b - a
+                have[a:b] = True
+                grown = _complete_run(have)
+                settled = _first_settled(decided, store, ends, prefix, grown)
+                prefix = grown
+                if settled is not None:
+                    out["decided_at"] = settled
+                    for rest, _, _ in pending.values():
+                        rest.cancel()
+                    break
                 if progress is not None:
                     elapsed = time.perf_counter() - first
                     rate = new / elapsed if elapsed > 0 else 0.0

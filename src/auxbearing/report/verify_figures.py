@@ -61,6 +61,8 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
         from auxbearing.plots.campaign import plot_histograms, plot_whirl_map
 
         ds = load_results(cases.campaign_store)
+        if cases.campaign and cases.campaign.get("stopped_decided"):  # the drops the statistics rest on
+            ds = ds.isel(sample=slice(0, cases.campaign["samples"]))
         keys = [str(k) for k in ds["input"].values]
         whirled = "backward_whirl" in ds and bool(np.nansum(ds["backward_whirl"].values) > 0)
         note = "" if whirled or len(keys) < 2 else (" No drop of the campaign whirled backward, so there is no whirl "

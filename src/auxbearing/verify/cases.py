@@ -154,15 +154,21 @@ def collect_cases(cases: Cases, futures: dict) -> Cases:
 
 
 def run_campaign_of(cases: Cases, data: dict, name: str, base: Path | None, samples: int, store: Path | None,
-                    workers: int | None, scheduler: str | None, required_s0: float) -> None:
-    """The design's campaign over its spreads into ``cases`` (on the scheduler given, or a cluster of its own)."""
+                    workers: int | None, scheduler: str | None, required_s0: float,
+                    whirl_limit: float | None = None) -> None:
+    """The design's campaign over its spreads into ``cases`` (on the scheduler given, or a cluster of its own).
+
+    With ``whirl_limit`` the campaign stops once its first drops (in design order) fail the whirl criterion
+    whatever the rest would show (:func:`auxbearing.verify.criteria.whirl_fails_whatever_follows`); its
+    statistics are then those of the drops run.
+    """
     if samples <= 0:
         return
     drop = {}
     if cases.quick:
         drop["duration"] = f"{float(cases.machine.simulation.duration)!r} s"
     cases.campaign, cases.campaign_store = _campaign(data, name, base, cases.machine, verify_settings(data), samples,
-                                                     store, workers, scheduler, required_s0, drop)
+                                                     store, workers, scheduler, required_s0, drop, whirl_limit)
 
 
 def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, samples: int | None = None,
@@ -264,7 +270,28 @@ def campaign_tables(data: dict, machine: Machine, settings: dict, samples: int, 
     return tables
 
 
-def _campaign(data, name, base, machine, settings, samples, store, workers, scheduler, required_s0, drop):
+def _first_drops(store, n: int):
+    """The campaign store's first ``n`` samples, read in this process."""
+    import dask
+
+    from auxbearing.campaign.store import load_results
+
+    with dask.config.set(scheduler="synchronous"):  # not the cluster a Dask client here may have made the default
+        return load_results(store).isel(sample=slice(0, n))
+
+
+def _whirl_settled(store, n: int, total: int, limit: float) -> bool:
+    from auxbearing.campaign.statistics import sample_outputs, verdict_masks
+    from auxbearing.verify.criteria import whirl_fails_whatever_follows
+
+    ds = _first_drops(store, n)
+    ok = verdict_masks(ds)["ok"]
+    whirled = int((sample_outputs(ds)["backward_whirl"][0][ok] > 0.5).sum())
+    return whirl_fails_whatever_follows(whirled, int(ok.sum()), total - n, limit)
+
+
+def _campaign(data, name, base, machine, settings, samples, store, workers, scheduler, required_s0, drop,
+              whirl_limit=None):
     import dask
 
     from auxbearing.campaign.config import campaign_from_mapping
@@ -275,8 +302,14 @@ def _campaign(data, name, base, machine, settings, samples, store, workers, sche
     if store is None:
         raise InputError("verify: a campaign needs a store folder (--out)")
     campaign = campaign_from_mapping(campaign_tables(data, machine, settings, samples, drop), f"{name} campaign", base)
-    run_campaign(campaign, store, scheduler=scheduler, workers=workers)
+    decided = None if whirl_limit is None else (
+        lambda path, n: _whirl_settled(path, n, campaign.runs, whirl_limit))
+    ran = run_campaign(campaign, store, scheduler=scheduler, workers=workers, decided=decided)
+    stop = ran.get("decided_at")
     # read the store here, not on the cluster a Dask client in this process may have made the default
     with dask.config.set(scheduler="synchronous"):
-        stats = campaign_statistics(load_results(store), required_s0=required_s0)
+        ds = load_results(store) if stop is None else _first_drops(store, stop)
+        stats = campaign_statistics(ds, required_s0=required_s0)
+    stats["planned"] = campaign.runs
+    stats["stopped_decided"] = stop is not None
     return stats, str(store)

@@ -124,3 +124,14 @@ def ranking_key(criteria: list[Criterion]) -> tuple:
     margin = worst_margin(criteria)
     return (sum(c.passed is False for c in criteria), sum(c.passed is None for c in criteria),
             -margin if math.isfinite(margin) else math.inf)
+
+
+def whirl_fails_whatever_follows(whirled: int, ended_ok: int, left: int, limit: float) -> bool:
+    """True when the whirl criterion fails however the drops still to run end.
+
+    The criterion fails when the campaign's estimate exceeds the limit (and so does the upper bound above it;
+    an estimate within the limit under a bound beyond it is "not checked"). The smallest estimate the whole
+    campaign can still give counts every drop left as ending ok without whirl: whirled / (ended_ok + left).
+    Once that exceeds the limit, the rest cannot change the outcome, only narrow the interval.
+    """
+    return ended_ok + left > 0 and whirled / (ended_ok + left) > limit

@@ -155,6 +155,9 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
     p = campaign["p_backward_whirl"]
     evidence = (f"campaign of {campaign['ok']} drops that ended ok: estimate {p['value']:.3f}, 95 % interval "
                 f"{p['low']:.3f}-{p['high']:.3f}")
+    if campaign.get("stopped_decided"):
+        evidence += (f" (stopped after its first {campaign['samples']} of {campaign['planned']} drops: even with "
+                     "every drop left ending without whirl the estimate stays above the limit)")
     c = upper_bound(WHIRL_PROBABILITY, p["high"], limit, "-", source, evidence)
     if c.passed is False and p["value"] <= limit:
         need = _drops_to_show(p["value"], limit)

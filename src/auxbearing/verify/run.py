@@ -228,7 +228,8 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
                 short[label] = (f"a campaign of {size} drops, not {n}: the candidate already fails on "
                                 f"{'; '.join(failing)}, which no campaign can change")
         say(f"{label}: campaign of {size} drops")
-        run_campaign_of(cases, tables, title, base, size, store, None, address, criteria["min_s0"])
+        run_campaign_of(cases, tables, title, base, size, store, None, address, criteria["min_s0"],
+                        criteria["max_backward_whirl_probability"])
     rec = recommend(data, name, base, criteria, quick, say, executor) if with_recommendation else None
     judged = {}
     for label, (cases, futures, *_) in planned.items():
@@ -250,7 +251,7 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
         converging = convergence_started(design["cases"], design["criteria"], executor)
         say(f"recommended geometry: campaign of {n} drops")
         run_campaign_of(cases, tables, title, base, n, out_dir / "campaign_recommended.zarr", None, address,
-                        criteria["min_s0"])
+                        criteria["min_s0"], criteria["max_backward_whirl_probability"])
         checked = _design(collect_cases(cases, futures), criteria)
         rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
                                "reason": _reason(checked["criteria"]),
