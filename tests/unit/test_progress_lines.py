@@ -29,3 +29,12 @@ def test_quiet_prints_nothing(capsys):
     with ProgressReporter("verify demo", quiet=True) as reporter:
         reporter(0.5, "anything")
     assert capsys.readouterr().err == ""
+
+
+def test_a_reporter_of_stages_gives_no_time_left(capsys):
+    reporter = ProgressReporter("verify demo", time_left=False)
+    reporter.every = 0.0
+    with reporter:
+        reporter(0.5, "coast-down")
+    lines = [ln for ln in capsys.readouterr().err.splitlines() if ln]
+    assert lines and all("left" not in ln for ln in lines), lines

@@ -143,13 +143,15 @@ class ProgressReporter:
 
     every = 5.0
 
-    def __init__(self, label: str, quiet: bool = False) -> None:
+    def __init__(self, label: str, quiet: bool = False, time_left: bool = True) -> None:
         import sys
         import threading
         import time
 
         self.label = label
         self.quiet = quiet
+        #: whether the fraction is a share of the work (the time left follows from it) or only of stages
+        self.time_left = time_left
         self.tty = sys.stderr.isatty()
         self._clock = time.monotonic
         self._start = self._last = self._clock()
@@ -166,9 +168,9 @@ class ProgressReporter:
             from rich.console import Console
             from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
-            self._bar = Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
-                                 TimeElapsedColumn(), TimeRemainingColumn(), console=Console(stderr=True),
-                                 transient=True)
+            columns = [TextColumn("{task.description}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
+                       TimeElapsedColumn()] + ([TimeRemainingColumn()] if self.time_left else [])
+            self._bar = Progress(*columns, console=Console(stderr=True), transient=True)
             self._bar.__enter__()
             self._task = self._bar.add_task(self.label, total=1.0)
         else:
@@ -194,8 +196,9 @@ class ProgressReporter:
         fraction, status = self._state
         self._last = self._clock()
         elapsed = self._last - self._start
-        click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status} ({elapsed:.0f} s{_time_left(fraction, elapsed)})"
-                   .replace("  ", " "), err=True)
+        left = _time_left(fraction, elapsed) if self.time_left else ""
+        click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status} ({elapsed:.0f} s{left})".replace("  ", " "),
+                   err=True)
 
     def _heartbeat(self) -> None:
         while not self._stop.wait(self.every / 5.0):

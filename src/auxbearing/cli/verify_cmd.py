@@ -66,7 +66,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         if not all(specs):
             raise InputError.for_field("--candidates", candidates, "a comma-separated list of bearings, no empty item")
     with atomic_output_dir(out_dir) as tmp:
-        with ProgressReporter(f"verify {machine_spec}", quiet) as progress:
+        # its fraction counts stages, whose work differs a hundredfold: a time left from it would mislead
+        with ProgressReporter(f"verify {machine_spec}", quiet, time_left=False) as progress:
             steps = {"n": 0}
 
             def say(text: str) -> None:
