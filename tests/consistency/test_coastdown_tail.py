@@ -13,7 +13,7 @@ import copy
 
 import pytest
 
-from auxbearing.analysis.coastdown import run_coastdown
+from auxbearing.analysis.coastdown import run_coastdown, tail_note
 from auxbearing.machine.files import machine_table
 from auxbearing.machine.model import machine_from_mapping
 
@@ -33,6 +33,7 @@ def test_the_spent_tail_moves_no_result():
     assert simulated["tail"] is None and simulated["reached_standstill"]
     tail = left_out["tail"]
     assert tail is not None and tail["temperature_rise_bound_K"] <= 0.05
+    assert "were not simulated" in tail_note(tail) and tail_note(simulated["tail"]) == ""
     assert left_out["simulated_s"] < simulated["simulated_s"]  # some of the run was really left out
     assert left_out["coastdown_time_s"] == pytest.approx(simulated["coastdown_time_s"], rel=0.01)
     for a, b in zip(left_out["planes"], simulated["planes"], strict=True):

@@ -575,6 +575,16 @@ def spent_tail(machine: Machine, session: _Session, networks, overrolling, decel
             "time_left_s": max(0.0, omega - coast.stop_speed) / deceleration}
 
 
+def tail_note(tail: dict | None) -> str:
+    """One sentence on a left-out tail (:func:`spent_tail`) for a report or the console; empty when none."""
+    if not tail:
+        return ""
+    return (f"the last {tail['from_rotor_speed_rpm']:.0f} rpm were not simulated: the spin energy left "
+            f"({tail['spin_energy_J']:.2g} J) could warm the smallest part by {tail['temperature_rise_bound_K']:.2g} K "
+            f"at most and add {tail['revolutions_left']:.1f} revolutions; the {tail['time_left_s']:.1f} s to "
+            "standstill are extrapolated at the last deceleration (coastdown.tail_temperature_rise)")
+
+
 def _window_load(machine: Machine, k: int, window) -> float:
     """ISO 281 equivalent load on plane k's bearing over a window [N].
 

@@ -22,7 +22,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from auxbearing.analysis.coastdown import CoastdownRun, run_coastdown
+from auxbearing.analysis.coastdown import CoastdownRun, run_coastdown, tail_note
 from auxbearing.analysis.drop import MachineRun, run_machine
 from auxbearing.common.errors import InputError
 from auxbearing.machine.judging import (
@@ -150,6 +150,8 @@ def collect_cases(cases: Cases, futures: dict) -> Cases:
             cases.partial_coastdown = "only the first part of the coast-down ran (--quick): run without --quick"
     elif coastdown.summary["verdict"] in ("step_budget", "wall_time_budget"):
         cases.partial_coastdown = f"the coast-down reached a budget ({coastdown.summary['reason']})"
+    if coastdown.summary.get("tail"):
+        cases.notes.append(tail_note(coastdown.summary["tail"]))
     return cases
 
 
