@@ -545,8 +545,10 @@ def spent_tail(machine: Machine, session: _Session, networks, overrolling, decel
     the rule then leaves alone), E = (J_p Omega^2 + sum J_race w_race^2) / 2. Made heat all in the part of
     smallest heat capacity C, it warms that part by at most E / C; a network with no heat coming in only cools
     towards ambient and its parts' temperatures stay between ambient and their present maximum (the maximum
-    principle of a conduction network), so no temperature, clearance or run-away verdict can move by more than
-    that bound. At the last deceleration the rotor turns n = Omega^2 / (4 pi a) more revolutions
+    principle of a conduction network), so no peak temperature or run-away verdict can move by more than that
+    bound. The heat already stored still spreads (the journal's into the inner ring), which moves a clearance
+    by nanometres over a tail of seconds; simulating to standstill follows that only as far as standstill
+    either. At the last deceleration the rotor turns n = Omega^2 / (4 pi a) more revolutions
     (a uniform deceleration a; the losses of a rolling contact hardly depend on speed at the end), which at
     each race's last window load P add n P^3 to the over-rolling sum against the sum so far (ISO 281:2007
     Eq. 1, P^-3 for ball bearings). The run ends when E / C is within ``coastdown.tail_temperature_rise``
