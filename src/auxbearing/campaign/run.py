@@ -104,9 +104,9 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         Called with a :class:`Progress` after every stored batch.
     decided : callable, optional
         ``decided(store, n)``: True when the first ``n`` samples (in design order) already settle what the
-        campaign is run for. It is asked each time the run of complete samples from the first one grows, never
-        of a set that depends on which batches a busy cluster finished first; when it says True the rest is
-        cancelled and ``decided_at`` is n. Batches past n that were already stored stay in the store.
+        campaign is run for. It is asked at every batch end n, in design order, once every sample before n is
+        complete: never of a set that depends on which batches a busy cluster finished first. When it says True
+        the rest is cancelled and ``decided_at`` is n; batches past n already stored stay in the store.
 
     Returns
     -------
