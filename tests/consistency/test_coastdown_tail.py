@@ -22,7 +22,8 @@ def _blower(tail: str):
     data, name, base = machine_table("blower")
     data = copy.deepcopy(data)
     data["rotor"]["speed"] = "3000 rpm"
-    data.setdefault("coastdown", {}).update({"drag_torque": "0.2 N*m", "speed_step": 0.3, "tail_temperature_rise": tail})
+    data.setdefault("coastdown", {}).update({"drag_torque": "0.2 N*m", "speed_step": 0.3,
+                                             "tail_temperature_rise": tail})
     return machine_from_mapping(data, name, base)
 
 
