@@ -17,9 +17,10 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   when the speed has fallen by ``coastdown.speed_step`` or a clearance has moved by :data:`CLEARANCE_STEP`,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
   ``coastdown.settle_time`` of it after a stretch is run and booked but not judged, since the stretch's jump
-  in speeds and clearances still rings in it (measured on the blower: the windows just after a stretch carried
-  2-6 % less load than full dynamics at the same speed, so stretches that start from them carry 4-5 % too
-  little damage; 150 ms of settling brings every non-chaotic example within 1 %, at 2.5 times the cost).
+  in speeds and clearances can still ring in it (measured on the blower before the contacts were carried
+  across the clearance steps: the windows just after a stretch carried 2-6 % less load than full dynamics at
+  the same speed, and 150 ms of settling brought every non-chaotic example within 1 %, at 2.5 times the
+  cost; with the contacts carried the default of none leaves the damage per drop within 3.1 % over 30 s).
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
 (:func:`spent_tail`): the spin energy left could warm the smallest part by less than
