@@ -299,7 +299,6 @@ def _campaign(data, name, base, machine, settings, samples, store, workers, sche
     from auxbearing.campaign.config import campaign_from_mapping
     from auxbearing.campaign.run import run_campaign
     from auxbearing.campaign.statistics import campaign_statistics
-    from auxbearing.campaign.store import load_results
 
     if store is None:
         raise InputError("verify: a campaign needs a store folder (--out)")
@@ -308,10 +307,9 @@ def _campaign(data, name, base, machine, settings, samples, store, workers, sche
         lambda path, n: _whirl_settled(path, n, campaign.runs, whirl_limit))
     ran = run_campaign(campaign, store, scheduler=scheduler, workers=workers, decided=decided)
     stop = ran.get("decided_at")
-    # read the store here, not on the cluster a Dask client in this process may have made the default
-    with dask.config.set(scheduler="synchronous"):
-        ds = load_results(store) if stop is None else _first_drops(store, stop)
-        stats = campaign_statistics(ds, required_s0=required_s0)
+    with dask.config.set(scheduler="synchronous"):  # the statistics too, in this process
+        stats = campaign_statistics(_first_drops(store, campaign.runs if stop is None else stop),
+                                    required_s0=required_s0)
     stats["planned"] = campaign.runs
     stats["stopped_decided"] = stop is not None
     return stats, str(store)
