@@ -190,7 +190,7 @@ def _stop_when(process: subprocess.Popen, store: Path, batches: int, sig: int, t
 def test_kill_and_resume_gives_the_store_of_an_uninterrupted_run(tmp_path):
     from auxbearing.campaign.store import load_results
 
-    config = write_config(tmp_path, samples=32, duration="40 ms")
+    config = write_config(tmp_path, samples=16, duration="20 ms")
     store = tmp_path / "resumed.zarr"
     first = _start(config, store)
     _stop_when(first, store, 2, signal.SIGINT)
@@ -203,12 +203,12 @@ def test_kill_and_resume_gives_the_store_of_an_uninterrupted_run(tmp_path):
     assert second.returncode == -signal.SIGKILL
     part = load_results(store)
     done = int(part["completed"].values.sum())
-    assert 0 < done < 32
+    assert 0 < done < 16
     third = _start(config, store)
     out, err = third.communicate(timeout=600)
     assert third.returncode == 0, err
     resumed = json.loads(out)
-    assert resumed["completed"] == 32 and resumed["new"] == 32 - done
+    assert resumed["completed"] == 16 and resumed["new"] == 16 - done
     clean = _start(config, tmp_path / "clean.zarr")
     out, err = clean.communicate(timeout=600)
     assert clean.returncode == 0, err

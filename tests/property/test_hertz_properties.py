@@ -43,8 +43,9 @@ def test_swapping_bodies_changes_nothing(a, b, c, d, q):
     s2, f2 = hertz.curvature_sum_difference(c, d, a, b)
     r1 = hertz.point_contact(q, s1, f1, STEEL)
     r2 = hertz.point_contact(q, s2, f2, STEEL)
+    # 1e-11: with curvatures 8000:1 apart the two orders of summation differ by 1.4e-12 in the stress
     for x, y in zip(r1, r2, strict=True):
-        np.testing.assert_allclose(x, y, rtol=1e-12)
+        np.testing.assert_allclose(x, y, rtol=1e-11)
 
 
 @pytest.mark.slow
