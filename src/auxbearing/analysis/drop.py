@@ -273,6 +273,19 @@ _DIAG_SERIES = {
 }
 
 
+def journal_centres(machine: Machine, model, grid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each plane's journal centre (x, y) on a grid of states [m]: the rigid rotor's axis plus its bending there."""
+    positions = np.array([p.position for p in machine.planes])
+    x = grid[:, [cm.X]] + positions * grid[:, [cm.TY]]
+    y = grid[:, [cm.Y]] - positions * grid[:, [cm.TX]]
+    layout, modes = model.layout, model.machine.modes
+    if layout.modes:
+        eta = grid[:, layout.modes_at:layout.modes_at + layout.modes]
+        x = x + eta @ modes.shape_x[:len(positions)].T
+        y = y + eta @ modes.shape_y[:len(positions)].T
+    return x, y
+
+
 def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: bool = False) -> xr.Dataset:
     """The time series of a run on its output grid (units in attrs)."""
     n = grid.shape[0]
@@ -285,11 +298,13 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
                        for k in range(n_planes)], axis=1)
     for col, (name, unit, long_name) in _PLANE_SERIES.items():
         data[name] = (("time", "plane"), planes[:, :, col], {"units": unit, "long_name": long_name})
-    positions = np.array([p.position for p in machine.planes])
-    data["journal_x"] = (("time", "plane"), grid[:, [cm.X]] + positions * grid[:, [cm.TY]],
-                         {"units": "m", "long_name": "Journal centre x at the plane"})
-    data["journal_y"] = (("time", "plane"), grid[:, [cm.Y]] - positions * grid[:, [cm.TX]],
-                         {"units": "m", "long_name": "Journal centre y at the plane"})
+    journal_x, journal_y = journal_centres(machine, model, grid)
+    data["journal_x"] = (("time", "plane"), journal_x, {"units": "m", "long_name": "Journal centre x at the plane"})
+    data["journal_y"] = (("time", "plane"), journal_y, {"units": "m", "long_name": "Journal centre y at the plane"})
+    layout = model.layout
+    if layout.modes:
+        data["mode"] = (("time", "mode"), grid[:, layout.modes_at:layout.modes_at + layout.modes],
+                        {"units": "m*kg**0.5", "long_name": "Elastic mode coordinate (mass-normalised shape)"})
     # per-ball states where they fit the memory cap; their largest stress is the plane's, so the
     # diagnostics need to evaluate the ball stresses only for planes without them
     states = {}

@@ -30,6 +30,7 @@ EXTRA_UNITS = {
     "stiffness": ("N/m", "N/m, N/mm"),
     "torque_per_speed": ("N*m*s", "N*m*s, N*m/rpm"),
     "torque_per_speed2": ("N*m*s**2", "N*m*s**2, N*m/rpm**2"),
+    "frequency": ("Hz", "Hz, kHz"),
 }
 
 def with_article(noun: str) -> str:

@@ -33,9 +33,18 @@ hard stop), and an optional axial face contact of a rotor collar on the race fac
 and damping; friction against the local slip averaged over the face's mean circle, which turns an
 axial load into a torque and a lateral force on the rotor: Wilkes et al., GT2013-94594).
 
-State layout (:func:`layout`, generated from the number of planes): the rotor's :data:`ROTOR_STATES`, one
-block of :data:`PLANE_STATES` per plane, then the bookkeeping integrals of work and heat that the energy
-audit uses (:data:`LEDGER`, then :data:`PLANE_LEDGER` per plane); these carry ``atol = inf`` so they never
+Elastic rotor (:mod:`auxbearing.machine.structure`): a rotor given by its matrices is this rigid body plus its
+free-free elastic modes, mass-normalised (:class:`Modes`, none for a rigid rotor). Each mode's coordinate eta_j
+obeys eta_j'' + sum_l (D_jl + Omega Gm_jl) eta_l' - Omega (gt_xj theta_px' + gt_yj theta_py') + omega_j^2 eta_j
+= sum_k phi_j(a_k) . F_k, the forces F_k at the stations projected on the mode's shape there; the rigid tilts
+take the coupling -Omega gt eta' (the skew gyroscopic matrix of the whole structure, which does no work). The
+modes are M-orthogonal to the rigid motions, so gravity, the unbalance of the rigid body and the process
+forces (spread like the mass) do not load them; each station's journal moves by the modes' shapes there.
+
+State layout (:func:`layout`, generated from the number of planes and modes): the rotor's :data:`ROTOR_STATES`,
+one block of :data:`PLANE_STATES` per plane, the modes' coordinates then their rates, then the bookkeeping
+integrals of work and heat that the energy audit uses (:data:`LEDGER`, then :data:`PLANE_LEDGER` per plane,
+then the heat of the structure's damping when it has modes); these carry ``atol = inf`` so they never
 steer the step. The kernels read the plane count from the packed planes' tuples (a compile-time constant:
 numba compiles one specialisation per count, and :data:`MIN_PLANES` pads the common machines to one).
 """
@@ -72,9 +81,15 @@ L_WORK_IN, L_DRAG_LOSS, L_BALLSET_WORK, L_HEAT = range(4)
 
 
 @njit(cache=True, inline="always")
-def ledger_at(n_planes):
-    """Index of the ledger in the state of a machine packed with ``n_planes`` plane blocks."""
-    return N_ROTOR + n_planes * N_PLANE
+def ledger_at(n_planes, n_modes):
+    """Index of the ledger in the state of a machine packed with ``n_planes`` plane blocks and ``n_modes`` modes."""
+    return N_ROTOR + n_planes * N_PLANE + 2 * n_modes
+
+
+@njit(cache=True, inline="always")
+def ledger_of(m):
+    """Index of the ledger in the state of the packed machine ``m``."""
+    return ledger_at(len(m.planes.active), m.modes.stiffness.shape[0])
 
 
 class Layout(NamedTuple):
@@ -88,6 +103,9 @@ class Layout(NamedTuple):
     ballset_work: int
     heat_at: int  #: + 3 k + (0 contact, 1 bearing, 2 mount)
     names: tuple  #: every state's name, in order
+    modes: int = 0  #: elastic modes of the rotor
+    modes_at: int = 0  #: first mode coordinate; their rates follow them
+    structure_loss: int = -1  #: heat of the structure's damping (-1: a rigid rotor)
 
     def plane(self, k: int) -> int:
         """First index of plane k's block."""
@@ -98,17 +116,20 @@ class Layout(NamedTuple):
         return self.heat_at + 3 * k + source
 
 
-def layout(n_planes: int) -> Layout:
-    """The state layout of a machine packed with ``n_planes`` plane blocks (module docstring)."""
-    at = ledger_at.py_func(n_planes)  # the kernels' own formula, run as Python
-    names = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_STATES), *LEDGER,
-             *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_LEDGER))
-    return Layout(n_planes, len(names), at, at + L_WORK_IN, at + L_DRAG_LOSS, at + L_BALLSET_WORK, at + L_HEAT, names)
+def layout(n_planes: int, n_modes: int = 0) -> Layout:
+    """The state layout of a machine packed with ``n_planes`` plane blocks and ``n_modes`` modes (module docstring)."""
+    at = ledger_at.py_func(n_planes, n_modes)  # the kernels' own formula, run as Python
+    modal = (*(f"mode_{j}" for j in range(n_modes)), *(f"mode_rate_{j}" for j in range(n_modes)))
+    names = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_STATES), *modal, *LEDGER,
+             *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_LEDGER),
+             *(("structure_loss",) if n_modes else ()))
+    return Layout(n_planes, len(names), at, at + L_WORK_IN, at + L_DRAG_LOSS, at + L_BALLSET_WORK, at + L_HEAT, names,
+                  n_modes, N_ROTOR + n_planes * N_PLANE, len(names) - 1 if n_modes else -1)
 
 
 def layout_of(m) -> Layout:
     """The state layout of a packed :class:`Machine`."""
-    return layout(len(m.planes.active))
+    return layout(len(m.planes.active), m.modes.stiffness.shape[0])
 
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
 #: integrates the first harmonics of the slip field exactly).
@@ -192,6 +213,26 @@ class Planes(NamedTuple):
     row_push: tuple  #: axial displacement of each row into its balls in the clamped, unloaded pair [m]
 
 
+class Modes(NamedTuple):
+    """The rotor's elastic free-free modes, mass-normalised (:func:`auxbearing.machine.structure.modal_rotor`).
+
+    Arrays with ``n`` modes (``n = 0`` for a rigid rotor: every loop over them is empty).
+    """
+
+    stiffness: np.ndarray  #: (n,) omega_j^2 [1/s^2]
+    damping: np.ndarray  #: (n, n) D = Phi^T C Phi + diag(2 zeta omega) [1/s]
+    gyroscopic: np.ndarray  #: (n, n) Gm = Phi^T G Phi, times the spin speed [-]
+    tilt_gyroscopic: np.ndarray  #: (2, n) gt: the rigid tilts' gyroscopic coupling to the modes [sqrt(kg) m]
+    shape_x: np.ndarray  #: (plane blocks, n) each mode's x displacement at each plane [1/sqrt(kg)]
+    shape_y: np.ndarray  #: (plane blocks, n) and its y displacement
+
+
+def rigid_modes(n_planes: int) -> Modes:
+    """No elastic mode: the rigid rotor."""
+    return Modes(np.zeros(0), np.zeros((0, 0)), np.zeros((0, 0)), np.zeros((2, 0)), np.zeros((n_planes, 0)),
+                 np.zeros((n_planes, 0)))
+
+
 class Limits(NamedTuple):
     """Range limits of the model (:mod:`auxbearing.core.watch` stops a run that crosses one), SI; (2,) are tuples."""
 
@@ -222,16 +263,18 @@ class Machine(NamedTuple):
     scratch: np.ndarray  #: (:data:`SCRATCH`,) generalised forces, ball-set displacement and resultant
     jac_stub: np.ndarray  #: (1, 1): the Jacobian argument of the ball-set kernel, unused here
     last_diag: np.ndarray  #: (planes, len(DIAG_FIELDS)): each plane's diagnostics at the last rhs call
+    modes: Modes  #: the rotor's elastic modes (none: rigid)
 
 
-#: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5).
-_Q, _DISP, _FORCE = 0, 6, 11
+#: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5), then
+#: the modal forces (one per mode).
+_Q, _DISP, _FORCE, _QM = 0, 6, 11, 16
 SCRATCH = 16
 
 
-def new_scratch(n_planes: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Fresh (scratch, jac_stub, last_diag) for a :class:`Machine` of ``n_planes`` plane blocks."""
-    return np.zeros(SCRATCH), np.zeros((1, 1)), np.zeros((n_planes, len(DIAG_FIELDS)))
+def new_scratch(n_planes: int, n_modes: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fresh (scratch, jac_stub, last_diag) for a :class:`Machine` of ``n_planes`` plane blocks and ``n_modes``."""
+    return np.zeros(SCRATCH + n_modes), np.zeros((1, 1)), np.zeros((n_planes, len(DIAG_FIELDS)))
 
 
 # ----------------------------------------------------------------------------- rotor kinematics
@@ -274,6 +317,34 @@ def _apply_rotor(q, kin, a, rho_x, rho_y, fx, fy, fz):
     q[4] += a * fx - rho_x * fz
     q[5] += (fx * (-kin[0] - a * kin[5] - rho_y) + fy * (-kin[1] + a * kin[4] + rho_x)
              + fz * (kin[6] * rho_x + kin[7] * rho_y))
+
+
+@njit(cache=True, inline="always")
+def journal_point(y, m, k):
+    """Plane k's journal axis point (x, y) and the velocity the elastic modes add there (x, y) [m, m/s]."""
+    a = m.planes.position[k]
+    jx = y[X] + a * y[TY]
+    jy = y[Y] - a * y[TX]
+    evx = 0.0
+    evy = 0.0
+    md = m.modes
+    nm = md.stiffness.shape[0]
+    if nm > 0:
+        at = N_ROTOR + len(m.planes.active) * N_PLANE
+        for j in range(nm):
+            jx += md.shape_x[k, j] * y[at + j]
+            jy += md.shape_y[k, j] * y[at + j]
+            evx += md.shape_x[k, j] * y[at + nm + j]
+            evy += md.shape_y[k, j] * y[at + nm + j]
+    return jx, jy, evx, evy
+
+
+@njit(cache=True, inline="always")
+def _apply_modes(m, k, fx, fy):
+    """Add a lateral force at plane k to the modal forces (its projection on each mode's shape there)."""
+    md = m.modes
+    for j in range(md.stiffness.shape[0]):
+        m.scratch[_QM + j] += md.shape_x[k, j] * fx + md.shape_y[k, j] * fy
 
 
 @njit(cache=True, inline="always")
@@ -340,14 +411,13 @@ def plane_forces(k, y, m, kin, q, out, diag):
     """
     p = m.planes
     b = N_ROTOR + k * N_PLANE
-    heat = ledger_at(len(p.active)) + L_HEAT + 3 * k
+    heat = ledger_of(m) + L_HEAT + 3 * k
     a = p.position[k]
     r = p.journal_radius[k]
     s = p.clearance[k]
     veps = p.slip_velocity[k]
-    # journal axis point and its velocity (the axis point itself: rho = 0)
-    jx = y[X] + a * y[TY]
-    jy = y[Y] - a * y[TX]
+    # journal axis point, with the velocity the elastic modes add to every point of the journal's section
+    jx, jy, evx, evy = journal_point(y, m, k)
     rx, ry, rz = y[b + RX], y[b + RY], y[b + RZ]
     rvx, rvy, rvz, rw = y[b + RVX], y[b + RVY], y[b + RVZ], y[b + ROMEGA]
     fx_r = 0.0  # forces and torque ON the race
@@ -367,6 +437,8 @@ def plane_forces(k, y, m, kin, q, out, diag):
         ny = dy / dist
         rho_x, rho_y = r * nx, r * ny
         vpx, vpy, vpz = _point_velocity(y, kin, a, rho_x, rho_y)
+        vpx += evx
+        vpy += evy
         arm = r + s  # race material point at the bore, where the journal touches it
         vqx = rvx - rw * arm * ny
         vqy = rvy + rw * arm * nx
@@ -382,6 +454,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
         cfx = -fn * nx + ffx  # on the rotor
         cfy = -fn * ny + ffy
         _apply_rotor(q, kin, a, rho_x, rho_y, cfx, cfy, ffz)
+        _apply_modes(m, k, cfx, cfy)
         fx_r -= cfx
         fy_r -= cfy
         fz_r -= ffz
@@ -420,10 +493,11 @@ def plane_forces(k, y, m, kin, q, out, diag):
             beta = 2.0 * math.pi * i / FACE_POINTS
             ox, oy = rf * math.cos(beta), rf * math.sin(beta)
             vax, vay, _ = _point_velocity(y, kin, a, rho_cx + ox, rho_cy + oy)
-            slip_x = vax - (rvx - rw * oy)
-            slip_y = vay - (rvy + rw * ox)
+            slip_x = vax + evx - (rvx - rw * oy)
+            slip_y = vay + evy - (rvy + rw * ox)
             gx, gy, _ = _friction(mu_share, slip_x, slip_y, 0.0, veps)
             _apply_rotor(q, kin, a, rho_cx + ox, rho_cy + oy, gx, gy, 0.0)
+            _apply_modes(m, k, gx, gy)
             fx_r -= gx
             fy_r -= gy
             t_r -= ox * gy - oy * gx
@@ -455,7 +529,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
     fy_r += fey + dampy
     fz_r += fez + dampz
     out[heat + 1] += cb * (relx * relx + rely * rely + relz * relz)
-    out[ledger_at(len(p.active)) + L_BALLSET_WORK] -= fex * relx + fey * rely + fez * relz
+    out[ledger_of(m) + L_BALLSET_WORK] -= fex * relx + fey * rely + fez * relz
     ring_fx = -fex - dampx
     ring_fy = -fey - dampy
     fe = math.sqrt(fex * fex + fey * fey)
@@ -528,6 +602,32 @@ def plane_forces_once(k, y, m, kin, q, out, diag):
 
 # ----------------------------------------------------------------------------- the machine
 @njit(cache=True)
+def _modal_rates(y, m, kin, om, q, out, n_planes, nm, ledger):
+    """The elastic modes' rates (module docstring), their damping's heat, and their gyroscopic moment on the tilts.
+
+    Called, not inlined: a rigid rotor never takes it, and the right-hand side compiles for both.
+    """
+    md = m.modes
+    at = N_ROTOR + n_planes * N_PLANE
+    tilt = m.rotor.tilt_free
+    loss = 0.0
+    for j in range(nm):
+        rate = y[at + nm + j]
+        acc = m.scratch[_QM + j] - md.stiffness[j] * y[at + j]
+        for i in range(nm):
+            other = y[at + nm + i]
+            acc -= (md.damping[j, i] + om * md.gyroscopic[j, i]) * other
+            loss += rate * md.damping[j, i] * other
+        if tilt:
+            acc += om * (md.tilt_gyroscopic[0, j] * kin[8] + md.tilt_gyroscopic[1, j] * kin[9])
+            q[3] -= om * md.tilt_gyroscopic[0, j] * rate
+            q[4] -= om * md.tilt_gyroscopic[1, j] * rate
+        out[at + j] = rate
+        out[at + nm + j] = acc
+    out[ledger + L_HEAT + 3 * n_planes] = loss
+
+
+@njit(cache=True)
 def rhs(t, y, m, out):
     """dy/dt of the machine (module docstring); ledger rates included.
 
@@ -549,6 +649,10 @@ def rhs(t, y, m, out):
     q = m.scratch[_Q:_Q + 6]  # generalised forces on G (3), theta_p (2), phi
     for i in range(6):
         q[i] = 0.0
+    md = m.modes
+    nm = md.stiffness.shape[0]
+    for j in range(nm):
+        m.scratch[_QM + j] = 0.0
     n_planes = len(m.planes.active)
     for k in range(n_planes):
         if m.planes.active[k] > 0.0:
@@ -563,7 +667,7 @@ def rhs(t, y, m, out):
     drag = -(rotor.drag_constant * math.tanh(om / rotor.drag_speed_scale) + rotor.drag_viscous * om
              + rotor.drag_windage * om * abs(om))
     q[5] += drag + rotor.process_torque
-    ledger = ledger_at(n_planes)
+    ledger = ledger_at(n_planes, nm)
     out[ledger + L_WORK_IN] = (rotor.force_x * vgx + rotor.force_y * vgy + rotor.force_z * y[VZ]
                                + rotor.process_torque * om)
     out[ledger + L_DRAG_LOSS] = -drag * om
@@ -583,6 +687,8 @@ def rhs(t, y, m, out):
     if rotor.axial_free:
         out[Z] = y[VZ]
         out[VZ] = q[2] / mass + rotor.gravity_z
+    if nm > 0:
+        _modal_rates(y, m, kin, om, q, out, n_planes, nm, ledger)
     if rotor.tilt_free:
         jt = rotor.transverse_inertia
         gyro = rotor.polar_inertia * om
@@ -600,9 +706,10 @@ def energy(y, m):
     """Mechanical energy at a state [J]: kinetic, gravity, and the elastic energy of the contacts and mounts.
 
     Kinetic energy of the rotor in the form the equations conserve (m |G'|^2 + J_t |theta_p'|^2 +
-    J_p Omega^2)/2, plus races (translation, spin) and outer rings. Elastic: the line contacts
-    (9/19) K_l delta^(19/9) (integral of Eq. 19's elastic part), the axial faces, the mount springs
-    and stops. The ball sets' energy is the ledger entry ``ballset_work`` (work done on them).
+    J_p Omega^2 + |eta'|^2)/2 with the modes' strain energy omega_j^2 eta_j^2 / 2, plus races (translation, spin)
+    and outer rings. Elastic: the line contacts (9/19) K_l delta^(19/9) (integral of Eq. 19's elastic part),
+    the axial faces, the mount springs and stops. The ball sets' energy is the ledger entry ``ballset_work``
+    (work done on them).
     """
     rotor = m.rotor
     p = m.planes
@@ -617,6 +724,12 @@ def energy(y, m):
     be = y[PHI] + rotor.unbalance_phase
     gx_, gy_ = y[X] + e * math.cos(be), y[Y] + e * math.sin(be)
     potential = -rotor.mass * (rotor.gravity_x * gx_ + rotor.gravity_y * gy_ + rotor.gravity_z * y[Z])
+    md = m.modes
+    nm = md.stiffness.shape[0]
+    at = N_ROTOR + len(p.active) * N_PLANE
+    for j in range(nm):
+        kinetic += 0.5 * y[at + nm + j] ** 2
+        potential += 0.5 * md.stiffness[j] * y[at + j] ** 2
     for k in range(len(p.active)):
         if p.active[k] <= 0.0:
             continue
@@ -625,8 +738,8 @@ def energy(y, m):
         kinetic += 0.5 * mr * (y[b + RVX] ** 2 + y[b + RVY] ** 2 + y[b + RVZ] ** 2)
         kinetic += 0.5 * p.race_inertia[k] * y[b + ROMEGA] ** 2
         potential -= mr * (rotor.gravity_x * y[b + RX] + rotor.gravity_y * y[b + RY] + rotor.gravity_z * y[b + RZ])
-        a = p.position[k]
-        dist = math.hypot(y[X] + a * y[TY] - y[b + RX], y[Y] - a * y[TX] - y[b + RY])
+        jx, jy, _, _ = journal_point(y, m, k)
+        dist = math.hypot(jx - y[b + RX], jy - y[b + RY])
         delta = dist - p.clearance[k]
         if delta > 0.0:
             potential += p.line_stiffness[k] * 9.0 / 19.0 * delta ** (19.0 / 9.0)
@@ -657,7 +770,7 @@ def energy_balance(y, m, e0):
     term, so the relative error means something when the start energy is near zero (a rotor at rest).
     """
     kinetic, potential = energy(y, m)
-    ledger = ledger_at(len(m.planes.active))
+    ledger = ledger_of(m)
     heat = 0.0
     for i in range(ledger + L_HEAT, y.size):
         heat += y[i]

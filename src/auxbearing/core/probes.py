@@ -23,10 +23,7 @@ from auxbearing.core.machine import (
     RX,
     RY,
     RZ,
-    TX,
-    TY,
-    X,
-    Y,
+    journal_point,
     plane_forces_once,
     rotor_kinematics,
     row_displacement,
@@ -98,8 +95,8 @@ def gap(y, m, k):
 def orbit(y, m, k):
     """Journal centre relative to the outer-ring centre of plane k (x, y) [m]."""
     b = N_ROTOR + k * N_PLANE
-    a = m.planes.position[k]
-    return y[X] + a * y[TY] - y[b + OX], y[Y] - a * y[TX] - y[b + OY]
+    jx, jy, _, _ = journal_point(y, m, k)
+    return jx - y[b + OX], jy - y[b + OY]
 
 
 @njit(cache=True)

@@ -32,6 +32,7 @@ from auxbearing.machine.params import (
     hollow_cylinder,
     steel_column_stiffness,
 )
+from auxbearing.machine.structure import ModalRotor, RotorStructure, modal_rotor, read_structure
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
 JOURNAL_COMPLIANCE = (1.0 - 0.3**2) / 207e9
@@ -136,6 +137,34 @@ class MachineRotor:
     side_force_y: float = 0.0
     start_x: float = 0.0
     start_y: float = 0.0
+    max_mode_frequency: float = 3000.0  #: [Hz] elastic modes kept (with a structure)
+    modal_damping: float = 0.01  #: damping ratio added to each elastic mode
+    #: the rotor as matrices (:mod:`auxbearing.machine.structure`); None: the rigid rotor of mass and inertias
+    structure: RotorStructure | None = None
+
+    def __post_init__(self) -> None:
+        if self.structure is None:
+            return
+        body = modal_rotor(self.structure)
+        for key, value, own in (("mass", self.mass, body.mass), ("polar_inertia", self.polar_inertia,
+                                                                    body.polar_inertia),
+                                ("transverse_inertia", self.transverse_inertia, body.transverse_inertia)):
+            if value is None or not math.isclose(value, own, rel_tol=1e-9):
+                raise InputError.for_field(f"rotor.{key}", value, f"must be the matrices' own value {own:.9g} (SI); "
+                                           "build the rotor with MachineRotor.from_structure")
+
+    @classmethod
+    def from_structure(cls, structure: RotorStructure, speed: float, **values) -> MachineRotor:
+        """The rotor of a structure: its mass and inertias from the matrices, the rest as given (SI)."""
+        body = modal_rotor(structure)
+        return cls(mass=body.mass, polar_inertia=body.polar_inertia, transverse_inertia=body.transverse_inertia,
+                   speed=speed, structure=structure, **values)
+
+    def modal(self) -> ModalRotor | None:
+        """The structure's rigid body and kept elastic modes (None: a rigid rotor)."""
+        if self.structure is None:
+            return None
+        return modal_rotor(self.structure, 2.0 * math.pi * self.max_mode_frequency, self.modal_damping)
 
 
 @dataclass(frozen=True)
@@ -235,6 +264,10 @@ class Machine:
             if any(abs(other.position - plane.position) < 1e-6 for other in self.planes[:j]):
                 raise InputError.for_field(f"touchdown.{j}.position", f"{plane.position * 1e3:g} mm",
                                            "touchdown planes must sit at different axial positions")
+        modal = self.rotor.modal()
+        if modal is not None and modal.n_modes:  # a rigid structure's planes may sit anywhere
+            for j, plane in enumerate(self.planes):
+                modal.node_at(plane.position, f"touchdown.{j}.position")
 
     @property
     def tilt_free(self) -> bool:
@@ -481,11 +514,27 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     for key in head:
         if key not in MACHINE_KEYS:
             raise unknown(f"machine.{key}", head[key], key, MACHINE_KEYS)
-    rotor_values = read_table(data.get("rotor"), TABLES["rotor"], "rotor.")
+    rotor_table = data.get("rotor")
+    structure = None
+    if isinstance(rotor_table, dict) and "matrices" in rotor_table:
+        rotor_table = dict(rotor_table)
+        structure = read_structure(_text(rotor_table, "matrices", "rotor.", ""), base, "rotor.matrices")
+        del rotor_table["matrices"]
+    rotor_values = read_table(rotor_table, TABLES["rotor"], "rotor.")
+    if structure is not None:
+        for key in ("mass", "polar_inertia", "transverse_inertia"):
+            if key in rotor_values:
+                raise InputError.for_field(f"rotor.{key}", rotor_table[key],
+                                           "comes from rotor.matrices; give one or the other")
+        body = modal_rotor(structure)
+        rotor_values.update(mass=body.mass, polar_inertia=body.polar_inertia,
+                            transverse_inertia=body.transverse_inertia)
     for key in ("mass", "polar_inertia", "speed"):
         if key not in rotor_values:
-            raise InputError(f"rotor.{key}: missing; a machine's [rotor] needs mass, polar_inertia and speed")
-    rotor = MachineRotor(**{k: rotor_values.get(k, default("rotor", k)) for k in TABLES["rotor"]})
+            raise InputError(f"rotor.{key}: missing; a machine's [rotor] needs mass, polar_inertia and speed "
+                             "(or rotor.matrices and speed)")
+    rotor = MachineRotor(**{k: rotor_values.get(k, default("rotor", k)) for k in TABLES["rotor"]},
+                         structure=structure)
     tables = data.get("touchdown")
     if not isinstance(tables, list) or not tables or not all(isinstance(t, dict) for t in tables):
         raise InputError.for_field("touchdown", tables, "give one or more [[touchdown]] tables")

@@ -121,6 +121,19 @@ def _limits(machine: Machine) -> cm.Limits:
                      sim.energy_tolerance)
 
 
+def _modes(machine: Machine, blocks: int) -> cm.Modes:
+    """The rotor's elastic modes as the kernel takes them, with their shapes at each plane (none: rigid)."""
+    modal = machine.rotor.modal()
+    if modal is None or modal.n_modes == 0:
+        return cm.rigid_modes(blocks)
+    shape_x, shape_y = np.zeros((blocks, modal.n_modes)), np.zeros((blocks, modal.n_modes))
+    for k, p in enumerate(machine.planes):
+        shape_x[k], shape_y[k] = modal.station_shapes(p.position, f"touchdown.{k}.position")
+    return cm.Modes(modal.frequencies ** 2, np.ascontiguousarray(modal.modal_damping),
+                    np.ascontiguousarray(modal.modal_gyroscopic), np.ascontiguousarray(modal.tilt_gyroscopic),
+                    shape_x, shape_y)
+
+
 def pack(machine: Machine) -> KernelModel:
     """The machine as :mod:`auxbearing.core.machine` takes it: parameters, initial state, tolerances, energy."""
     r = machine.rotor
@@ -145,8 +158,11 @@ def pack(machine: Machine) -> KernelModel:
     clearance = np.zeros(n)
     for k, p in enumerate(planes):
         clearance[k] = p.bearing.diametral_clearance
-    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine), *cm.new_scratch(n))
-    layout = cm.layout(n)
+    modes = _modes(machine, n)
+    nm = modes.stiffness.shape[0]
+    core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine),
+                      *cm.new_scratch(n, nm), modes)
+    layout = cm.layout(n, nm)
     y0 = np.zeros(layout.size)
     y0[cm.OMEGA] = r.speed
     y0[cm.X], y0[cm.Y] = r.start_x, r.start_y
@@ -175,6 +191,12 @@ def pack(machine: Machine) -> KernelModel:
         if p.mount is not None:
             for i, sc in ((cm.OX, s), (cm.OY, s), (cm.OVX, v), (cm.OVY, v)):
                 atol[b + i] = sim.atol * sc
+    if nm:
+        # a mode's coordinate is in m sqrt(kg): scaled by its largest displacement at a plane
+        reach = np.maximum(np.abs(modes.shape_x).max(axis=0), np.abs(modes.shape_y).max(axis=0))
+        reach = np.maximum(reach, 1e-300)
+        atol[layout.modes_at:layout.modes_at + nm] = sim.atol * s / reach
+        atol[layout.modes_at + nm:layout.modes_at + 2 * nm] = sim.atol * v / reach
     settings = ig.Settings(sim.rtol, atol, sim.max_step, 1e-14, 20000, sim.output_step)
     kinetic, potential = cm.energy(y0, core)
     return KernelModel(core, y0, settings, kinetic + potential, layout)

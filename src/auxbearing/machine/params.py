@@ -34,7 +34,16 @@ ROTOR: tuple[Param, ...] = (
     Param("rotor", "side_force_y", "force", 0.0, "N", "finite", "Constant radial process force along y", "ours"),
     Param("rotor", "start_x", "length", 0.0, "mm", "finite", "Journal-axis position at the drop, x", "ours: centred"),
     Param("rotor", "start_y", "length", 0.0, "mm", "finite", "Journal-axis position at the drop, y", "ours: centred"),
+    Param("rotor", "max_mode_frequency", "frequency", 3000.0, "Hz", "positive",
+          "With rotor.matrices: highest free-free natural frequency of the elastic modes kept (a mode's partner "
+          "of equal frequency is kept with it)", "ours: above the drop's bounce and whirl content"),
+    Param("rotor", "modal_damping", "dimensionless", 0.01, "", "unit_interval",
+          "With rotor.matrices: viscous damping ratio added to each elastic mode (beside the matrices' own C)",
+          "ours: between a solid steel shaft (about 0.002) and a built-up rotor (about 0.02)"),
 )
+#: Text keys of ``[rotor]``: ``matrices`` names a ``.npz`` file of the free-free rotor's matrices
+#: (:func:`auxbearing.machine.structure.read_structure`); mass and inertias then come from it.
+ROTOR_TEXT = ("matrices",)
 
 TOUCHDOWN: tuple[Param, ...] = (
     Param("touchdown", "position", "length", 0.0, "mm", "finite",

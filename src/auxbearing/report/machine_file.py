@@ -34,7 +34,8 @@ This page is generated: `python -m auxbearing.report.machine_file > docs/machine
 | table | what it holds |
 |---|---|
 | `[machine]` | `name`, `orientation` (`horizontal` or `vertical`), `source` (where the numbers come from) |
-| `[rotor]` | the rigid rotor: mass, inertias, speed, unbalance, process loads |
+| `[rotor]` | the rotor: mass and inertias (a rigid rotor) or `matrices` (an elastic one), speed, unbalance, \
+process loads |
 | `[[touchdown]]` | one per touchdown plane (one or more): bearing, clearances, mount, friction, heat |
 | `[drop]` | the drop simulation: duration, tolerances, budgets |
 | `[coastdown]` | drag of the rotor and the ambient, for `coastdown` and `verify` |
@@ -52,6 +53,13 @@ file (relative to the machine file) or an inline table with the keys of a bearin
 1, 2 and 4 % of a row's C0), a force (`"500 N"`) or an axial offset (`"8 um"`), given in the name
 (`"7208 DB medium"`) or as the key `preload`. A default written as "derived" is computed from the bearing
 or the rotor and stated in the reports.
+
+In `[rotor]`, `matrices = "rotor.npz"` (relative to the machine file) gives the free-free rotor as matrices: a
+NumPy `.npz` of the arrays `M`, `K`, `G` (the gyroscopic matrix, to be multiplied by the spin speed), `nodes`
+(the nodes' axial positions in metres) and optionally `C`, in SI, over four degrees of freedom per node in the
+order x, y, theta_x, theta_y, with theta_y = dx/dz and theta_x = -dy/dz. Mass and inertias then come from the
+matrices (give neither), `position` of each `[[touchdown]]` (from the mass centre) must sit on a node, and the
+rotor bends in its free-free elastic modes up to `max_mode_frequency`.
 """
 
 

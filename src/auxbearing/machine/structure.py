@@ -1,0 +1,251 @@
+"""The rotor as a linear structure: mass, stiffness, damping and gyroscopic matrices over its nodes.
+
+A rotor is given by its matrices over four lateral degrees of freedom per node, in the order
+(x, y, theta_x, theta_y) with the machine's signs: a node at axial position z of a rotor tilted rigidly by
+(theta_x, theta_y) about its mass centre z_G moves by x = (z - z_G) theta_y, y = -(z - z_G) theta_x, and
+
+    M q'' + (C + Omega G) q' + K q = f,
+
+with G skew, G[theta_x, theta_y] = +J_p for a disk of polar inertia J_p (the signs of the kernel's rigid
+rotor, Friswell, Penny, Garvey & Lees, *Dynamics of Rotating Machines*, 2010, Eq. 3.63-3.66). The shaft is
+free-free: its touchdown planes, bearings and seals are stations, not terms of K.
+
+The kernels take the structure as a rigid body (mass, J_t, J_p about the mass centre: the rigid rotor the
+drop has always integrated, with its exact unbalance kinematics) plus the structure's free-free elastic modes,
+mass-normalised, which are M-orthogonal to the rigid motions (modal superposition about the mean axes of a
+free-free body: Shabana, *Dynamics of Multibody Systems*, 3rd ed. 2005, Ch. 5, the floating frame of
+reference; modal reduction of rotors in Friswell et al. 2010, Ch. 6). The two parts couple only through
+the gyroscopic matrix and through the forces at the stations. The rigid rotor of a machine file is the
+structure of one node with no elastic mode (:func:`rigid_structure`); :func:`beam_structure` builds a stepped
+Euler-Bernoulli shaft with disks.
+
+Here: SI floats and numpy arrays; units are read at the machine file's boundary.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from scipy.linalg import eigh
+
+from auxbearing.common.errors import InputError
+
+DOFS_PER_NODE = 4
+#: Offsets of a node's degrees of freedom in its block of four.
+UX, UY, TX, TY = range(DOFS_PER_NODE)
+#: Largest distance between a station and the node it is put on [m].
+NODE_TOLERANCE = 1e-6
+
+
+@dataclass(frozen=True, eq=False)
+class RotorStructure:
+    """A free-free rotor's matrices (SI) over ``4 len(nodes)`` degrees of freedom (module docstring)."""
+
+    mass: np.ndarray  #: M [kg, kg m, kg m^2]
+    stiffness: np.ndarray  #: K [N/m, N, N m]
+    gyroscopic: np.ndarray  #: G, multiplied by the spin speed [kg m^2]
+    nodes: np.ndarray  #: axial position of each node [m], in the structure's own frame
+    damping: np.ndarray | None = None  #: C [N s/m, ...] (internal damping of the shaft; None: none)
+    source: str = "matrices"
+
+    def __post_init__(self) -> None:
+        n = DOFS_PER_NODE * len(self.nodes)
+        for name in ("mass", "stiffness", "gyroscopic", "damping"):
+            value = getattr(self, name)
+            if value is None:
+                continue
+            value = np.asarray(value, float)
+            if value.shape != (n, n) or not np.all(np.isfinite(value)):
+                raise InputError.for_field(f"rotor.matrices.{name}", f"shape {value.shape}",
+                                           f"must be a finite {n} x {n} matrix: four lateral DOFs per node")
+            object.__setattr__(self, name, value)
+        if not np.allclose(self.mass, self.mass.T, rtol=1e-9, atol=0.0) or not np.allclose(
+                self.stiffness, self.stiffness.T, rtol=1e-9, atol=1e-12 * np.abs(self.stiffness).max()):
+            raise InputError.for_field("rotor.matrices", "M or K", "must be symmetric")
+        if not np.allclose(self.gyroscopic, -self.gyroscopic.T, atol=1e-12 * max(np.abs(self.gyroscopic).max(), 1.0)):
+            raise InputError.for_field("rotor.matrices.gyroscopic", "G", "must be skew-symmetric (G = -G^T)")
+
+    def rigid_modes(self, centre: float) -> np.ndarray:
+        """(4n, 4): translations x, y and tilts theta_x, theta_y about the axial position ``centre`` (columns)."""
+        n = len(self.nodes)
+        r = np.zeros((DOFS_PER_NODE * n, 4))
+        arm = self.nodes - centre
+        r[UX::4, 0] = 1.0
+        r[UY::4, 1] = 1.0
+        r[UY::4, 2] = -arm
+        r[TX::4, 2] = 1.0
+        r[UX::4, 3] = arm
+        r[TY::4, 3] = 1.0
+        return r
+
+
+@dataclass(frozen=True, eq=False)
+class ModalRotor:
+    """A structure split for the kernels: its rigid body and its elastic free-free modes (module docstring)."""
+
+    mass: float  #: [kg]
+    transverse_inertia: float  #: J_t about the mass centre [kg m^2]
+    polar_inertia: float  #: J_p [kg m^2]
+    centre: float  #: axial position of the mass centre in the structure's frame [m]
+    frequencies: np.ndarray  #: (n_modes,) free-free natural frequencies at rest [rad/s]
+    shapes: np.ndarray  #: (4 n_nodes, n_modes) mass-normalised mode shapes [1/sqrt(kg)]
+    modal_damping: np.ndarray  #: (n_modes, n_modes) Phi^T C Phi + diag(2 zeta omega) [1/s]
+    modal_gyroscopic: np.ndarray  #: (n_modes, n_modes) Phi^T G Phi [-]
+    tilt_gyroscopic: np.ndarray  #: (2, n_modes) R_tilt^T G Phi: the rigid tilts' coupling to the modes [sqrt(kg) m]
+    nodes: np.ndarray  #: node positions from the mass centre [m]
+
+    @property
+    def n_modes(self) -> int:
+        """Elastic modes kept."""
+        return len(self.frequencies)
+
+    def node_at(self, position: float, key: str) -> int:
+        """Index of the node at ``position`` from the mass centre [m]; ``key`` names the input for the error."""
+        i = int(np.argmin(np.abs(self.nodes - position)))
+        if abs(self.nodes[i] - position) > NODE_TOLERANCE:
+            raise InputError.for_field(key, f"{position * 1e3:g} mm", "must sit on a node of the rotor's matrices "
+                                       f"(nearest: {self.nodes[i] * 1e3:g} mm from the mass centre)")
+        return i
+
+    def station_shapes(self, position: float, key: str) -> tuple[np.ndarray, np.ndarray]:
+        """Each mode's x and y displacement at the node at ``position`` from the mass centre."""
+        i = self.node_at(position, key)
+        return self.shapes[DOFS_PER_NODE * i + UX], self.shapes[DOFS_PER_NODE * i + UY]
+
+
+def rigid_structure(mass: float, transverse_inertia: float, polar_inertia: float) -> RotorStructure:
+    """The rigid rotor as matrices: one node at the mass centre, no stiffness (it has no elastic mode)."""
+    m = np.diag([mass, mass, transverse_inertia, transverse_inertia])
+    g = np.zeros((4, 4))
+    g[TX, TY], g[TY, TX] = polar_inertia, -polar_inertia
+    return RotorStructure(m, np.zeros((4, 4)), g, np.zeros(1), source="rigid rotor")
+
+
+def modal_rotor(structure: RotorStructure, max_frequency: float = math.inf, damping_ratio: float = 0.0
+                ) -> ModalRotor:
+    """Rigid body and elastic modes of a free-free structure up to ``max_frequency`` [rad/s] (module docstring).
+
+    The four rigid motions are the kernel's rotor; a mode is kept with its degenerate partner (an axisymmetric
+    shaft has each bending mode twice, in x and in y), so the cut never splits a pair. ``damping_ratio`` adds
+    modal viscous damping 2 zeta omega to the structure's own C.
+    """
+    s = structure
+    m_mat, k_mat = s.mass, s.stiffness
+    origin = s.rigid_modes(0.0)
+    mass = float(origin[:, 0] @ m_mat @ origin[:, 0])
+    if not mass > 0.0:
+        raise InputError.for_field("rotor.matrices.mass", f"{mass:g} kg", "must give the rotor a positive mass")
+    centre = float(origin[:, 0] @ m_mat @ origin[:, 3]) / mass
+    rigid = s.rigid_modes(centre)
+    rigid_mass = rigid.T @ m_mat @ rigid
+    jt = 0.5 * (rigid_mass[2, 2] + rigid_mass[3, 3])
+    jp = float(rigid[:, 2] @ s.gyroscopic @ rigid[:, 3])
+    if np.abs(k_mat @ rigid).max() > 1e-6 * max(np.abs(k_mat).max(), 1.0):
+        raise InputError.for_field("rotor.matrices.stiffness", "K",
+                                   "ties the rotor to the ground: give the free-free shaft (its bearings are stations)")
+    n = m_mat.shape[0]
+    if n > 4:
+        values, vectors = eigh(k_mat, m_mat)
+        values, vectors = values[4:], vectors[:, 4:]  # the four rigid motions: K r = 0
+        omega = np.sqrt(np.clip(values, 0.0, None))
+        keep = int(np.searchsorted(omega, max_frequency, side="right"))
+        while 0 < keep < len(omega) and omega[keep] <= omega[keep - 1] * (1.0 + 1e-6):
+            keep += 1
+        omega, phi = omega[:keep], vectors[:, :keep]
+        # clean the modes of any rigid part (round-off), then mass-normalise again
+        phi = phi - rigid @ np.linalg.solve(rigid_mass, rigid.T @ m_mat @ phi)
+        phi = phi / np.sqrt(np.einsum("ij,ij->j", phi, m_mat @ phi))
+    else:
+        omega, phi = np.zeros(0), np.zeros((n, 0))
+    damping = np.diag(2.0 * damping_ratio * omega)
+    if s.damping is not None:
+        damping = damping + phi.T @ s.damping @ phi
+    return ModalRotor(mass, float(jt), jp, centre, omega, phi, damping, phi.T @ s.gyroscopic @ phi,
+                      rigid[:, 2:].T @ s.gyroscopic @ phi, s.nodes - centre)
+
+
+# ----------------------------------------------------------------------------- a shaft built here
+def _beam_element(length: float, ei: float, rho_a: float) -> tuple[np.ndarray, np.ndarray]:
+    """Euler-Bernoulli element in one lateral plane, DOFs (w1, w1', w2, w2'): stiffness and consistent mass.
+
+    The Hermite-cubic element (Przemieniecki, *Theory of Matrix Structural Analysis*, 1968: its beam stiffness
+    and consistent mass; the rotor form in Friswell et al. 2010, Ch. 5), without rotary inertia.
+    """
+    L = length
+    k = ei / L**3 * np.array([[12, 6 * L, -12, 6 * L], [6 * L, 4 * L * L, -6 * L, 2 * L * L],
+                              [-12, -6 * L, 12, -6 * L], [6 * L, 2 * L * L, -6 * L, 4 * L * L]])
+    m = rho_a * L / 420.0 * np.array([[156, 22 * L, 54, -13 * L], [22 * L, 4 * L * L, 13 * L, -3 * L * L],
+                                      [54, 13 * L, 156, -22 * L], [-13 * L, -3 * L * L, -22 * L, 4 * L * L]])
+    return k, m
+
+
+def beam_structure(nodes, outer_diameters, density: float, youngs_modulus: float, inner_diameters=None,
+                   disks=(), rotary_inertia: bool = True) -> RotorStructure:
+    """A stepped shaft of Euler-Bernoulli elements between ``nodes`` [m] with rigid disks on nodes.
+
+    ``outer_diameters`` (and ``inner_diameters``) give each element's section; ``disks`` are
+    (node index, mass, J_t, J_p). In the x-z plane w = x and w' = theta_y; in the y-z plane w = y and
+    w' = -theta_x (module docstring's signs). With ``rotary_inertia`` each element's transverse and polar
+    inertia is lumped half on each of its nodes (the polar part gives the shaft's gyroscopic terms).
+    """
+    nodes = np.asarray(nodes, float)
+    n = len(nodes)
+    outer = np.broadcast_to(np.asarray(outer_diameters, float), (n - 1,))
+    inner = np.zeros(n - 1) if inner_diameters is None else np.broadcast_to(np.asarray(inner_diameters, float),
+                                                                             (n - 1,))
+    size = DOFS_PER_NODE * n
+    m_mat, k_mat, g_mat = np.zeros((size, size)), np.zeros((size, size)), np.zeros((size, size))
+    for e in range(n - 1):
+        L = nodes[e + 1] - nodes[e]
+        area = math.pi / 4.0 * (outer[e] ** 2 - inner[e] ** 2)
+        second = math.pi / 64.0 * (outer[e] ** 4 - inner[e] ** 4)
+        ke, me = _beam_element(L, youngs_modulus * second, density * area)
+        for w, slope, sign in ((UX, TY, 1.0), (UY, TX, -1.0)):
+            dofs = [4 * e + w, 4 * e + slope, 4 * (e + 1) + w, 4 * (e + 1) + slope]
+            t = np.diag([1.0, sign, 1.0, sign])  # the plane's slope w' in the node's rotation
+            idx = np.ix_(dofs, dofs)
+            k_mat[idx] += t @ ke @ t
+            m_mat[idx] += t @ me @ t
+        if rotary_inertia:
+            for node in (e, e + 1):
+                half_t = 0.5 * density * second * L
+                m_mat[4 * node + TX, 4 * node + TX] += half_t
+                m_mat[4 * node + TY, 4 * node + TY] += half_t
+                g_mat[4 * node + TX, 4 * node + TY] += 2.0 * half_t
+                g_mat[4 * node + TY, 4 * node + TX] -= 2.0 * half_t
+    for node, mass, jt, jp in disks:
+        i = 4 * int(node)
+        m_mat[i + UX, i + UX] += mass
+        m_mat[i + UY, i + UY] += mass
+        m_mat[i + TX, i + TX] += jt
+        m_mat[i + TY, i + TY] += jt
+        g_mat[i + TX, i + TY] += jp
+        g_mat[i + TY, i + TX] -= jp
+    return RotorStructure(m_mat, k_mat, g_mat, nodes, source="beam")
+
+
+def read_structure(spec: str, base: Path | None, field: str) -> RotorStructure:
+    """A rotor's matrices from a ``.npz`` file (relative to ``base``): arrays M, K, G, nodes and optionally C (SI).
+
+    ``nodes`` are the axial positions of the nodes [m]; the matrices run over four DOFs per node in the order
+    and with the signs of the module docstring. ``field`` names the key in an error.
+    """
+    path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
+    if not path.is_file():
+        raise InputError.for_field(field, spec, "no such file (a .npz of the arrays M, K, G, nodes and optionally C)")
+    try:
+        with np.load(path, allow_pickle=False) as arrays:
+            data = {name: np.asarray(arrays[name], float) for name in arrays.files}
+    except (OSError, ValueError) as err:
+        raise InputError.for_field(field, spec, f"is not a readable .npz file ({err})") from None
+    for name in ("M", "K", "G", "nodes"):
+        if name not in data:
+            raise InputError.for_field(field, spec, f"has no array {name!r} (it holds {sorted(data)}); give M, K, G, "
+                                       "nodes and optionally C")
+    nodes = data["nodes"]
+    if nodes.ndim != 1 or len(nodes) < 1 or not np.all(np.isfinite(nodes)) or np.any(np.diff(nodes) <= 0.0):
+        raise InputError.for_field(field, spec, "its 'nodes' must be axial positions in metres, strictly increasing")
+    return RotorStructure(data["M"], data["K"], data["G"], nodes, data.get("C"), source=path.name)
