@@ -35,6 +35,8 @@ from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
 from auxbearing.machine.model import Machine
 from auxbearing.machine.pack import journal_pressure, pack
+from auxbearing.machine.stations import kinds as station_kinds
+from auxbearing.machine.stations import of_kind
 
 __all__ = ["MachineRun", "journal_orbit", "planar_view", "run_machine", "static_safety_factor", "whirl_window"]
 
@@ -286,6 +288,20 @@ def journal_centres(machine: Machine, model, grid: np.ndarray) -> tuple[np.ndarr
     return x, y
 
 
+def axis_at(model, grid: np.ndarray, position: float, shape_x, shape_y) -> tuple[np.ndarray, ...]:
+    """The rotor axis at an axial position on a grid of states: x, y, vx, vy [m, m/s], bending included."""
+    x = grid[:, cm.X] + position * grid[:, cm.TY]
+    y = grid[:, cm.Y] - position * grid[:, cm.TX]
+    vx = grid[:, cm.VX] + position * grid[:, cm.WY]
+    vy = grid[:, cm.VY] - position * grid[:, cm.WX]
+    layout = model.layout
+    if layout.modes:
+        n, at = layout.modes, layout.modes_at
+        x, y = x + grid[:, at:at + n] @ shape_x, y + grid[:, at:at + n] @ shape_y
+        vx, vy = vx + grid[:, at + n:at + 2 * n] @ shape_x, vy + grid[:, at + n:at + 2 * n] @ shape_y
+    return x, y, vx, vy
+
+
 def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: bool = False) -> xr.Dataset:
     """The time series of a run on its output grid (units in attrs)."""
     n = grid.shape[0]
@@ -305,6 +321,10 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
     if layout.modes:
         data["mode"] = (("time", "mode"), grid[:, layout.modes_at:layout.modes_at + layout.modes],
                         {"units": "m*kg**0.5", "long_name": "Elastic mode coordinate (mass-normalised shape)"})
+    for kind, params in zip(station_kinds(), model.machine.stations, strict=True):
+        def axis(i, position, params=params):
+            return axis_at(model, grid, position, params.shape_x[i], params.shape_y[i])
+        data.update(kind.series(of_kind(machine.stations, kind.KIND), axis))
     # per-ball states where they fit the memory cap; their largest stress is the plane's, so the
     # diagnostics need to evaluate the ball stresses only for planes without them
     states = {}

@@ -57,6 +57,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
+from auxbearing.core import linear_support
 from auxbearing.core.ballset import accumulate
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
 
@@ -106,6 +107,8 @@ class Layout(NamedTuple):
     modes: int = 0  #: elastic modes of the rotor
     modes_at: int = 0  #: first mode coordinate; their rates follow them
     structure_loss: int = -1  #: heat of the structure's damping (-1: a rigid rotor)
+    stations: tuple = ()  #: stations of each kind of :data:`STATION_KINDS` beside the planes
+    stations_at: int = 0  #: first ledger slot of those stations (each kind's LEDGER per station, kind by kind)
 
     def plane(self, k: int) -> int:
         """First index of plane k's block."""
@@ -116,20 +119,24 @@ class Layout(NamedTuple):
         return self.heat_at + 3 * k + source
 
 
-def layout(n_planes: int, n_modes: int = 0) -> Layout:
-    """The state layout of a machine packed with ``n_planes`` plane blocks and ``n_modes`` modes (module docstring)."""
+def layout(n_planes: int, n_modes: int = 0, stations: tuple = ()) -> Layout:
+    """The state layout of a machine: plane blocks, elastic modes, stations of each kind (module docstring)."""
     at = ledger_at.py_func(n_planes, n_modes)  # the kernels' own formula, run as Python
     modal = (*(f"mode_{j}" for j in range(n_modes)), *(f"mode_rate_{j}" for j in range(n_modes)))
     names = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_STATES), *modal, *LEDGER,
              *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_LEDGER),
              *(("structure_loss",) if n_modes else ()))
+    stations_at = len(names)
+    counts = tuple(stations) + (0,) * (len(STATION_KINDS) - len(stations))
+    for kind, count in zip(STATION_KINDS, counts, strict=True):
+        names += tuple(f"{name}_{i}" for i in range(count) for name in kind.LEDGER)
     return Layout(n_planes, len(names), at, at + L_WORK_IN, at + L_DRAG_LOSS, at + L_BALLSET_WORK, at + L_HEAT, names,
-                  n_modes, N_ROTOR + n_planes * N_PLANE, len(names) - 1 if n_modes else -1)
+                  n_modes, N_ROTOR + n_planes * N_PLANE, stations_at - 1 if n_modes else -1, counts, stations_at)
 
 
 def layout_of(m) -> Layout:
     """The state layout of a packed :class:`Machine`."""
-    return layout(len(m.planes.active), m.modes.stiffness.shape[0])
+    return layout(len(m.planes.active), m.modes.stiffness.shape[0], tuple(s.values.shape[0] for s in m.stations))
 
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
 #: integrates the first harmonics of the slip field exactly).
@@ -264,6 +271,14 @@ class Machine(NamedTuple):
     jac_stub: np.ndarray  #: (1, 1): the Jacobian argument of the ball-set kernel, unused here
     last_diag: np.ndarray  #: (planes, len(DIAG_FIELDS)): each plane's diagnostics at the last rhs call
     modes: Modes  #: the rotor's elastic modes (none: rigid)
+    stations: tuple  #: each kind of :data:`STATION_KINDS`' parameters, in that order
+
+
+#: The station kinds beside the touchdown planes, in the order of their states and ledger slots. A kind is a
+#: module like :mod:`auxbearing.core.linear_support` (NAME, FIELDS, STATES, LEDGER, Params, force, energy),
+#: registered here and called in :func:`_stations` and :func:`energy`; its machine-file table, description and
+#: packing are one module of :mod:`auxbearing.machine.stations`.
+STATION_KINDS = (linear_support,)
 
 
 #: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5), then
@@ -345,6 +360,49 @@ def _apply_modes(m, k, fx, fy):
     md = m.modes
     for j in range(md.stiffness.shape[0]):
         m.scratch[_QM + j] += md.shape_x[k, j] * fx + md.shape_y[k, j] * fy
+
+
+@njit(cache=True, inline="always")
+def station_point(y, m, a, shape_x, shape_y, i):
+    """The rotor axis at axial position a (a station's row i of shapes): x, y and their velocities [m, m/s]."""
+    jx = y[X] + a * y[TY]
+    jy = y[Y] - a * y[TX]
+    vx = y[VX] + a * y[WY]
+    vy = y[VY] - a * y[WX]
+    nm = m.modes.stiffness.shape[0]
+    at = N_ROTOR + len(m.planes.active) * N_PLANE
+    for j in range(nm):
+        jx += shape_x[i, j] * y[at + j]
+        jy += shape_y[i, j] * y[at + j]
+        vx += shape_x[i, j] * y[at + nm + j]
+        vy += shape_y[i, j] * y[at + nm + j]
+    return jx, jy, vx, vy
+
+
+@njit(cache=True, inline="always")
+def stations_ledger(m):
+    """First ledger slot of the stations beside the planes (after the planes' heats and the structure's loss)."""
+    nm = m.modes.stiffness.shape[0]
+    return ledger_of(m) + L_HEAT + 3 * len(m.planes.active) + (1 if nm > 0 else 0)
+
+
+@njit(cache=True)
+def _stations(y, m, kin, q, out):
+    """Forces of every station beside the touchdown planes on the rotor, and their ledger rates.
+
+    Called, not inlined: a machine without such stations runs only the empty loops.
+    """
+    at = stations_ledger(m)
+    supports = m.stations[0]
+    for i in range(supports.values.shape[0]):
+        row = supports.values[i]
+        jx, jy, vx, vy = station_point(y, m, row[0], supports.shape_x, supports.shape_y, i)
+        fx, fy, taken = linear_support.force(row, jx, jy, vx, vy)
+        _apply_rotor(q, kin, row[0], 0.0, 0.0, fx, fy, 0.0)
+        for j in range(m.modes.stiffness.shape[0]):
+            m.scratch[_QM + j] += supports.shape_x[i, j] * fx + supports.shape_y[i, j] * fy
+        out[at + i] = taken
+    at += supports.values.shape[0] * len(linear_support.LEDGER)
 
 
 @njit(cache=True, inline="always")
@@ -657,6 +715,8 @@ def rhs(t, y, m, out):
     for k in range(n_planes):
         if m.planes.active[k] > 0.0:
             plane_forces(k, y, m, kin, q, out, m.last_diag[k])
+    if m.stations[0].values.shape[0] > 0:
+        _stations(y, m, kin, q, out)
     om = y[OMEGA]
     mass = rotor.mass
     vgx = y[VX] + kin[0] * om
@@ -730,6 +790,10 @@ def energy(y, m):
     for j in range(nm):
         kinetic += 0.5 * y[at + nm + j] ** 2
         potential += 0.5 * md.stiffness[j] * y[at + j] ** 2
+    supports = m.stations[0]
+    for i in range(supports.values.shape[0]):
+        jx, jy, _, _ = station_point(y, m, supports.values[i, 0], supports.shape_x, supports.shape_y, i)
+        potential += linear_support.energy(supports.values[i], jx, jy)
     for k in range(len(p.active)):
         if p.active[k] <= 0.0:
             continue

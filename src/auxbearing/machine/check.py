@@ -31,10 +31,11 @@ from auxbearing.common.params import unknown
 from auxbearing.machine.combinations import SEAT_TOLERANCE, param_of, typed
 from auxbearing.machine.judging import CRITERIA_TABLE, candidate_tables, read_criteria, verify_settings
 from auxbearing.machine.model import Machine, machine_from_mapping, read_bearing_spec
+from auxbearing.machine.stations import TABLES as STATION_TABLES
 
 #: Tables of a machine file; a campaign file is a machine file whose ``[campaign]`` table is the campaign.
-MACHINE_FILE_TABLES = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", "criteria", "candidate",
-                       "verify", "campaign")
+MACHINE_FILE_TABLES = ("machine", "rotor", "touchdown", *STATION_TABLES, "drop", "coastdown", "life", "criteria",
+                       "candidate", "verify", "campaign")
 #: Keys of a ``[[candidate]]`` table.
 CANDIDATE_KEYS = ("name", "bearing")
 

@@ -32,6 +32,9 @@ from auxbearing.machine.params import (
     hollow_cylinder,
     steel_column_stiffness,
 )
+from auxbearing.machine.stations import TABLES as STATION_TABLES
+from auxbearing.machine.stations import kinds as station_kinds
+from auxbearing.machine.stations import of_kind
 from auxbearing.machine.structure import ModalRotor, RotorStructure, modal_rotor, read_structure
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
@@ -246,6 +249,8 @@ class Machine:
     source: str = "user input"
     coastdown: Coastdown = field(default_factory=Coastdown)
     life: Life = field(default_factory=Life)
+    #: stations beside the touchdown planes, of the kinds of :mod:`auxbearing.machine.stations`
+    stations: tuple = ()
 
     def __post_init__(self) -> None:
         if self.orientation not in ORIENTATIONS:
@@ -268,6 +273,9 @@ class Machine:
         if modal is not None and modal.n_modes:  # a rigid structure's planes may sit anywhere
             for j, plane in enumerate(self.planes):
                 modal.node_at(plane.position, f"touchdown.{j}.position")
+            for kind in station_kinds():
+                for i, station in enumerate(of_kind(self.stations, kind.KIND)):
+                    modal.node_at(station.position, f"{kind.KIND}.{i}.position")
 
     @property
     def tilt_free(self) -> bool:
@@ -326,6 +334,7 @@ class Machine:
                          "couple_unbalance_phase_deg": math.degrees(r.couple_unbalance_phase),
                          "axial_force_N": r.axial_force, "side_force_N": [r.side_force_x, r.side_force_y]},
                "planes": [_describe_plane(p) for p in self.planes],
+               "stations": [kind.describe(s) for kind in station_kinds() for s in of_kind(self.stations, kind.KIND)],
                "drop": {p.key: getattr(self.simulation, p.key) for p in SIMULATION},
                "coastdown": {**{p.key: getattr(self.coastdown, p.key) for p in COASTDOWN},
                              "vacuum": self.coastdown.vacuum},
@@ -504,7 +513,7 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     """
     from auxbearing.machine.combinations import check_combinations
 
-    allowed = ("machine", "rotor", "touchdown", "drop", "coastdown", "life", *OTHER_TABLES)
+    allowed = ("machine", "rotor", "touchdown", *STATION_TABLES, "drop", "coastdown", "life", *OTHER_TABLES)
     for key in data:
         if key not in allowed:
             raise unknown(f"[{key}]", "table", key, allowed, "table")
@@ -574,7 +583,8 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                       orientation=_text(head, "orientation", "machine.", "horizontal"),
                       simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
                       coastdown=Coastdown(**coast_values, vacuum=vacuum),
-                      life=Life(**life_values, dent_accumulation=accumulation))
+                      life=Life(**life_values, dent_accumulation=accumulation),
+                      stations=tuple(s for kind in station_kinds() for s in kind.read(data.get(kind.KIND))))
     check_combinations(data, machine)
     return machine
 

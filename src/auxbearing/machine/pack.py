@@ -16,6 +16,8 @@ from auxbearing.core import integrate as ig
 from auxbearing.core import machine as cm
 from auxbearing.core.hertz import journal_contact, journal_force_at_pressure
 from auxbearing.machine.model import DRAG_SPEED_SCALE, JOURNAL_COMPLIANCE, Machine, TouchdownPlane
+from auxbearing.machine.stations import kinds as station_kinds
+from auxbearing.machine.stations import of_kind
 
 
 class KernelModel(NamedTuple):
@@ -160,9 +162,11 @@ def pack(machine: Machine) -> KernelModel:
         clearance[k] = p.bearing.diametral_clearance
     modes = _modes(machine, n)
     nm = modes.stiffness.shape[0]
+    modal = machine.rotor.modal()
+    stations = tuple(kind.pack(of_kind(machine.stations, kind.KIND), modal, nm) for kind in station_kinds())
     core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine),
-                      *cm.new_scratch(n, nm), modes)
-    layout = cm.layout(n, nm)
+                      *cm.new_scratch(n, nm), modes, stations)
+    layout = cm.layout_of(core)
     y0 = np.zeros(layout.size)
     y0[cm.OMEGA] = r.speed
     y0[cm.X], y0[cm.Y] = r.start_x, r.start_y

@@ -37,6 +37,8 @@ This page is generated: `python -m auxbearing.report.machine_file > docs/machine
 | `[rotor]` | the rotor: mass and inertias (a rigid rotor) or `matrices` (an elastic one), speed, unbalance, \
 process loads |
 | `[[touchdown]]` | one per touchdown plane (one or more): bearing, clearances, mount, friction, heat |
+| `[[linear_support]]` | one per linear station (a seal, a damper, a linearised bearing): `name`, position, \
+stiffness and damping coefficients |
 | `[drop]` | the drop simulation: duration, tolerances, budgets |
 | `[coastdown]` | drag of the rotor and the ambient, for `coastdown` and `verify` |
 {life_row}
@@ -73,8 +75,10 @@ _INTRO = _INTRO.replace("{life_row}", _LIFE_ROW)
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
     from auxbearing.machine.judging import CRITERIA, VERIFY
     from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN
+    from auxbearing.machine.stations import kinds
 
-    return [("rotor", ROTOR), ("touchdown", TOUCHDOWN), ("drop", SIMULATION), ("coastdown", COASTDOWN),
+    stations = [(kind.KIND, kind.PARAMS) for kind in kinds()]
+    return [("rotor", ROTOR), ("touchdown", TOUCHDOWN), *stations, ("drop", SIMULATION), ("coastdown", COASTDOWN),
             ("life", LIFE), ("criteria", CRITERIA), ("verify", VERIFY)]
 
 
@@ -111,9 +115,11 @@ def _campaign() -> list[str]:
 
 def markdown() -> str:
     """The whole reference as Markdown text."""
+    from auxbearing.machine.stations import TABLES
+
     lines = [_INTRO]
     for name, rows in _sections():
-        header = f"[[{name}]]" if name == "touchdown" else f"[{name}]"
+        header = f"[[{name}]]" if name in ("touchdown", *TABLES) else f"[{name}]"
         lines += [f"## `{header}`", "", "| key | unit | default | meaning | source |", "|---|---|---|---|---|"]
         for p in rows:
             unit = p.display_unit or si_unit(p.dimension) or "-"
