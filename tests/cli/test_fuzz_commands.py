@@ -290,6 +290,17 @@ VERIFY = [
     case("verify-out-file", "verify --machine blower --out afile", "--out", "afile", files=A_FILE),
 ]
 
+MODES = [
+    case("modes-speeds-text", "modes --machine blower --speeds abc", "--speeds", "abc"),
+    case("modes-speeds-negative", "modes --machine blower --speeds '-100 rpm'", "--speeds", "-100 rpm"),
+    case("modes-speeds-mass", "modes --machine blower --speeds '0, 5 kg'", "--speeds", "5 kg"),
+    case("modes-speeds-empty", "modes --machine blower --speeds ','", "--speeds", ","),
+    case("modes-points-one", "modes --machine blower --points 1", "--points", "1"),
+    case("modes-machine-missing", "modes --machine nofile.toml", "--machine", "nofile.toml"),
+    case("modes-out-file", "modes --machine blower --out afile", "--out", "afile", files=A_FILE),
+    case("modes-json", "modes --machine blower --json", expect="ok"),
+]
+
 OTHERS = [
     case("top-unknown-command", "nocommand", "nocommand"),
     case("bearings-extra", "bearings extra", "extra"),
@@ -299,7 +310,7 @@ OTHERS = [
 ]
 
 CASES = [*CONTACT, *SWEEP, *STATIC, *STATIC_CASES, *STATIC_STUDY, *DROP, *DROP_COMPARE, *EXPERIMENT, *COASTDOWN,
-         *STUDY, *CAMPAIGN, *VERIFY, *BUDGETS, *OTHERS]
+         *STUDY, *CAMPAIGN, *VERIFY, *BUDGETS, *MODES, *OTHERS]
 
 
 def _measured_placeholder(c):

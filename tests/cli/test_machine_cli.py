@@ -1,7 +1,9 @@
 """The machine commands: drop --machine, machines, coastdown (issues 12 and 13)."""
 
 import json
+from pathlib import Path
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -106,3 +108,32 @@ def test_coastdown_bad_duration_is_one_line_and_writes_nothing(tmp_path):
     result = _run("coastdown", "--machine", "paper_rig", "--duration", "-3 s", "--out", str(out))
     assert result.exit_code == 2 and result.stderr.startswith("error: --duration")
     assert not out.exists()
+
+
+def test_modes_of_the_elastic_compressor_write_the_campbell_diagram(tmp_path):
+    out = tmp_path / "modes"
+    r = CliRunner().invoke(cli, ["modes", "--machine", "compressor", "--speeds", "0, 7500, 15000 rpm", "--out",
+                                 str(out), "--json"], catch_exceptions=False)
+    assert r.exit_code == 0, r.output
+    data = json.loads(r.output)
+    assert data["elastic_modes"] == 8  # four bending pairs below 3 kHz: 390, 761, 1247, 2079 Hz free-free
+    free, contact = data["states"]
+    assert (free["state"], contact["state"]) == ("free", "contact")
+    assert free["frequencies_Hz"][0][0] == pytest.approx(390.17, rel=1e-3)  # no support: the free-free modes
+    assert all(k > 0 for k in contact["contact_stiffness_N_per_m"])
+    assert {p.name for p in out.iterdir()} >= {"modes.json", "campbell.png", "mode_shapes.png"}
+
+
+def test_the_shipped_compressor_matrices_are_what_the_example_script_builds():
+    import importlib.util
+    from importlib import resources
+
+    spec = importlib.util.spec_from_file_location("compressor_rotor", Path(__file__).parents[2] / "examples" /
+                                                  "compressor_rotor.py")
+    script = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    built = script.compressor_structure()
+    with resources.as_file(resources.files("auxbearing.catalog").joinpath("machines", "compressor.npz")) as path:
+        shipped = np.load(path)
+        for name, value in (("M", built.mass), ("K", built.stiffness), ("G", built.gyroscopic), ("nodes", built.nodes)):
+            assert np.array_equal(shipped[name], value), name

@@ -39,7 +39,7 @@ def compare(machine, duration: float | None) -> dict:
     return {"auto": auto, "full": full}
 
 
-CASES = ["paper_rig", "paper_rig_two_planes", "blower", "blower:7208", "blower:6208", "vertical"]
+CASES = ["paper_rig", "paper_rig_two_planes", "blower", "blower:7208", "blower:6208", "vertical", "compressor"]
 #: The paper rig's journal swings to and fro in the bottom of its bore after the drop (a slow, lightly damped
 #: rolling pendulum, about 0.3 s a swing, whose losses vary by +-10 % along it); the windows the reduced model
 #: averages need not span whole swings, and its speed lost over the first seconds is 2-4 % short of full

@@ -31,6 +31,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "drop-compare": ("drop_cmd", "Four-point QJ202 versus angular-contact 7202 drop beside the paper."),
     "experiment": ("experiment_cmd", "A measured drop: preprocess, force and stress from the orbit, fit."),
     "machines": ("drop_cmd", "List the example machines shipped in the catalogue."),
+    "modes": ("modes_cmd", "Natural frequencies against speed (Campbell diagram), free and in contact."),
     "static": ("static_cmd", "Quasi-static load distribution of one load case (Eq. 9-16)."),
     "static-cases": ("static_cmd", "A CSV of load cases through the batched static solver."),
     "static-study": ("static_cmd", "The paper's static study (Fig. 6-8)."),

@@ -35,7 +35,9 @@ def machine_document(spec: str | Path) -> tuple[dict, str, Path | None]:
 
     text = str(spec)
     if text in _catalogue_files():
-        return tomllib.loads(_catalogue_files()[text]), text, None
+        # the catalogue's folder, for the files a catalogue machine names (an elastic rotor's matrices)
+        folder = resources.files("auxbearing.catalog").joinpath("machines")
+        return tomllib.loads(_catalogue_files()[text]), text, Path(str(folder))
     path = Path(text)
     if not path.exists():
         raise InputError.for_field("machine", text, "neither a file nor a catalogue machine ("

@@ -333,6 +333,7 @@ class Machine:
                          "couple_unbalance_mrad": r.couple_unbalance * 1e3,
                          "couple_unbalance_phase_deg": math.degrees(r.couple_unbalance_phase),
                          "axial_force_N": r.axial_force, "side_force_N": [r.side_force_x, r.side_force_y]},
+               "structure": _describe_structure(r),
                "planes": [_describe_plane(p) for p in self.planes],
                "stations": [kind.describe(s) for kind in station_kinds() for s in of_kind(self.stations, kind.KIND)],
                "drop": {p.key: getattr(self.simulation, p.key) for p in SIMULATION},
@@ -501,6 +502,16 @@ def with_preload(bearing, preload, field: str) -> DuplexSet:
                           name=f"{bearing.row.name} {bearing.arrangement} {text}")
     except InputError as err:
         raise InputError(f"{field} = {preload!r}: {str(err).split(': ', 1)[-1]}") from None
+
+
+def _describe_structure(rotor: MachineRotor) -> dict | None:
+    """The rotor's matrices as the reports name them (None: a rigid rotor)."""
+    modal = rotor.modal()
+    if modal is None:
+        return None
+    return {"source": rotor.structure.source, "nodes": len(modal.nodes),
+            "max_mode_frequency_Hz": rotor.max_mode_frequency, "modal_damping": rotor.modal_damping,
+            "free_free_modes_Hz": [float(f) / (2.0 * math.pi) for f in modal.frequencies]}
 
 
 def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:

@@ -72,6 +72,12 @@ _LIFE_ROW = ("| `[life]` | the number of drops the bearings must survive; `dent_
 _INTRO = _INTRO.replace("{life_row}", _LIFE_ROW)
 
 
+#: Rows of the keys whose value is text, not a number with a unit.
+_TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file of the free-free rotor's matrices M, K, "
+                        "G (and C) and its nodes (see above); mass and inertias then come from it | the machine's "
+                        "FE model |"]}
+
+
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
     from auxbearing.machine.judging import CRITERIA, VERIFY
     from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN
@@ -125,6 +131,7 @@ def markdown() -> str:
             unit = p.display_unit or si_unit(p.dimension) or "-"
             lines.append(f"| `{p.key}` | {_cell(unit)} | {_cell(_default(p))} | {_cell(p.help)} | "
                          f"{_cell(p.source)} |")
+        lines += _TEXT_ROWS.get(name, [])
         lines.append("")
     lines += _campaign()
     return "\n".join(lines)

@@ -1,0 +1,38 @@
+"""Builds the shipped compressor's rotor matrices: ``python examples/compressor_rotor.py``.
+
+Writes ``src/auxbearing/catalog/machines/compressor.npz`` (the arrays M, K, G and nodes that
+``[rotor] matrices`` reads) and prints the node positions from the mass centre, where the machine file's
+stations sit. The rotor is illustrative, not a real machine: a 40 kg steel shaft 0.88 m long with an
+overhung impeller, two magnetic-bearing sleeves, a motor section and 50 mm journals at the touchdown planes;
+its first free-free bending mode is at about 390 Hz, near the 250 Hz of its 15 000 rpm.
+"""
+
+from pathlib import Path
+
+import numpy as np
+
+from auxbearing.machine.structure import beam_structure, modal_rotor
+
+#: Node positions from the impeller end [m] and each element's diameter [m].
+NODES = np.array([0, 0.04, 0.08, 0.12, 0.16, 0.22, 0.30, 0.38, 0.46, 0.54, 0.62, 0.70, 0.76, 0.80, 0.84, 0.88])
+DIAMETERS = np.array([40, 40, 50, 50, 70, 70, 90, 90, 90, 90, 70, 70, 50, 50, 50]) * 1e-3
+#: Rigid disks (node, mass [kg], J_t, J_p [kg m^2]): the impeller, the two magnetic-bearing sleeves.
+DISKS = [(1, 6.0, 0.025, 0.045), (5, 3.0, 0.006, 0.008), (11, 3.0, 0.006, 0.008)]
+STEEL = {"density": 7850.0, "youngs_modulus": 2.1e11}
+TARGET = Path(__file__).resolve().parents[1] / "src" / "auxbearing" / "catalog" / "machines" / "compressor.npz"
+
+
+def compressor_structure():
+    """The compressor rotor, its nodes measured from its own mass centre."""
+    shaft = beam_structure(NODES, DIAMETERS, STEEL["density"], STEEL["youngs_modulus"], disks=DISKS)
+    centre = modal_rotor(shaft).centre
+    return beam_structure(NODES - centre, DIAMETERS, STEEL["density"], STEEL["youngs_modulus"], disks=DISKS)
+
+
+if __name__ == "__main__":
+    rotor = compressor_structure()
+    np.savez(TARGET, M=rotor.mass, K=rotor.stiffness, G=rotor.gyroscopic, nodes=rotor.nodes)
+    body = modal_rotor(rotor, 2 * np.pi * 3000.0)
+    print(f"wrote {TARGET}: {body.mass:.3f} kg, J_t {body.transverse_inertia:.4f}, J_p {body.polar_inertia:.5f} kg m^2")
+    print("free-free bending [Hz]:", np.round(body.frequencies[::2] / (2 * np.pi), 1))
+    print("nodes from the mass centre [mm]:", np.round(rotor.nodes * 1e3, 3))

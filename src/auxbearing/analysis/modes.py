@@ -1,0 +1,192 @@
+"""The machine's damped natural frequencies against speed: a Campbell diagram of the model the drop integrates.
+
+The linear model is the kernel's rotor (:mod:`auxbearing.core.machine`): the rigid body's translations and
+tilts about the mass centre (x, y, theta_x, theta_y) and the structure's kept elastic modes, with
+
+    M q'' + (C + Omega G) q' + K q = 0,
+
+M = diag(m, m, J_t, J_t, 1, ...), G the skew gyroscopic matrix (J_p between the tilts, gt between tilts and
+modes, Gm between modes), K = diag(0, 0, 0, 0, omega_j^2) plus the stations' stiffness, C the modes'
+damping plus the stations' damping. A station at axial position a moves by b_x q along x and b_y q along y,
+b_x = (1, 0, 0, a, phi_x(a)), b_y = (0, 1, -a, 0, phi_y(a)); its 2x2 stiffness S adds b^T S b to K
+(Friswell, Penny, Garvey & Lees, *Dynamics of Rotating Machines*, 2010, Ch. 3 and 6 for the assembly and the
+whirl directions). Two states of the touchdown planes are shown:
+
+* free: the rotor levitated, the journals clear of their races; only the linear supports hold it (a rotor
+  with none has its rigid-body modes at zero, and its nutation J_p Omega / J_t at speed);
+* in contact: each plane carrying its share of the weight at rest, linearised as an isotropic spring: the
+  journal/race line contact's tangent stiffness (10/9) F / delta at that load (Eq. 19) in series with the
+  ball set's and the mount's (:func:`auxbearing.analysis.whirl.natural_frequency`); undamped.
+
+A mode whirls forward when its orbit turns with the spin, backward when against it (at the station of its
+largest motion). Two modes of equal frequency (no spin, or no gyroscopic coupling) are a "pair": the
+eigensolver returns them in any mix, and either whirl direction is a combination of them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.linalg import eig
+
+from auxbearing.common.errors import InputError
+from auxbearing.machine.model import Machine
+from auxbearing.machine.stations import kinds as station_kinds
+from auxbearing.machine.stations import of_kind
+
+#: Frequencies below this are rigid-body motions of a free rotor, not modes [Hz].
+RIGID_BELOW = 1e-3
+#: Two frequencies this close (relative) are one pair of modes (module docstring).
+PAIR_TOLERANCE = 1e-8
+STATES = ("free", "contact")
+
+
+@dataclass(frozen=True)
+class Campbell:
+    """Damped natural frequencies against speed (SI inside, Hz and rpm in :meth:`as_dict`)."""
+
+    machine: str
+    state: str  #: "free" or "contact"
+    speeds: np.ndarray  #: (n,) spin speeds [rad/s]
+    frequencies: np.ndarray  #: (n, modes) damped natural frequencies [Hz], ascending at each speed
+    damping_ratios: np.ndarray  #: (n, modes) [-]
+    whirl: np.ndarray  #: (n, modes) "forward", "backward" or "pair" (module docstring)
+    contact_stiffness: tuple  #: each plane's linearised stiffness in contact [N/m] (0: free or not loaded)
+
+    def critical_speeds(self) -> list[dict]:
+        """Where the synchronous excitation (1x) crosses a forward mode (or a pair) [rpm], linearly interpolated."""
+        out = []
+        excitation = np.abs(self.speeds) / (2.0 * math.pi)
+        for j in range(self.frequencies.shape[1]):
+            gap = np.where(self.whirl[:, j] != "backward", self.frequencies[:, j] - excitation, np.nan)
+            for i in range(len(gap) - 1):
+                a, b = gap[i], gap[i + 1]
+                if np.isfinite(a) and np.isfinite(b) and a * b <= 0.0 and a != b:
+                    w = self.speeds[i] + (self.speeds[i + 1] - self.speeds[i]) * a / (a - b)
+                    out.append({"speed_rpm": abs(w) * 30.0 / math.pi, "mode": j})
+        return out
+
+    def as_dict(self) -> dict:
+        """Plain numbers with their units in the keys (JSON)."""
+        return {"machine": self.machine, "state": self.state,
+                "speeds_rpm": (self.speeds * 30.0 / math.pi).tolist(),
+                "frequencies_Hz": self.frequencies.tolist(), "damping_ratios": self.damping_ratios.tolist(),
+                "whirl": self.whirl.tolist(),
+                "contact_stiffness_N_per_m": list(self.contact_stiffness),
+                "critical_speeds": self.critical_speeds()}
+
+
+def station_rows(machine: Machine, position: float, key: str) -> tuple[np.ndarray, np.ndarray]:
+    """b_x and b_y of a station at ``position`` from the mass centre (module docstring)."""
+    modal = machine.rotor.modal()
+    n = 0 if modal is None else modal.n_modes
+    bx, by = np.zeros(4 + n), np.zeros(4 + n)
+    bx[0], bx[3] = 1.0, position
+    by[1], by[2] = 1.0, -position
+    if n:
+        bx[4:], by[4:] = modal.station_shapes(position, key)
+    return bx, by
+
+
+def contact_stiffness(machine: Machine, k: int) -> float:
+    """Plane k's linearised stiffness in contact under its share of the weight at rest [N/m] (0: unloaded)."""
+    from auxbearing.analysis.drop import _support_stiffness
+    from auxbearing.analysis.whirl import natural_frequency
+
+    plane = machine.planes[k]
+    force = machine.rest_share(k) * machine.rotor.mass * machine.simulation.gravity
+    if machine.orientation == "vertical" or force <= 0.0:
+        return 0.0
+    # natural_frequency returns sqrt(k / m): with m = 1 its square is the series stiffness
+    return natural_frequency(force, plane.line_stiffness, _support_stiffness(plane), 1.0) ** 2
+
+
+def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, ...]:
+    """(M, C, G, K) of the linear model (module docstring) and each plane's contact stiffness."""
+    if state not in STATES:
+        raise InputError.for_field("state", state, f"must be one of {', '.join(STATES)}")
+    r = machine.rotor
+    modal = r.modal()
+    n = 0 if modal is None else modal.n_modes
+    jt = r.transverse_inertia or 0.0
+    size = 4 + n
+    mass = np.diag([r.mass, r.mass, jt, jt, *np.ones(n)])
+    gyro, stiff, damp = np.zeros((size, size)), np.zeros((size, size)), np.zeros((size, size))
+    gyro[2, 3], gyro[3, 2] = r.polar_inertia, -r.polar_inertia
+    if n:
+        gyro[2:4, 4:], gyro[4:, 2:4] = modal.tilt_gyroscopic, -modal.tilt_gyroscopic.T
+        gyro[4:, 4:] = modal.modal_gyroscopic
+        stiff[4:, 4:] = np.diag(modal.frequencies ** 2)
+        damp[4:, 4:] = modal.modal_damping
+    if not machine.tilt_free:  # one plane: the planar rotor, tilts locked
+        for i in (2, 3):
+            mass[i, i], gyro[i, :], gyro[:, i] = 1.0, 0.0, 0.0
+            stiff[i, i] = 1.0  # a locked tilt: a unit spring on a unit inertia, dropped from the results below
+    for kind in station_kinds():
+        if kind.KIND != "linear_support":
+            continue
+        for i, s in enumerate(of_kind(machine.stations, kind.KIND)):
+            bx, by = station_rows(machine, s.position, f"{kind.KIND}.{i}.position")
+            b = np.vstack([bx, by])
+            stiff += b.T @ np.array([[s.kxx, s.kxy], [s.kyx, s.kyy]]) @ b
+            damp += b.T @ np.array([[s.cxx, s.cxy], [s.cyx, s.cyy]]) @ b
+    springs = []
+    for k, plane in enumerate(machine.planes):
+        spring = contact_stiffness(machine, k) if state == "contact" else 0.0
+        springs.append(spring)
+        if spring > 0.0:
+            bx, by = station_rows(machine, plane.position, f"touchdown.{k}.position")
+            stiff += spring * (np.outer(bx, bx) + np.outer(by, by))
+    return mass, damp, gyro, stiff, tuple(springs)
+
+
+def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
+    """Damped natural frequencies of ``machine`` at each spin speed in ``speeds`` [rad/s] (module docstring)."""
+    mass, damp, gyro, stiff, springs = linear_matrices(machine, state)
+    size = mass.shape[0]
+    locked = () if machine.tilt_free else (2, 3)
+    spin = 1.0 if machine.rotor.speed >= 0.0 else -1.0
+    rows = [station_rows(machine, p.position, f"touchdown.{k}.position") for k, p in enumerate(machine.planes)]
+    rows += [station_rows(machine, a, "station") for a in _stations_positions(machine)]
+    freqs, ratios, forwards = [], [], []
+    inverse = np.linalg.inv(mass)
+    for omega in np.asarray(speeds, float):
+        a = np.block([[np.zeros((size, size)), np.eye(size)],
+                      [-inverse @ stiff, -inverse @ (damp + omega * gyro)]])
+        values, vectors = eig(a)
+        f, z, fw = [], [], []
+        for lam, vec in zip(values, vectors.T, strict=True):
+            if lam.imag <= 0.0:
+                continue
+            q = vec[:size]
+            if locked and np.abs(q[list(locked)]).max() > 0.5 * np.abs(q).max():
+                continue  # the locked tilts' stand-in springs
+            hz = lam.imag / (2.0 * math.pi)
+            if hz < RIGID_BELOW:
+                continue
+            x = np.array([bx @ q for bx, _ in rows])
+            y = np.array([by @ q for _, by in rows])
+            at = int(np.argmax(np.abs(x) ** 2 + np.abs(y) ** 2))
+            f.append(hz)
+            z.append(-lam.real / abs(lam))
+            # x = Re(X e^(i w t)), y = Re(Y e^(i w t)): Y = -i X turns from +x to +y, with a spin about +z
+            turn = spin * np.imag(np.conj(x[at]) * y[at])
+            fw.append("forward" if turn < 0.0 else "backward")
+        order = np.argsort(f)
+        f, fw = np.array(f)[order], np.array(fw, dtype=object)[order]
+        for j in range(len(f) - 1):
+            if f[j + 1] - f[j] <= PAIR_TOLERANCE * f[j + 1]:
+                fw[j] = fw[j + 1] = "pair"
+        freqs.append(f)
+        ratios.append(np.array(z)[order])
+        forwards.append(fw)
+    width = min(len(f) for f in freqs)
+    return Campbell(machine.name, state, np.asarray(speeds, float), np.array([f[:width] for f in freqs]),
+                    np.array([z[:width] for z in ratios]), np.array([list(w[:width]) for w in forwards], dtype=object),
+                    springs)
+
+
+def _stations_positions(machine: Machine) -> list[float]:
+    return [s.position for s in machine.stations]
