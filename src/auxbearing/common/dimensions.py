@@ -31,6 +31,7 @@ EXTRA_UNITS = {
     "torque_per_speed": ("N*m*s", "N*m*s, N*m/rpm"),
     "torque_per_speed2": ("N*m*s**2", "N*m*s**2, N*m/rpm**2"),
     "frequency": ("Hz", "Hz, kHz"),
+    "unbalance": ("kg*m", "g*mm, kg*m"),
 }
 
 def with_article(noun: str) -> str:

@@ -232,12 +232,16 @@ class Modes(NamedTuple):
     tilt_gyroscopic: np.ndarray  #: (2, n) gt: the rigid tilts' gyroscopic coupling to the modes [sqrt(kg) m]
     shape_x: np.ndarray  #: (plane blocks, n) each mode's x displacement at each plane [1/sqrt(kg)]
     shape_y: np.ndarray  #: (plane blocks, n) and its y displacement
+    #: (n,) P_j = sum_i (phi_x - i phi_y)_ij U_i e^(i beta_i) of the unbalance planes, real and imaginary parts:
+    #: the modal force of the unbalance is Re(P_j e^(i phi) (Omega^2 - i Omega')) [sqrt(kg) m]
+    unbalance_re: np.ndarray
+    unbalance_im: np.ndarray
 
 
 def rigid_modes(n_planes: int) -> Modes:
     """No elastic mode: the rigid rotor."""
     return Modes(np.zeros(0), np.zeros((0, 0)), np.zeros((0, 0)), np.zeros((2, 0)), np.zeros((n_planes, 0)),
-                 np.zeros((n_planes, 0)))
+                 np.zeros((n_planes, 0)), np.zeros(0), np.zeros(0))
 
 
 class Limits(NamedTuple):
@@ -660,18 +664,27 @@ def plane_forces_once(k, y, m, kin, q, out, diag):
 
 # ----------------------------------------------------------------------------- the machine
 @njit(cache=True)
-def _modal_rates(y, m, kin, om, q, out, n_planes, nm, ledger):
+def _modal_rates(y, m, kin, om, spin_acc, q, out, n_planes, nm, ledger):
     """The elastic modes' rates (module docstring), their damping's heat, and their gyroscopic moment on the tilts.
 
-    Called, not inlined: a rigid rotor never takes it, and the right-hand side compiles for both.
+    The unbalance planes' rotating forces load the modes (their rigid-body part is the rotor's static and couple
+    unbalance, exact in the kinematics); their reaction on the spin is neglected and their work on the modes
+    is booked as work brought in, so the energy audit still closes. Called, not inlined: a rigid rotor never
+    takes it, and the right-hand side compiles for both.
     """
     md = m.modes
     at = N_ROTOR + n_planes * N_PLANE
     tilt = m.rotor.tilt_free
     loss = 0.0
+    c, s = math.cos(y[PHI]), math.sin(y[PHI])
+    unbalance_work = 0.0
     for j in range(nm):
         rate = y[at + nm + j]
-        acc = m.scratch[_QM + j] - md.stiffness[j] * y[at + j]
+        real = md.unbalance_re[j] * c - md.unbalance_im[j] * s
+        imag = md.unbalance_re[j] * s + md.unbalance_im[j] * c
+        push = om * om * real + spin_acc * imag
+        unbalance_work += push * rate
+        acc = m.scratch[_QM + j] + push - md.stiffness[j] * y[at + j]
         for i in range(nm):
             other = y[at + nm + i]
             acc -= (md.damping[j, i] + om * md.gyroscopic[j, i]) * other
@@ -683,6 +696,7 @@ def _modal_rates(y, m, kin, om, q, out, n_planes, nm, ledger):
         out[at + j] = rate
         out[at + nm + j] = acc
     out[ledger + L_HEAT + 3 * n_planes] = loss
+    out[ledger + L_WORK_IN] += unbalance_work
 
 
 @njit(cache=True)
@@ -748,7 +762,7 @@ def rhs(t, y, m, out):
         out[Z] = y[VZ]
         out[VZ] = q[2] / mass + rotor.gravity_z
     if nm > 0:
-        _modal_rates(y, m, kin, om, q, out, n_planes, nm, ledger)
+        _modal_rates(y, m, kin, om, q[5] / rotor.polar_inertia, q, out, n_planes, nm, ledger)
     if rotor.tilt_free:
         jt = rotor.transverse_inertia
         gyro = rotor.polar_inertia * om

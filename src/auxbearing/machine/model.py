@@ -144,8 +144,20 @@ class MachineRotor:
     modal_damping: float = 0.01  #: damping ratio added to each elastic mode
     #: the rotor as matrices (:mod:`auxbearing.machine.structure`); None: the rigid rotor of mass and inertias
     structure: RotorStructure | None = None
+    #: unbalance planes (axial position from the mass centre [m], U = m e [kg m], phase [rad]); when given they are
+    #: the static and couple unbalance (:func:`unbalance_of_planes`) and load the elastic modes
+    unbalance_planes: tuple = ()
 
     def __post_init__(self) -> None:
+        if self.unbalance_planes:
+            if self.unbalance or self.couple_unbalance:
+                raise InputError.for_field("rotor.unbalance", f"{self.unbalance * 1e6:g} um", "give the unbalance "
+                                           "either as [[unbalance]] planes or as rotor.unbalance/couple_unbalance")
+            e, phase, chi, couple = unbalance_of_planes(self.unbalance_planes, self.mass,
+                                                        self.transverse_inertia or 0.0, self.polar_inertia)
+            for key, value in (("unbalance", e), ("unbalance_phase", phase), ("couple_unbalance", chi),
+                               ("couple_unbalance_phase", couple)):
+                object.__setattr__(self, key, value)
         if self.structure is None:
             return
         body = modal_rotor(self.structure)
@@ -168,6 +180,31 @@ class MachineRotor:
         if self.structure is None:
             return None
         return modal_rotor(self.structure, 2.0 * math.pi * self.max_mode_frequency, self.modal_damping)
+
+
+def unbalance_of_planes(planes, mass: float, transverse_inertia: float, polar_inertia: float
+                        ) -> tuple[float, float, float, float]:
+    """Static and couple unbalance of a rigid rotor from unbalance planes (position a_i, U_i, phase beta_i).
+
+    Static: the mass centre's offset e = |S| / m with S = sum U_i e^(i beta_i), at arg S. Couple: the point masses'
+    products of inertia about the mass centre, sum U_i a_i e^(i beta_i), tilt the principal axis by chi =
+    |C| / |J_t - J_p| towards arg C at +z (towards arg C + pi when J_p > J_t), the small-angle rotation of the
+    inertia tensor (Friswell et al. 2010, Sec. 3.5). Returns (e, its phase, chi, its phase relative to e's), as
+    the rotor's keys take them. The planes' own mass is taken as part of the rotor's.
+    """
+    static = sum(u * complex(math.cos(b), math.sin(b)) for _, u, b in planes)
+    couple = sum(u * a * complex(math.cos(b), math.sin(b)) for a, u, b in planes)
+    if abs(static) <= 1e-12 * sum(abs(u) for _, u, _ in planes):
+        static = 0.0  # planes that balance each other: no static unbalance, not a round-off's worth at some phase
+    e = abs(static) / mass
+    phase = math.atan2(static.imag, static.real) if e > 0.0 else 0.0
+    arm = transverse_inertia - polar_inertia
+    if couple == 0.0:
+        return e, phase, 0.0, 0.0
+    if arm == 0.0:
+        raise InputError.for_field("unbalance", "a couple", "a rotor with J_t = J_p has no principal axis to tilt")
+    lean = couple / arm
+    return e, phase, abs(lean), math.atan2(lean.imag, lean.real) - phase
 
 
 @dataclass(frozen=True)
@@ -276,6 +313,8 @@ class Machine:
             for kind in station_kinds():
                 for i, station in enumerate(of_kind(self.stations, kind.KIND)):
                     modal.node_at(station.position, f"{kind.KIND}.{i}.position")
+            for i, (position, _, _) in enumerate(self.rotor.unbalance_planes):
+                modal.node_at(position, f"unbalance.{i}.position")
 
     @property
     def tilt_free(self) -> bool:
@@ -514,6 +553,22 @@ def _describe_structure(rotor: MachineRotor) -> dict | None:
             "free_free_modes_Hz": [float(f) / (2.0 * math.pi) for f in modal.frequencies]}
 
 
+def _read_unbalance(tables) -> tuple:
+    """The ``[[unbalance]]`` planes: (position [m], U [kg m], phase [rad]) each."""
+    if tables is None:
+        return ()
+    if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
+        raise InputError.for_field("unbalance", tables, "give one [[unbalance]] table per plane")
+    planes = []
+    for i, table in enumerate(tables):
+        values = read_table(table, TABLES["unbalance"], f"unbalance.{i}.")
+        for key in ("position", "amount"):
+            if key not in values:
+                raise InputError(f"unbalance.{i}.{key}: missing; every [[unbalance]] needs position and amount")
+        planes.append((values["position"], values["amount"], values.get("phase", 0.0)))
+    return tuple(planes)
+
+
 def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
     """A machine from the tables of a machine TOML file (values with units); every key checked first.
 
@@ -524,7 +579,8 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     """
     from auxbearing.machine.combinations import check_combinations
 
-    allowed = ("machine", "rotor", "touchdown", *STATION_TABLES, "drop", "coastdown", "life", *OTHER_TABLES)
+    allowed = ("machine", "rotor", "unbalance", "touchdown", *STATION_TABLES, "drop", "coastdown", "life",
+               *OTHER_TABLES)
     for key in data:
         if key not in allowed:
             raise unknown(f"[{key}]", "table", key, allowed, "table")
@@ -553,8 +609,14 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         if key not in rotor_values:
             raise InputError(f"rotor.{key}: missing; a machine's [rotor] needs mass, polar_inertia and speed "
                              "(or rotor.matrices and speed)")
+    planes_of_unbalance = _read_unbalance(data.get("unbalance"))
+    if planes_of_unbalance:
+        for key in ("unbalance", "unbalance_phase", "couple_unbalance", "couple_unbalance_phase"):
+            if key in rotor_values:
+                raise InputError.for_field(f"rotor.{key}", rotor_table[key], "comes from the [[unbalance]] planes; "
+                                           "give one or the other")
     rotor = MachineRotor(**{k: rotor_values.get(k, default("rotor", k)) for k in TABLES["rotor"]},
-                         structure=structure)
+                         structure=structure, unbalance_planes=planes_of_unbalance)
     tables = data.get("touchdown")
     if not isinstance(tables, list) or not tables or not all(isinstance(t, dict) for t in tables):
         raise InputError.for_field("touchdown", tables, "give one or more [[touchdown]] tables")

@@ -131,9 +131,13 @@ def _modes(machine: Machine, blocks: int) -> cm.Modes:
     shape_x, shape_y = np.zeros((blocks, modal.n_modes)), np.zeros((blocks, modal.n_modes))
     for k, p in enumerate(machine.planes):
         shape_x[k], shape_y[k] = modal.station_shapes(p.position, f"touchdown.{k}.position")
+    push = np.zeros(modal.n_modes, complex)  # P_j of the unbalance planes (core.machine.Modes)
+    for i, (position, amount, phase) in enumerate(machine.rotor.unbalance_planes):
+        px, py = modal.station_shapes(position, f"unbalance.{i}.position")
+        push += (px - 1j * py) * amount * np.exp(1j * phase)
     return cm.Modes(modal.frequencies ** 2, np.ascontiguousarray(modal.modal_damping),
                     np.ascontiguousarray(modal.modal_gyroscopic), np.ascontiguousarray(modal.tilt_gyroscopic),
-                    shape_x, shape_y)
+                    shape_x, shape_y, push.real.copy(), push.imag.copy())
 
 
 def pack(machine: Machine) -> KernelModel:

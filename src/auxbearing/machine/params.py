@@ -41,6 +41,15 @@ ROTOR: tuple[Param, ...] = (
           "With rotor.matrices: viscous damping ratio added to each elastic mode (beside the matrices' own C)",
           "ours: between a solid steel shaft (about 0.002) and a built-up rotor (about 0.02)"),
 )
+#: ``[[unbalance]]``: one table per unbalance plane (balancing grade G of ISO 21940-11 gives e = G / Omega).
+UNBALANCE: tuple[Param, ...] = (
+    Param("unbalance", "position", "length", None, "mm", "finite", "Axial position of the plane from the mass centre",
+          "required"),
+    Param("unbalance", "amount", "unbalance", None, "g*mm", "nonnegative", "Unbalance U = m e in the plane",
+          "required"),
+    Param("unbalance", "phase", "angle", 0.0, "deg", "finite", "Direction of the unbalance at the drop, from +x",
+          "ours"),
+)
 #: Text keys of ``[rotor]``: ``matrices`` names a ``.npz`` file of the free-free rotor's matrices
 #: (:func:`auxbearing.machine.structure.read_structure`); mass and inertias then come from it.
 ROTOR_TEXT = ("matrices",)
@@ -211,7 +220,7 @@ LIFE: tuple[Param, ...] = (
 
 TABLES = {"rotor": by_key(ROTOR, "rotor"), "touchdown": by_key(TOUCHDOWN, "touchdown"),
           "drop": by_key(SIMULATION, "drop"), "coastdown": by_key(COASTDOWN, "coastdown"),
-          "life": by_key(LIFE, "life")}
+          "life": by_key(LIFE, "life"), "unbalance": by_key(UNBALANCE, "unbalance")}
 
 
 def default(section: str, key: str) -> float | None:

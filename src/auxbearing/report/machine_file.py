@@ -36,6 +36,8 @@ This page is generated: `python -m auxbearing.report.machine_file > docs/machine
 | `[machine]` | `name`, `orientation` (`horizontal` or `vertical`), `source` (where the numbers come from) |
 | `[rotor]` | the rotor: mass and inertias (a rigid rotor) or `matrices` (an elastic one), speed, unbalance, \
 process loads |
+| `[[unbalance]]` | one per unbalance plane (instead of `rotor.unbalance` and `couple_unbalance`): position, amount \
+`U = m e`, phase; with `matrices` they also bend the rotor |
 | `[[touchdown]]` | one per touchdown plane (one or more): bearing, clearances, mount, friction, heat |
 | `[[linear_support]]` | one per linear station (a seal, a damper, a linearised bearing): `name`, position, \
 stiffness and damping coefficients |
@@ -80,12 +82,12 @@ _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file o
 
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
     from auxbearing.machine.judging import CRITERIA, VERIFY
-    from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN
+    from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN, UNBALANCE
     from auxbearing.machine.stations import kinds
 
     stations = [(kind.KIND, kind.PARAMS) for kind in kinds()]
-    return [("rotor", ROTOR), ("touchdown", TOUCHDOWN), *stations, ("drop", SIMULATION), ("coastdown", COASTDOWN),
-            ("life", LIFE), ("criteria", CRITERIA), ("verify", VERIFY)]
+    return [("rotor", ROTOR), ("unbalance", UNBALANCE), ("touchdown", TOUCHDOWN), *stations, ("drop", SIMULATION),
+            ("coastdown", COASTDOWN), ("life", LIFE), ("criteria", CRITERIA), ("verify", VERIFY)]
 
 
 def _cell(text: str) -> str:
@@ -125,7 +127,7 @@ def markdown() -> str:
 
     lines = [_INTRO]
     for name, rows in _sections():
-        header = f"[[{name}]]" if name in ("touchdown", *TABLES) else f"[{name}]"
+        header = f"[[{name}]]" if name in ("touchdown", "unbalance", *TABLES) else f"[{name}]"
         lines += [f"## `{header}`", "", "| key | unit | default | meaning | source |", "|---|---|---|---|---|"]
         for p in rows:
             unit = p.display_unit or si_unit(p.dimension) or "-"
