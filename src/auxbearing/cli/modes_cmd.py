@@ -42,6 +42,13 @@ def _speeds(text: str | None, operating: float, points: int) -> list[float]:
     return sorted(values)
 
 
+def _by_speed(diagram) -> list[dict]:
+    """One entry per speed: its damped natural frequencies [Hz], whirl directions and damping ratios."""
+    return [{"speed_rpm": float(w) * 30.0 / math.pi, "frequencies_Hz": diagram.frequencies[i].tolist(),
+             "whirl": list(diagram.whirl[i]), "damping_ratios": diagram.damping_ratios[i].tolist()}
+            for i, w in enumerate(diagram.speeds)]
+
+
 @click.command("modes")
 @click.option("--machine", "machine_spec", required=True, metavar="FILE|NAME",
               help="A machine TOML file or an example machine (`auxbearing machines`).")
@@ -74,6 +81,7 @@ def modes_command(machine_spec, speeds, points, out_dir, as_json):
     diagrams = [campbell(machine, omegas, state) for state in STATES]
     result = {"machine": machine.name, "operating_speed_rpm": abs(machine.rotor.speed) * 30.0 / math.pi,
               "elastic_modes": 0 if machine.rotor.modal() is None else machine.rotor.modal().n_modes,
+              "modes": _by_speed(diagrams[0]), "modes_in_contact": _by_speed(diagrams[1]),
               "states": [d.as_dict() for d in diagrams]}
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
         if tmp is not None:

@@ -548,7 +548,7 @@ def _describe_structure(rotor: MachineRotor) -> dict | None:
     modal = rotor.modal()
     if modal is None:
         return None
-    return {"source": rotor.structure.source, "nodes": len(modal.nodes),
+    return {"source": rotor.structure.source, "nodes": len(modal.nodes), "mass_centre_mm": modal.centre * 1e3,
             "max_mode_frequency_Hz": rotor.max_mode_frequency, "modal_damping": rotor.modal_damping,
             "free_free_modes_Hz": [float(f) / (2.0 * math.pi) for f in modal.frequencies]}
 
@@ -609,7 +609,9 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         if key not in rotor_values:
             raise InputError(f"rotor.{key}: missing; a machine's [rotor] needs mass, polar_inertia and speed "
                              "(or rotor.matrices and speed)")
-    planes_of_unbalance = _read_unbalance(data.get("unbalance"))
+    # with rotor.matrices every position in the file is a coordinate of its nodes; inside, from the mass centre
+    centre = 0.0 if structure is None else modal_rotor(structure).centre
+    planes_of_unbalance = tuple((a - centre, u, b) for a, u, b in _read_unbalance(data.get("unbalance")))
     if planes_of_unbalance:
         for key in ("unbalance", "unbalance_phase", "couple_unbalance", "couple_unbalance_phase"):
             if key in rotor_values:
@@ -640,6 +642,10 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         if "preload" in table:
             bearing = with_preload(bearing, table["preload"], where + "preload")
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
+        if structure is not None:  # the file's node coordinates, from the mass centre inside
+            if "position" not in values:
+                raise InputError(f"{where}position: missing; with rotor.matrices every plane sits on a node")
+            values["position"] -= centre
         planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")
     if not isinstance(data.get("coastdown") or {}, dict):
@@ -657,7 +663,8 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                       simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
                       coastdown=Coastdown(**coast_values, vacuum=vacuum),
                       life=Life(**life_values, dent_accumulation=accumulation),
-                      stations=tuple(s for kind in station_kinds() for s in kind.read(data.get(kind.KIND))))
+                      stations=tuple(replace(s, position=s.position - centre) for kind in station_kinds()
+                                     for s in kind.read(data.get(kind.KIND))))
     check_combinations(data, machine)
     return machine
 

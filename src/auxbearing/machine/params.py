@@ -43,8 +43,8 @@ ROTOR: tuple[Param, ...] = (
 )
 #: ``[[unbalance]]``: one table per unbalance plane (balancing grade G of ISO 21940-11 gives e = G / Omega).
 UNBALANCE: tuple[Param, ...] = (
-    Param("unbalance", "position", "length", None, "mm", "finite", "Axial position of the plane from the mass centre",
-          "required"),
+    Param("unbalance", "position", "length", None, "mm", "finite", "Axial position of the plane from the mass centre; "
+          "with rotor.matrices, the coordinate of one of the matrices' nodes", "required"),
     Param("unbalance", "amount", "unbalance", None, "g*mm", "nonnegative", "Unbalance U = m e in the plane",
           "required"),
     Param("unbalance", "phase", "angle", 0.0, "deg", "finite", "Direction of the unbalance at the drop, from +x",
@@ -56,7 +56,8 @@ ROTOR_TEXT = ("matrices",)
 
 TOUCHDOWN: tuple[Param, ...] = (
     Param("touchdown", "position", "length", 0.0, "mm", "finite",
-          "Axial position of the plane from the mass centre (+z)", "required with two planes or more"),
+          "Axial position of the plane from the mass centre (+z); with rotor.matrices, the coordinate of one of "
+          "the matrices' nodes", "required with two planes or more"),
     Param("touchdown", "radial_clearance", "length", None, "mm", "positive",
           "Radial clearance s between journal and inner-race bore", "required"),
     Param("touchdown", "axial_clearance", "length", None, "mm", "optional_positive",

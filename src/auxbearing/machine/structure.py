@@ -103,11 +103,14 @@ class ModalRotor:
         return len(self.frequencies)
 
     def node_at(self, position: float, key: str) -> int:
-        """Index of the node at ``position`` from the mass centre [m]; ``key`` names the input for the error."""
+        """Index of the node at ``position`` from the mass centre [m]; ``key`` names the input for the error.
+
+        The error names the position as a file gives it: in the matrices' own node coordinates.
+        """
         i = int(np.argmin(np.abs(self.nodes - position)))
         if abs(self.nodes[i] - position) > NODE_TOLERANCE:
-            raise InputError.for_field(key, f"{position * 1e3:g} mm", "must sit on a node of the rotor's matrices "
-                                       f"(nearest: {self.nodes[i] * 1e3:g} mm from the mass centre)")
+            raise InputError.for_field(key, f"{(position + self.centre) * 1e3:.6g} mm", "must sit on a node of the "
+                                       f"rotor's matrices (nearest: {(self.nodes[i] + self.centre) * 1e3:.6g} mm)")
         return i
 
     def station_shapes(self, position: float, key: str) -> tuple[np.ndarray, np.ndarray]:

@@ -62,8 +62,9 @@ In `[rotor]`, `matrices = "rotor.npz"` (relative to the machine file) gives the 
 NumPy `.npz` of the arrays `M`, `K`, `G` (the gyroscopic matrix, to be multiplied by the spin speed), `nodes`
 (the nodes' axial positions in metres) and optionally `C`, in SI, over four degrees of freedom per node in the
 order x, y, theta_x, theta_y, with theta_y = dx/dz and theta_x = -dy/dz. Mass and inertias then come from the
-matrices (give neither), `position` of each `[[touchdown]]` (from the mass centre) must sit on a node, and the
-rotor bends in its free-free elastic modes up to `max_mode_frequency`.
+matrices (give neither), every `position` (of each `[[touchdown]]`, `[[unbalance]]` and station) is the axial
+coordinate of one of the matrices' `nodes`, in the matrices' own frame, and the rotor bends in its free-free
+elastic modes up to `max_mode_frequency`.
 """
 
 
