@@ -290,6 +290,11 @@ VERIFY = [
     case("verify-out-file", "verify --machine blower --out afile", "--out", "afile", files=A_FILE),
 ]
 
+SCENARIOS = [
+    case("drop-scenario-without-machine", "drop --scenario power", "--scenario", "power"),
+    case("drop-scenario-unknown", "drop --machine blower --scenario nope", "--scenario", "nope"),
+]
+
 MODES = [
     case("modes-speeds-text", "modes --machine blower --speeds abc", "--speeds", "abc"),
     case("modes-speeds-negative", "modes --machine blower --speeds '-100 rpm'", "--speeds", "-100 rpm"),
@@ -310,7 +315,8 @@ OTHERS = [
 ]
 
 CASES = [*CONTACT, *SWEEP, *STATIC, *STATIC_CASES, *STATIC_STUDY, *DROP, *DROP_COMPARE, *EXPERIMENT, *COASTDOWN,
-         *STUDY, *CAMPAIGN, *VERIFY, *BUDGETS, *MODES, *OTHERS]
+         *STUDY, *CAMPAIGN, *VERIFY, *BUDGETS, *MODES, *SCENARIOS,
+         *OTHERS]
 
 
 def _measured_placeholder(c):

@@ -494,6 +494,37 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
         "largest_excursion_m": max(p["max_excursion_um"] for p in planes) * 1e-6,
         "output_step_s": run.output_step, "output_decimated": run.decimated,
     }
+    bearings = of_kind(machine.stations, "amb")
+    if bearings:
+        out["scenario"] = _scenario_summary(machine)
+        out["amb"] = _amb_summary(machine, model, run.grid, bearings)
+    return out
+
+
+def _scenario_summary(machine: Machine) -> dict:
+    s = machine.active_scenario()
+    return {"name": s.name, "kind": s.kind, "time_ms": s.time * 1e3, "decay_time_ms": s.decay_time * 1e3}
+
+
+def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[dict]:
+    """Each magnetic bearing: the levitated static offset and current there (before any scenario), its peak current.
+
+    The offset is the linear statics' (:func:`auxbearing.machine.stations.amb.levitated_state`), before any
+    disturbance the run starts with.
+    """
+    from auxbearing.machine.stations.amb import levitated_state
+
+    at = model.layout.station_states_at[cm.STATION_KINDS.index(cm.amb)]
+    held = levitated_state(machine, machine.rotor.modal(), bearings)
+    out = []
+    for i, b in enumerate(bearings):
+        block = at + i * len(cm.amb.STATES)
+        currents = np.hypot(grid[:, block + cm.amb.S_CURRENT], grid[:, block + 3 + cm.amb.S_CURRENT])
+        levitated = held["states"][i]
+        out.append({"name": b.name, "levitated_offset_um": held["offsets"][i] * 1e6,
+                    "levitated_current_A": float(np.hypot(levitated[2], levitated[5])),
+                    "peak_current_A": float(currents.max()) if len(currents) else 0.0,
+                    "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()})
     return out
 
 

@@ -190,11 +190,14 @@ def _fmt(fmt: str, value) -> str:
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
               callback=checked_out_dir,
               help="Write the time series (drop.nc), drop_summary.json and the figures into this folder.")
+@click.option("--scenario", default=None, metavar="NAME",
+              help="With --machine: the [[scenario]] that fails its magnetic bearings (levitated until its time); "
+                   "without it they fail at the drop.")
 @json_option()
 @quiet_option()
 @click.pass_context
-def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_contacts, max_wall_time, out_dir, as_json,
-                 quiet):
+def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_contacts, max_wall_time, out_dir, scenario,
+                 as_json, quiet):
     """Drop of a rotor onto its touchdown bearings.
 
     With --machine: a rigid rotor on one or more touchdown planes (gyroscopics, axial touchdown,
@@ -220,8 +223,10 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_conta
             given = paper_options or (["--config"] if config is not None else ["--bearing"])
             raise InputError.for_field(given[0], "given with --machine",
                                        "the paper-rig options do not apply to a machine; set them in its file")
-        _machine_drop(machine_spec, duration, wall, max_ball_contacts, out_dir, as_json, quiet)
+        _machine_drop(machine_spec, duration, wall, max_ball_contacts, out_dir, as_json, quiet, scenario)
         return
+    if scenario is not None:
+        raise InputError.for_field("--scenario", scenario, "needs --machine (a machine file with [[scenario]] tables)")
     _paper_drop(ctx, bearing_spec, config, params, wall, max_ball_contacts, out_dir, as_json, quiet)
 
 
@@ -310,7 +315,7 @@ _PLANE_ROWS = (("peak_contact_force_N", "Peak collision force", "N", "{:.1f}"),
 
 
 def _machine_drop(spec: str, duration: str | None, wall: float | None, max_contacts: int, out_dir: Path | None,
-                  as_json: bool, quiet: bool) -> None:
+                  as_json: bool, quiet: bool, scenario: str | None = None) -> None:
     from rich.console import Console
     from rich.table import Table
 
@@ -321,6 +326,7 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
 
     with option_named("--machine", "machine"), option_named("--machine", "file", value=spec):
         machine = read_machine_file(spec)
+    machine = machine.with_scenario(scenario, "--scenario")
     seconds = None
     if duration is not None:
         seconds = to_si("--duration", duration, "time", "s")

@@ -32,6 +32,11 @@ EXTRA_UNITS = {
     "torque_per_speed2": ("N*m*s**2", "N*m*s**2, N*m/rpm**2"),
     "frequency": ("Hz", "Hz, kHz"),
     "unbalance": ("kg*m", "g*mm, kg*m"),
+    "current": ("A", "A, mA"),
+    "current_stiffness": ("N/A", "N/A"),
+    "current_per_length": ("A/m", "A/m, A/mm"),
+    "current_per_length_time": ("A/(m*s)", "A/(m*s), A/(mm*s)"),
+    "current_time_per_length": ("A*s/m", "A*s/m, A*ms/mm"),
 }
 
 def with_article(noun: str) -> str:

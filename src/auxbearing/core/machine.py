@@ -57,7 +57,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from auxbearing.core import linear_support
+from auxbearing.core import amb, linear_support
 from auxbearing.core.ballset import accumulate
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
 
@@ -82,15 +82,27 @@ L_WORK_IN, L_DRAG_LOSS, L_BALLSET_WORK, L_HEAT = range(4)
 
 
 @njit(cache=True, inline="always")
-def ledger_at(n_planes, n_modes):
-    """Index of the ledger in the state of a machine packed with ``n_planes`` plane blocks and ``n_modes`` modes."""
-    return N_ROTOR + n_planes * N_PLANE + 2 * n_modes
+def ledger_at(n_planes, n_modes, n_station_states=0):
+    """Index of the ledger in the state of a machine: its plane blocks, modes and stations' states."""
+    return N_ROTOR + n_planes * N_PLANE + 2 * n_modes + n_station_states
+
+
+@njit(cache=True, inline="always")
+def station_states_at(m):
+    """First state of the stations' block (after the modes)."""
+    return N_ROTOR + len(m.planes.active) * N_PLANE + 2 * m.modes.stiffness.shape[0]
+
+
+@njit(cache=True, inline="always")
+def station_state_count(m):
+    """States of every station of every kind (each kind's STATES per station, in :data:`STATION_KINDS` order)."""
+    return m.stations[1].values.shape[0] * len(amb.STATES)
 
 
 @njit(cache=True, inline="always")
 def ledger_of(m):
     """Index of the ledger in the state of the packed machine ``m``."""
-    return ledger_at(len(m.planes.active), m.modes.stiffness.shape[0])
+    return ledger_at(len(m.planes.active), m.modes.stiffness.shape[0], station_state_count(m))
 
 
 class Layout(NamedTuple):
@@ -109,6 +121,7 @@ class Layout(NamedTuple):
     structure_loss: int = -1  #: heat of the structure's damping (-1: a rigid rotor)
     stations: tuple = ()  #: stations of each kind of :data:`STATION_KINDS` beside the planes
     stations_at: int = 0  #: first ledger slot of those stations (each kind's LEDGER per station, kind by kind)
+    station_states_at: tuple = ()  #: first state of each kind's block (each kind's STATES per station)
 
     def plane(self, k: int) -> int:
         """First index of plane k's block."""
@@ -121,17 +134,22 @@ class Layout(NamedTuple):
 
 def layout(n_planes: int, n_modes: int = 0, stations: tuple = ()) -> Layout:
     """The state layout of a machine: plane blocks, elastic modes, stations of each kind (module docstring)."""
-    at = ledger_at.py_func(n_planes, n_modes)  # the kernels' own formula, run as Python
-    modal = (*(f"mode_{j}" for j in range(n_modes)), *(f"mode_rate_{j}" for j in range(n_modes)))
-    names = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_STATES), *modal, *LEDGER,
-             *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_LEDGER),
-             *(("structure_loss",) if n_modes else ()))
-    stations_at = len(names)
     counts = tuple(stations) + (0,) * (len(STATION_KINDS) - len(stations))
+    modal = (*(f"mode_{j}" for j in range(n_modes)), *(f"mode_rate_{j}" for j in range(n_modes)))
+    names = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_STATES), *modal)
+    state_blocks = []
+    for kind, count in zip(STATION_KINDS, counts, strict=True):
+        state_blocks.append(len(names))
+        names += tuple(f"{name}_{i}" for i in range(count) for name in kind.STATES)
+    at = len(names)
+    names += (*LEDGER, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_LEDGER),
+              *(("structure_loss",) if n_modes else ()))
+    stations_at = len(names)
     for kind, count in zip(STATION_KINDS, counts, strict=True):
         names += tuple(f"{name}_{i}" for i in range(count) for name in kind.LEDGER)
     return Layout(n_planes, len(names), at, at + L_WORK_IN, at + L_DRAG_LOSS, at + L_BALLSET_WORK, at + L_HEAT, names,
-                  n_modes, N_ROTOR + n_planes * N_PLANE, stations_at - 1 if n_modes else -1, counts, stations_at)
+                  n_modes, N_ROTOR + n_planes * N_PLANE, stations_at - 1 if n_modes else -1, counts, stations_at,
+                  tuple(state_blocks))
 
 
 def layout_of(m) -> Layout:
@@ -282,7 +300,7 @@ class Machine(NamedTuple):
 #: module like :mod:`auxbearing.core.linear_support` (NAME, FIELDS, STATES, LEDGER, Params, force, energy),
 #: registered here and called in :func:`_stations` and :func:`energy`; its machine-file table, description and
 #: packing are one module of :mod:`auxbearing.machine.stations`.
-STATION_KINDS = (linear_support,)
+STATION_KINDS = (linear_support, amb)
 
 
 #: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5), then
@@ -391,7 +409,7 @@ def stations_ledger(m):
 
 
 @njit(cache=True)
-def _stations(y, m, kin, q, out):
+def _stations(t, y, m, kin, q, out):
     """Forces of every station beside the touchdown planes on the rotor, and their ledger rates.
 
     Called, not inlined: a machine without such stations runs only the empty loops.
@@ -407,6 +425,19 @@ def _stations(y, m, kin, q, out):
             m.scratch[_QM + j] += supports.shape_x[i, j] * fx + supports.shape_y[i, j] * fy
         out[at + i] = taken
     at += supports.values.shape[0] * len(linear_support.LEDGER)
+    bearings = m.stations[1]
+    states = station_states_at(m)
+    for i in range(bearings.values.shape[0]):
+        row = bearings.values[i]
+        jx, jy, vx, vy = station_point(y, m, row[amb.P_POS], bearings.shape_x, bearings.shape_y, i)
+        sx, sy, _, _ = station_point(y, m, row[amb.P_SENSOR], bearings.sensor_shape_x, bearings.sensor_shape_y, i)
+        b = states + i * len(amb.STATES)
+        fx, out[b], out[b + 1], out[b + 2] = amb.axis(row, t, jx, sx, y[b], y[b + 1], y[b + 2])
+        fy, out[b + 3], out[b + 4], out[b + 5] = amb.axis(row, t, jy, sy, y[b + 3], y[b + 4], y[b + 5])
+        _apply_rotor(q, kin, row[amb.P_POS], 0.0, 0.0, fx, fy, 0.0)
+        for j in range(m.modes.stiffness.shape[0]):
+            m.scratch[_QM + j] += bearings.shape_x[i, j] * fx + bearings.shape_y[i, j] * fy
+        out[at + i] = -(fx * vx + fy * vy)
 
 
 @njit(cache=True, inline="always")
@@ -729,8 +760,8 @@ def rhs(t, y, m, out):
     for k in range(n_planes):
         if m.planes.active[k] > 0.0:
             plane_forces(k, y, m, kin, q, out, m.last_diag[k])
-    if m.stations[0].values.shape[0] > 0:
-        _stations(y, m, kin, q, out)
+    if m.stations[0].values.shape[0] > 0 or m.stations[1].values.shape[0] > 0:
+        _stations(t, y, m, kin, q, out)
     om = y[OMEGA]
     mass = rotor.mass
     vgx = y[VX] + kin[0] * om
@@ -741,7 +772,7 @@ def rhs(t, y, m, out):
     drag = -(rotor.drag_constant * math.tanh(om / rotor.drag_speed_scale) + rotor.drag_viscous * om
              + rotor.drag_windage * om * abs(om))
     q[5] += drag + rotor.process_torque
-    ledger = ledger_at(n_planes, nm)
+    ledger = ledger_of(m)
     out[ledger + L_WORK_IN] = (rotor.force_x * vgx + rotor.force_y * vgy + rotor.force_z * y[VZ]
                                + rotor.process_torque * om)
     out[ledger + L_DRAG_LOSS] = -drag * om

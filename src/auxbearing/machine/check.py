@@ -34,7 +34,8 @@ from auxbearing.machine.model import Machine, machine_from_mapping, read_bearing
 from auxbearing.machine.stations import TABLES as STATION_TABLES
 
 #: Tables of a machine file; a campaign file is a machine file whose ``[campaign]`` table is the campaign.
-MACHINE_FILE_TABLES = ("machine", "rotor", "unbalance", "touchdown", *STATION_TABLES, "drop", "coastdown", "life",
+MACHINE_FILE_TABLES = ("machine", "rotor", "unbalance", "touchdown", *STATION_TABLES, "scenario", "drop", "coastdown",
+                       "life",
                        "criteria", "candidate", "verify", "campaign")
 #: Keys of a ``[[candidate]]`` table.
 CANDIDATE_KEYS = ("name", "bearing")

@@ -35,6 +35,7 @@ from auxbearing.machine.params import (
 from auxbearing.machine.stations import TABLES as STATION_TABLES
 from auxbearing.machine.stations import kinds as station_kinds
 from auxbearing.machine.stations import of_kind
+from auxbearing.machine.stations.amb import read_scenarios
 from auxbearing.machine.structure import ModalRotor, RotorStructure, modal_rotor, read_structure
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
@@ -288,6 +289,9 @@ class Machine:
     life: Life = field(default_factory=Life)
     #: stations beside the touchdown planes, of the kinds of :mod:`auxbearing.machine.stations`
     stations: tuple = ()
+    #: what fails the magnetic bearings (``[[scenario]]``), and the one this run takes (None: they fail at the drop)
+    scenarios: tuple = ()
+    scenario: str | None = None
 
     def __post_init__(self) -> None:
         if self.orientation not in ORIENTATIONS:
@@ -342,6 +346,25 @@ class Machine:
             return 0.0
         other = pair[1] if k == pair[0] else pair[0]
         return abs(planes[other].position) / abs(planes[pair[1]].position - planes[pair[0]].position)
+
+    def active_scenario(self):
+        """The scenario this run takes: the named one, or the magnetic bearings failing at the drop."""
+        from auxbearing.machine.stations.amb import AT_THE_DROP
+
+        for s in self.scenarios:
+            if s.name == self.scenario:
+                return s
+        return AT_THE_DROP
+
+    def with_scenario(self, name: str | None, field: str = "scenario") -> Machine:
+        """A copy that runs the scenario ``name`` (``field`` names the input in an error)."""
+        if name is None:
+            return replace(self, scenario=None)
+        names = [s.name for s in self.scenarios]
+        if name not in names:
+            raise InputError.for_field(field, name, f"no such [[scenario]] in {self.name} (it has: "
+                                       f"{', '.join(names) or 'none'})")
+        return replace(self, scenario=name)
 
     @property
     def axial_free(self) -> bool:
@@ -553,6 +576,16 @@ def _describe_structure(rotor: MachineRotor) -> dict | None:
             "free_free_modes_Hz": [float(f) / (2.0 * math.pi) for f in modal.frequencies]}
 
 
+def _shifted(station, centre: float):
+    """A station read from a file with rotor.matrices: its positions from the mass centre inside."""
+    if not centre:
+        return station
+    changes = {"position": station.position - centre}
+    if getattr(station, "sensor_position", None) is not None:
+        changes["sensor_position"] = station.sensor_position - centre
+    return replace(station, **changes)
+
+
 def _read_unbalance(tables) -> tuple:
     """The ``[[unbalance]]`` planes: (position [m], U [kg m], phase [rad]) each."""
     if tables is None:
@@ -579,7 +612,7 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     """
     from auxbearing.machine.combinations import check_combinations
 
-    allowed = ("machine", "rotor", "unbalance", "touchdown", *STATION_TABLES, "drop", "coastdown", "life",
+    allowed = ("machine", "rotor", "unbalance", "touchdown", *STATION_TABLES, "scenario", "drop", "coastdown", "life",
                *OTHER_TABLES)
     for key in data:
         if key not in allowed:
@@ -663,8 +696,9 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                       simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
                       coastdown=Coastdown(**coast_values, vacuum=vacuum),
                       life=Life(**life_values, dent_accumulation=accumulation),
-                      stations=tuple(replace(s, position=s.position - centre) for kind in station_kinds()
-                                     for s in kind.read(data.get(kind.KIND))))
+                      stations=tuple(_shifted(s, centre) for kind in station_kinds()
+                                     for s in kind.read(data.get(kind.KIND))),
+                      scenarios=read_scenarios(data.get("scenario")))
     check_combinations(data, machine)
     return machine
 

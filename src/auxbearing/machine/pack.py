@@ -140,6 +140,40 @@ def _modes(machine: Machine, blocks: int) -> cm.Modes:
                     shape_x, shape_y, push.real.copy(), push.imag.copy())
 
 
+def _levitate(machine: Machine, modal, layout: cm.Layout, y0: np.ndarray) -> None:
+    """Start a machine whose magnetic bearings work past the drop from its levitated static state."""
+    from auxbearing.machine.stations import amb
+
+    bearings = of_kind(machine.stations, amb.KIND)
+    if not bearings or machine.active_scenario().time <= 0.0:
+        return
+    held = amb.levitated_state(machine, modal, bearings)
+    q = held["q"]
+    # rotor.start_x / start_y move the rotor from its levitated place (a disturbance to start from)
+    r = machine.rotor
+    y0[cm.X], y0[cm.Y], y0[cm.TX], y0[cm.TY] = q[0] + r.start_x, q[1] + r.start_y, q[2], q[3]
+    y0[layout.modes_at:layout.modes_at + layout.modes] = q[4:]
+    at = layout.station_states_at[cm.STATION_KINDS.index(cm.amb)]
+    for i, states in enumerate(held["states"]):
+        y0[at + i * len(cm.amb.STATES):at + (i + 1) * len(cm.amb.STATES)] = states
+
+
+def _amb_tolerances(machine: Machine, layout: cm.Layout, atol: np.ndarray, length: float) -> None:
+    """Error scales of the magnetic bearings' states: the clearance for the sensor, the rotor's weight for the coil."""
+    from auxbearing.machine.stations import amb
+
+    if machine.active_scenario().time <= 0.0:
+        return  # failed at the drop: their frozen states stay out of the step's error norm, as if absent
+    at = layout.station_states_at[cm.STATION_KINDS.index(cm.amb)]
+    weight = max(machine.rotor.mass * machine.simulation.gravity, 1.0)
+    for i, b in enumerate(of_kind(machine.stations, amb.KIND)):
+        block = at + i * len(cm.amb.STATES)
+        for axis in (0, 3):
+            atol[block + axis] = length
+            atol[block + axis + 1] = length * 1e-2
+            atol[block + axis + 2] = machine.simulation.atol * weight / b.current_stiffness
+
+
 def pack(machine: Machine) -> KernelModel:
     """The machine as :mod:`auxbearing.core.machine` takes it: parameters, initial state, tolerances, energy."""
     r = machine.rotor
@@ -167,13 +201,14 @@ def pack(machine: Machine) -> KernelModel:
     modes = _modes(machine, n)
     nm = modes.stiffness.shape[0]
     modal = machine.rotor.modal()
-    stations = tuple(kind.pack(of_kind(machine.stations, kind.KIND), modal, nm) for kind in station_kinds())
+    stations = tuple(kind.pack(of_kind(machine.stations, kind.KIND), modal, nm, machine) for kind in station_kinds())
     core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine),
                       *cm.new_scratch(n, nm), modes, stations)
     layout = cm.layout_of(core)
     y0 = np.zeros(layout.size)
     y0[cm.OMEGA] = r.speed
     y0[cm.X], y0[cm.Y] = r.start_x, r.start_y
+    _levitate(machine, modal, layout, y0)
     for k, p in enumerate(planes):
         b = cm.N_ROTOR + k * cm.N_PLANE
         y0[b + cm.OX], y0[b + cm.OY] = p.misalignment
@@ -205,6 +240,7 @@ def pack(machine: Machine) -> KernelModel:
         reach = np.maximum(reach, 1e-300)
         atol[layout.modes_at:layout.modes_at + nm] = sim.atol * s / reach
         atol[layout.modes_at + nm:layout.modes_at + 2 * nm] = sim.atol * v / reach
+    _amb_tolerances(machine, layout, atol, sim.atol * s)
     settings = ig.Settings(sim.rtol, atol, sim.max_step, 1e-14, 20000, sim.output_step)
     kinetic, potential = cm.energy(y0, core)
     return KernelModel(core, y0, settings, kinetic + potential, layout)

@@ -73,7 +73,7 @@ def read(tables) -> tuple[LinearSupport, ...]:
     return tuple(out)
 
 
-def pack(supports, modal, n_modes: int) -> kernel.Params:
+def pack(supports, modal, n_modes: int, machine=None) -> kernel.Params:
     """The kernel's parameters of the supports, with each elastic mode's shape at them (``modal``: None if rigid)."""
     values = np.array([s.row() for s in supports], float).reshape(len(supports), len(kernel.FIELDS))
     shape_x, shape_y = np.zeros((len(supports), n_modes)), np.zeros((len(supports), n_modes))
