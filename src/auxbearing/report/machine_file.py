@@ -39,6 +39,9 @@ process loads |
 | `[[unbalance]]` | one per unbalance plane (instead of `rotor.unbalance` and `couple_unbalance`): position, amount \
 `U = m e`, phase; with `matrices` they also bend the rotor |
 | `[[touchdown]]` | one per touchdown plane (one or more): bearing, clearances, mount, friction, heat |
+| `[[amb]]` | one per magnetic bearing: position, force law, PID gains, sensor and amplifier; it holds the rotor \
+until a `[[scenario]]` fails it (without one, it fails at the drop) |
+| `[[scenario]]` | what fails the magnetic bearings and when: `name`, `kind`, `time`, `decay_time` |
 | `[[linear_support]]` | one per linear station (a seal, a damper, a linearised bearing): `name`, position, \
 stiffness and damping coefficients |
 | `[drop]` | the drop simulation: duration, tolerances, budgets |
@@ -78,7 +81,12 @@ _INTRO = _INTRO.replace("{life_row}", _LIFE_ROW)
 #: Rows of the keys whose value is text, not a number with a unit.
 _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file of the free-free rotor's matrices M, K, "
                         "G (and C) and its nodes (see above); mass and inertias then come from it | the machine's "
-                        "FE model |"]}
+                        "FE model |"],
+              "scenario": ["| `name` | - | required | The scenario's name (`drop --scenario NAME`) | ours |",
+                           "| `kind` | - | `power_loss` | What fails: `power_loss` (every magnetic bearing loses "
+                           "its "
+                           "amplifiers; the coils discharge with `decay_time`); `axis_loss`, `sensor_failure`, `shock`, "
+                           "`unbalance_step`, `base_acceleration` are not modelled yet and refused | ours |"]}
 
 
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
@@ -86,9 +94,12 @@ def _sections() -> list[tuple[str, tuple[Param, ...]]]:
     from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN, UNBALANCE
     from auxbearing.machine.stations import kinds
 
+    from auxbearing.machine.stations.amb import SCENARIO_PARAMS
+
     stations = [(kind.KIND, kind.PARAMS) for kind in kinds()]
-    return [("rotor", ROTOR), ("unbalance", UNBALANCE), ("touchdown", TOUCHDOWN), *stations, ("drop", SIMULATION),
-            ("coastdown", COASTDOWN), ("life", LIFE), ("criteria", CRITERIA), ("verify", VERIFY)]
+    return [("rotor", ROTOR), ("unbalance", UNBALANCE), ("touchdown", TOUCHDOWN), *stations,
+            ("scenario", SCENARIO_PARAMS), ("drop", SIMULATION), ("coastdown", COASTDOWN), ("life", LIFE),
+            ("criteria", CRITERIA), ("verify", VERIFY)]
 
 
 def _cell(text: str) -> str:
@@ -128,7 +139,7 @@ def markdown() -> str:
 
     lines = [_INTRO]
     for name, rows in _sections():
-        header = f"[[{name}]]" if name in ("touchdown", "unbalance", *TABLES) else f"[{name}]"
+        header = f"[[{name}]]" if name in ("touchdown", "unbalance", "scenario", *TABLES) else f"[{name}]"
         lines += [f"## `{header}`", "", "| key | unit | default | meaning | source |", "|---|---|---|---|---|"]
         for p in rows:
             unit = p.display_unit or si_unit(p.dimension) or "-"
