@@ -84,9 +84,8 @@ _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file o
                         "FE model |"],
               "scenario": ["| `name` | - | required | The scenario's name (`drop --scenario NAME`) | ours |",
                            "| `kind` | - | `power_loss` | What fails: `power_loss` (every magnetic bearing loses "
-                           "its "
-                           "amplifiers; the coils discharge with `decay_time`); `axis_loss`, `sensor_failure`, `shock`, "
-                           "`unbalance_step`, `base_acceleration` are not modelled yet and refused | ours |"]}
+                           "its amplifiers; the coils discharge with `decay_time`); `axis_loss`, `sensor_failure`, "
+                           "`shock`, `unbalance_step`, `base_acceleration` are not modelled yet and refused | ours |"]}
 
 
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
