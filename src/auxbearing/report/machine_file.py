@@ -92,7 +92,6 @@ def _sections() -> list[tuple[str, tuple[Param, ...]]]:
     from auxbearing.machine.judging import CRITERIA, VERIFY
     from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN, UNBALANCE
     from auxbearing.machine.stations import kinds
-
     from auxbearing.machine.stations.amb import SCENARIO_PARAMS
 
     stations = [(kind.KIND, kind.PARAMS) for kind in kinds()]
