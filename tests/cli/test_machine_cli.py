@@ -137,3 +137,27 @@ def test_the_shipped_compressor_matrices_are_what_the_example_script_builds():
         shipped = np.load(path)
         for name, value in (("M", built.mass), ("K", built.stiffness), ("G", built.gyroscopic), ("nodes", built.nodes)):
             assert np.array_equal(shipped[name], value), name
+
+
+def test_the_blowers_power_loss_drops_the_levitated_rotor_after_the_scenarios_time():
+    r = CliRunner().invoke(cli, ["drop", "--machine", "blower", "--scenario", "power loss", "--duration", "60 ms",
+                                 "--json", "--quiet"], catch_exceptions=False)
+    assert r.exit_code == 0, r.output
+    data = json.loads(r.output)
+    assert data["verdict"] == "ok"
+    assert data["scenario"] == {"name": "power loss", "kind": "power_loss", "time_ms": 30.0, "decay_time_ms": 5.0}
+    assert [a["levitated_offset_um"] for a in data["amb"]] == pytest.approx([0.0, 0.0], abs=1e-6)  # integral action
+    # the weight shared by the two bearings at rest: m g / 2 / k_i
+    assert data["amb"][0]["levitated_current_A"] == pytest.approx(10.0 * 9.80665 / 2 / 100.0, rel=1e-9)
+    assert all(p["first_impact_ms"] > 30.0 for p in data["planes"])
+
+
+def test_verify_runs_each_scenario_as_a_case():
+    from auxbearing.machine.files import machine_table
+    from auxbearing.verify.cases import plan_cases
+
+    data, name, base = machine_table("blower")
+    cases = plan_cases(data, name, base, quick=True)
+    machine = cases.machines["scenario: power loss"]
+    assert machine.active_scenario().time == pytest.approx(0.03)
+    assert machine.simulation.duration == pytest.approx(0.03 + 0.05)  # levitated, then the quick drop's length

@@ -5,6 +5,7 @@
   bounces differently;
 * when the process pushes axially, the drop with that thrust reversed (a surge or a reversal): a
   single angular-contact bearing catches one direction only;
+* each ``[[scenario]]`` of the machine's magnetic bearings: levitated until it strikes, then the drop's duration;
 * the coast-down with heat from the maximum speed to standstill (``--quick``: its first
   :data:`QUICK_COASTDOWN` seconds);
 * a campaign over the drop conditions nobody controls, each over a range with a stated origin
@@ -110,6 +111,10 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
     if machine.rotor.axial_force != 0.0:
         cases.machines["drop with the thrust reversed"] = variant(
             data, name, base, rotor={"axial_force": f"{float(-machine.rotor.axial_force)!r} N"}, drop=drop)
+    after = min(machine.simulation.duration, QUICK_DROP) if quick else machine.simulation.duration
+    for scenario in machine.scenarios:  # levitated until the scenario strikes, then the drop's own duration
+        cases.machines[f"scenario: {scenario.name}"] = variant(
+            data, name, base, drop={"duration": f"{float(scenario.time + after)!r} s"}).with_scenario(scenario.name)
     cases.spreads = campaign_spreads(cases.machine, settings)
     cases.quick = quick
     return cases
