@@ -576,6 +576,22 @@ def _describe_structure(rotor: MachineRotor) -> dict | None:
             "free_free_modes_Hz": [float(f) / (2.0 * math.pi) for f in modal.frequencies]}
 
 
+def _ross_rotor(rotor_table: dict, base: Path | None) -> tuple:
+    """``rotor.ross_file`` (and ``rotor.ross_bearings``): the structure and, kept, the ROSS rotor's bearings."""
+    from auxbearing.machine.ross_rotor import BEARINGS, read_ross_file, structure_from_ross, supports_from_ross
+
+    spec = _text(rotor_table, "ross_file", "rotor.", "")
+    keep = rotor_table.pop("ross_bearings", "keep")
+    if keep not in BEARINGS:
+        raise InputError.for_field("rotor.ross_bearings", keep, f"must be one of {', '.join(BEARINGS)}")
+    rotor = read_ross_file(spec, base, "rotor.ross_file")
+    del rotor_table["ross_file"]
+    speed = accept(TABLES["rotor"]["speed"], rotor_table.get("speed"), "rotor.speed") if "speed" in rotor_table \
+        else 0.0
+    supports = supports_from_ross(rotor, speed or 0.0) if keep == "keep" else ()
+    return structure_from_ross(rotor, Path(spec).name), supports
+
+
 def _shifted(station, centre: float):
     """A station read from a file with rotor.matrices: its positions from the mass centre inside."""
     if not centre:
@@ -625,16 +641,24 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
             raise unknown(f"machine.{key}", head[key], key, MACHINE_KEYS)
     rotor_table = data.get("rotor")
     structure = None
+    ross_supports: tuple = ()
+    if isinstance(rotor_table, dict) and "matrices" in rotor_table and "ross_file" in rotor_table:
+        raise InputError.for_field("rotor.ross_file", rotor_table["ross_file"], "give rotor.matrices or "
+                                   "rotor.ross_file, not both")
     if isinstance(rotor_table, dict) and "matrices" in rotor_table:
         rotor_table = dict(rotor_table)
         structure = read_structure(_text(rotor_table, "matrices", "rotor.", ""), base, "rotor.matrices")
         del rotor_table["matrices"]
+    elif isinstance(rotor_table, dict) and "ross_file" in rotor_table:
+        rotor_table = dict(rotor_table)
+        structure, ross_supports = _ross_rotor(rotor_table, base)
     rotor_values = read_table(rotor_table, TABLES["rotor"], "rotor.")
     if structure is not None:
         for key in ("mass", "polar_inertia", "transverse_inertia"):
             if key in rotor_values:
                 raise InputError.for_field(f"rotor.{key}", rotor_table[key],
-                                           "comes from rotor.matrices; give one or the other")
+                                           "comes from the rotor's matrices (rotor.matrices or rotor.ross_file); "
+                                           "give one or the other")
         body = modal_rotor(structure)
         rotor_values.update(mass=body.mass, polar_inertia=body.polar_inertia,
                             transverse_inertia=body.transverse_inertia)
@@ -696,8 +720,8 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                       simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
                       coastdown=Coastdown(**coast_values, vacuum=vacuum),
                       life=Life(**life_values, dent_accumulation=accumulation),
-                      stations=tuple(_shifted(s, centre) for kind in station_kinds()
-                                     for s in kind.read(data.get(kind.KIND))),
+                      stations=tuple(_shifted(s, centre) for s in ross_supports) + tuple(
+                          _shifted(s, centre) for kind in station_kinds() for s in kind.read(data.get(kind.KIND))),
                       scenarios=read_scenarios(data.get("scenario")))
     check_combinations(data, machine)
     return machine

@@ -81,7 +81,12 @@ _INTRO = _INTRO.replace("{life_row}", _LIFE_ROW)
 #: Rows of the keys whose value is text, not a number with a unit.
 _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file of the free-free rotor's matrices M, K, "
                         "G (and C) and its nodes (see above); mass and inertias then come from it | the machine's "
-                        "FE model |"],
+                        "FE model |",
+                        "| `ross_file` | - | none | A rotor saved by ROSS (`Rotor.save`; needs `pip install "
+                        "'auxbearing[ross]'`): its shaft and disks are the matrices, its nodes' coordinates the "
+                        "positions | ROSS |",
+                        "| `ross_bearings` | - | `keep` | With `ross_file`: `keep` its bearings and seals as "
+                        "`[[linear_support]]` stations (coefficients at `rotor.speed`) or `drop` them | ours |"],
               "scenario": ["| `name` | - | required | The scenario's name (`drop --scenario NAME`) | ours |",
                            "| `kind` | - | `power_loss` | What fails: `power_loss` (every magnetic bearing loses "
                            "its amplifiers; the coils discharge with `decay_time`); `axis_loss`, `sensor_failure`, "
