@@ -23,7 +23,7 @@ K, A, M, JT, JP = 1.0e6, 0.15, 10.0, 0.2, 0.015
 def _blower(supports=True):
     data, _, base = machine_table("blower")
     data = copy.deepcopy(data)
-    for key in ("criteria", "candidate"):
+    for key in ("criteria", "candidate", "amb", "scenario"):  # the rigid rotor on linear supports alone
         data.pop(key)
     if supports:
         data["linear_support"] = [{"position": f"{s * A} m", "kxx": f"{K} N/m", "kyy": f"{K} N/m"} for s in (-1, 1)]

@@ -82,7 +82,7 @@ def test_the_steady_unbalance_response_of_an_elastic_shaft_is_the_linear_one(tmp
 def _blower(**rotor):
     data, _, base = machine_table("blower")
     data = copy.deepcopy(data)
-    for key in ("criteria", "candidate"):
+    for key in ("criteria", "candidate", "amb", "scenario"):
         data.pop(key)
     data["rotor"].pop("unbalance")
     data["rotor"].pop("unbalance_phase")

@@ -18,9 +18,10 @@ def _machine(*supports):
 
 def test_a_support_is_read_with_its_units():
     m = _machine({"name": "seal", "position": "50 mm", "kxx": "2 N/um", "kxy": "-3e5 N/m", "cyy": "0.5 N*s/mm"})
-    (seal,) = m.stations
+    (seal,) = [s for s in m.stations if s.KIND == "linear_support"]
     assert (seal.name, seal.position, seal.kxx, seal.kxy, seal.cyy) == ("seal", 0.05, 2e6, -3e5, 500.0)
-    assert m.describe()["stations"][0]["kxx_N_per_m"] == 2e6
+    described = [s for s in m.describe()["stations"] if s["kind"] == "linear_support"]
+    assert described[0]["kxx_N_per_m"] == 2e6
 
 
 @pytest.mark.parametrize(("table", "expected"), [

@@ -40,7 +40,7 @@ def test_mass_and_inertias_come_from_the_matrices(tmp_path):
 
 
 @pytest.mark.parametrize(("kwargs", "names"), [
-    ({"extra": 'mass = "5 kg"'}, ("rotor.mass", "comes from rotor.matrices")),
+    ({"extra": 'mass = "5 kg"'}, ("rotor.mass", "comes from the rotor's matrices")),
     ({"left": "-0.25 m"}, ("touchdown.0.position", "-250 mm", "must sit on a node")),
     ({"K": None}, ("rotor.matrices", "has no array 'K'")),
     ({"nodes": np.zeros(7)}, ("rotor.matrices", "strictly increasing")),

@@ -12,8 +12,10 @@ b_x = (1, 0, 0, a, phi_x(a)), b_y = (0, 1, -a, 0, phi_y(a)); its 2x2 stiffness S
 (Friswell, Penny, Garvey & Lees, *Dynamics of Rotating Machines*, 2010, Ch. 3 and 6 for the assembly and the
 whirl directions). Two states of the touchdown planes are shown:
 
-* free: the rotor levitated, the journals clear of their races; only the linear supports hold it (a rotor
-  with none has its rigid-body modes at zero, and its nutation J_p Omega / J_t at speed);
+* free: the rotor levitated, the journals clear of their races; the linear supports and the magnetic bearings
+  hold it, each bearing as its controller's ideal PD law, a spring k_i k_p - k_s and a damper k_i k_d at the
+  actuator (the sensor's and amplifier's lags and the integral action left out: exact well below their
+  bandwidths). A rotor held by nothing has its rigid-body modes at zero, and its nutation J_p Omega / J_t at speed;
 * in contact: each plane carrying its share of the weight at rest, linearised as an isotropic spring: the
   journal/race line contact's tangent stiffness (10/9) F / delta at that load (Eq. 19) in series with the
   ball set's and the mount's (:func:`auxbearing.analysis.whirl.natural_frequency`); undamped.
@@ -125,13 +127,17 @@ def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, 
             mass[i, i], gyro[i, :], gyro[:, i] = 1.0, 0.0, 0.0
             stiff[i, i] = 1.0  # a locked tilt: a unit spring on a unit inertia, dropped from the results below
     for kind in station_kinds():
-        if kind.KIND != "linear_support":
-            continue
         for i, s in enumerate(of_kind(machine.stations, kind.KIND)):
             bx, by = station_rows(machine, s.position, f"{kind.KIND}.{i}.position")
             b = np.vstack([bx, by])
-            stiff += b.T @ np.array([[s.kxx, s.kxy], [s.kyx, s.kyy]]) @ b
-            damp += b.T @ np.array([[s.cxx, s.cxy], [s.cyx, s.cyy]]) @ b
+            if kind.KIND == "linear_support":
+                stiff += b.T @ np.array([[s.kxx, s.kxy], [s.kyx, s.kyy]]) @ b
+                damp += b.T @ np.array([[s.cxx, s.cxy], [s.cyx, s.cyy]]) @ b
+            elif kind.KIND == "amb" and state == "free":
+                sx, sy = station_rows(machine, s.sensor, f"{kind.KIND}.{i}.sensor_position")
+                sensor = np.vstack([sx, sy])
+                stiff += s.current_stiffness * s.kp * b.T @ sensor - s.position_stiffness * b.T @ b
+                damp += s.current_stiffness * s.kd * b.T @ sensor
     springs = []
     for k, plane in enumerate(machine.planes):
         spring = contact_stiffness(machine, k) if state == "contact" else 0.0
