@@ -41,11 +41,11 @@ take the coupling -Omega gt eta' (the skew gyroscopic matrix of the whole struct
 modes are M-orthogonal to the rigid motions, so gravity, the unbalance of the rigid body and the process
 forces (spread like the mass) do not load them; each station's journal moves by the modes' shapes there.
 
-State layout (:func:`layout`, generated from the number of planes and modes): the rotor's :data:`ROTOR_STATES`,
-one block of :data:`PLANE_STATES` per plane, the modes' coordinates then their rates, then the bookkeeping
-integrals of work and heat that the energy audit uses (:data:`LEDGER`, then :data:`PLANE_LEDGER` per plane,
-then the heat of the structure's damping when it has modes); these carry ``atol = inf`` so they never
-steer the step. The kernels read the plane count from the packed planes' tuples (a compile-time constant:
+State layout (:func:`layout`, generated from the planes, modes and stations): the rotor's :data:`ROTOR_STATES`,
+one block of :data:`PLANE_STATES` per plane, the modes' coordinates then their rates, each station kind's
+STATES per station (:data:`STATION_KINDS`), then the bookkeeping integrals of work and heat that the energy
+audit uses (:data:`LEDGER`, :data:`PLANE_LEDGER` per plane, the heat of the structure's damping when it has
+modes, each station kind's LEDGER per station); these carry ``atol = inf`` so they never steer the step. The kernels read the plane count from the packed planes' tuples (a compile-time constant:
 numba compiles one specialisation per count, and :data:`MIN_PLANES` pads the common machines to one).
 """
 
