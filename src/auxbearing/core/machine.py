@@ -45,8 +45,10 @@ State layout (:func:`layout`, generated from the planes, modes and stations): th
 one block of :data:`PLANE_STATES` per plane, the modes' coordinates then their rates, each station kind's
 STATES per station (:data:`STATION_KINDS`), then the bookkeeping integrals of work and heat that the energy
 audit uses (:data:`LEDGER`, :data:`PLANE_LEDGER` per plane, the heat of the structure's damping when it has
-modes, each station kind's LEDGER per station); these carry ``atol = inf`` so they never steer the step. The kernels read the plane count from the packed planes' tuples (a compile-time constant:
-numba compiles one specialisation per count, and :data:`MIN_PLANES` pads the common machines to one).
+modes, each station kind's LEDGER per station); these carry ``atol = inf`` so they never steer the step.
+The kernels read the plane count from the packed planes' tuples (a compile-time constant: numba compiles one
+specialisation per count, and :data:`MIN_PLANES` pads the common machines to one); modes and stations are
+arrays, so any number of them shares one compiled kernel.
 """
 
 from __future__ import annotations
