@@ -280,7 +280,7 @@ def journal_centres(machine: Machine, model, grid: np.ndarray) -> tuple[np.ndarr
     positions = np.array([p.position for p in machine.planes])
     x = grid[:, [cm.X]] + positions * grid[:, [cm.TY]]
     y = grid[:, [cm.Y]] - positions * grid[:, [cm.TX]]
-    layout, modes = model.layout, model.machine.modes
+    layout, modes = model.layout, model.modes
     if layout.modes:
         eta = grid[:, layout.modes_at:layout.modes_at + layout.modes]
         x = x + eta @ modes.shape_x[:len(positions)].T
@@ -321,7 +321,7 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
     if layout.modes:
         data["mode"] = (("time", "mode"), grid[:, layout.modes_at:layout.modes_at + layout.modes],
                         {"units": "m*kg**0.5", "long_name": "Elastic mode coordinate (mass-normalised shape)"})
-    for kind, params in zip(station_kinds(), model.machine.stations, strict=True):
+    for kind, params in zip(station_kinds(), model.stations, strict=True):
         def axis(i, position, params=params):
             return axis_at(model, grid, position, params.shape_x[i], params.shape_y[i])
         data.update(kind.series(of_kind(machine.stations, kind.KIND), axis))

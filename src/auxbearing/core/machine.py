@@ -89,22 +89,38 @@ def ledger_at(n_planes, n_modes, n_station_states=0):
     return N_ROTOR + n_planes * N_PLANE + 2 * n_modes + n_station_states
 
 
+#: Where each part of the modes' and stations' data starts in :attr:`Machine.extra` (:attr:`Machine.extra_at`),
+#: after three counts: modes, linear supports, magnetic bearings. One flat array rather than a struct of
+#: arrays: every array a :class:`Machine` holds costs a reference-count update wherever it is passed.
+EXTRA_FIELDS = ("modes", "supports", "bearings", "stiffness", "damping", "gyroscopic", "tilt_gyroscopic", "shape_x",
+                "shape_y", "unbalance_re", "unbalance_im", "support_values", "support_shape_x", "support_shape_y",
+                "bearing_values", "bearing_shape_x", "bearing_shape_y", "bearing_sensor_x", "bearing_sensor_y")
+(E_NM, E_NSUP, E_NAMB, E_STIFF, E_DAMP, E_GYRO, E_TILT, E_SX, E_SY, E_URE, E_UIM, E_SUP, E_SUP_SX, E_SUP_SY, E_AMB,
+ E_AMB_SX, E_AMB_SY, E_AMB_SSX, E_AMB_SSY) = range(len(EXTRA_FIELDS))
+
+
+@njit(cache=True, inline="always")
+def mode_count(m):
+    """Elastic modes of the packed machine."""
+    return m.extra_at[E_NM]
+
+
 @njit(cache=True, inline="always")
 def station_states_at(m):
     """First state of the stations' block (after the modes)."""
-    return N_ROTOR + len(m.planes.active) * N_PLANE + 2 * m.modes.stiffness.shape[0]
+    return N_ROTOR + len(m.planes.active) * N_PLANE + 2 * m.extra_at[E_NM]
 
 
 @njit(cache=True, inline="always")
 def station_state_count(m):
     """States of every station of every kind (each kind's STATES per station, in :data:`STATION_KINDS` order)."""
-    return m.stations[1].values.shape[0] * len(amb.STATES)
+    return m.extra_at[E_NAMB] * len(amb.STATES)
 
 
 @njit(cache=True, inline="always")
 def ledger_of(m):
     """Index of the ledger in the state of the packed machine ``m``."""
-    return ledger_at(len(m.planes.active), m.modes.stiffness.shape[0], station_state_count(m))
+    return ledger_at(len(m.planes.active), m.extra_at[E_NM], station_state_count(m))
 
 
 class Layout(NamedTuple):
@@ -156,7 +172,7 @@ def layout(n_planes: int, n_modes: int = 0, stations: tuple = ()) -> Layout:
 
 def layout_of(m) -> Layout:
     """The state layout of a packed :class:`Machine`."""
-    return layout(len(m.planes.active), m.modes.stiffness.shape[0], tuple(s.values.shape[0] for s in m.stations))
+    return layout(len(m.planes.active), m.extra_at[E_NM], (m.extra_at[E_NSUP], m.extra_at[E_NAMB]))
 
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
 #: integrates the first harmonics of the slip field exactly).
@@ -258,6 +274,21 @@ class Modes(NamedTuple):
     unbalance_im: np.ndarray
 
 
+def pack_extra(modes: Modes, stations: tuple) -> tuple[np.ndarray, tuple]:
+    """(extra, extra_at) of a :class:`Machine`: the modes and each kind's parameters, flat (:data:`EXTRA_FIELDS`)."""
+    supports, bearings = stations
+    parts = (modes.stiffness, modes.damping, modes.gyroscopic, modes.tilt_gyroscopic, modes.shape_x, modes.shape_y,
+             modes.unbalance_re, modes.unbalance_im, supports.values, supports.shape_x, supports.shape_y,
+             bearings.values, bearings.shape_x, bearings.shape_y, bearings.sensor_shape_x, bearings.sensor_shape_y)
+    offsets, at = [], 0
+    for part in parts:
+        offsets.append(at)
+        at += np.asarray(part).size
+    extra = np.concatenate([np.ascontiguousarray(part, float).ravel() for part in parts]) if at else np.zeros(0)
+    counts = (modes.stiffness.shape[0], supports.values.shape[0], bearings.values.shape[0])
+    return extra, tuple(int(v) for v in (*counts, *offsets))
+
+
 def rigid_modes(n_planes: int) -> Modes:
     """No elastic mode: the rigid rotor."""
     return Modes(np.zeros(0), np.zeros((0, 0)), np.zeros((0, 0)), np.zeros((2, 0)), np.zeros((n_planes, 0)),
@@ -294,8 +325,8 @@ class Machine(NamedTuple):
     scratch: np.ndarray  #: (:data:`SCRATCH`,) generalised forces, ball-set displacement and resultant
     jac_stub: np.ndarray  #: (1, 1): the Jacobian argument of the ball-set kernel, unused here
     last_diag: np.ndarray  #: (planes, len(DIAG_FIELDS)): each plane's diagnostics at the last rhs call
-    modes: Modes  #: the rotor's elastic modes (none: rigid)
-    stations: tuple  #: each kind of :data:`STATION_KINDS`' parameters, in that order
+    extra: np.ndarray  #: the modes' and stations' data, flat (:func:`pack_extra`, :data:`EXTRA_FIELDS`)
+    extra_at: tuple  #: counts and offsets into ``extra`` (ints, :data:`EXTRA_FIELDS`)
 
 
 #: The station kinds beside the touchdown planes, in the order of their states and ledger slots. A kind is a
@@ -366,48 +397,57 @@ def journal_point(y, m, k):
     jy = y[Y] - a * y[TX]
     evx = 0.0
     evy = 0.0
-    md = m.modes
-    nm = md.stiffness.shape[0]
+    nm = m.extra_at[E_NM]
     if nm > 0:
         at = N_ROTOR + len(m.planes.active) * N_PLANE
+        ox = m.extra_at[E_SX] + k * nm
+        oy = m.extra_at[E_SY] + k * nm
         for j in range(nm):
-            jx += md.shape_x[k, j] * y[at + j]
-            jy += md.shape_y[k, j] * y[at + j]
-            evx += md.shape_x[k, j] * y[at + nm + j]
-            evy += md.shape_y[k, j] * y[at + nm + j]
+            jx += m.extra[ox + j] * y[at + j]
+            jy += m.extra[oy + j] * y[at + j]
+            evx += m.extra[ox + j] * y[at + nm + j]
+            evy += m.extra[oy + j] * y[at + nm + j]
     return jx, jy, evx, evy
 
 
 @njit(cache=True, inline="always")
 def _apply_modes(m, k, fx, fy):
     """Add a lateral force at plane k to the modal forces (its projection on each mode's shape there)."""
-    md = m.modes
-    for j in range(md.stiffness.shape[0]):
-        m.scratch[_QM + j] += md.shape_x[k, j] * fx + md.shape_y[k, j] * fy
+    nm = m.extra_at[E_NM]
+    _apply_shapes(m, m.extra_at[E_SX] + k * nm, m.extra_at[E_SY] + k * nm, fx, fy)
 
 
 @njit(cache=True, inline="always")
-def station_point(y, m, a, shape_x, shape_y, i):
-    """The rotor axis at axial position a (a station's row i of shapes): x, y and their velocities [m, m/s]."""
+def _apply_shapes(m, ox, oy, fx, fy):
+    """Add a lateral force to the modal forces through the shapes stored at ``ox``, ``oy`` of ``m.extra``."""
+    for j in range(m.extra_at[E_NM]):
+        m.scratch[_QM + j] += m.extra[ox + j] * fx + m.extra[oy + j] * fy
+
+
+@njit(cache=True, inline="always")
+def station_point(y, m, a, ox, oy):
+    """The rotor axis at axial position a, bent by the shapes at ``ox``, ``oy`` of ``m.extra`` [m, m/s].
+
+    Returns x, y and their velocities.
+    """
     jx = y[X] + a * y[TY]
     jy = y[Y] - a * y[TX]
     vx = y[VX] + a * y[WY]
     vy = y[VY] - a * y[WX]
-    nm = m.modes.stiffness.shape[0]
+    nm = m.extra_at[E_NM]
     at = N_ROTOR + len(m.planes.active) * N_PLANE
     for j in range(nm):
-        jx += shape_x[i, j] * y[at + j]
-        jy += shape_y[i, j] * y[at + j]
-        vx += shape_x[i, j] * y[at + nm + j]
-        vy += shape_y[i, j] * y[at + nm + j]
+        jx += m.extra[ox + j] * y[at + j]
+        jy += m.extra[oy + j] * y[at + j]
+        vx += m.extra[ox + j] * y[at + nm + j]
+        vy += m.extra[oy + j] * y[at + nm + j]
     return jx, jy, vx, vy
 
 
 @njit(cache=True, inline="always")
 def stations_ledger(m):
     """First ledger slot of the stations beside the planes (after the planes' heats and the structure's loss)."""
-    nm = m.modes.stiffness.shape[0]
-    return ledger_of(m) + L_HEAT + 3 * len(m.planes.active) + (1 if nm > 0 else 0)
+    return ledger_of(m) + L_HEAT + 3 * len(m.planes.active) + (1 if m.extra_at[E_NM] > 0 else 0)
 
 
 @njit(cache=True)
@@ -417,28 +457,29 @@ def _stations(t, y, m, kin, q, out):
     Called, not inlined: a machine without such stations runs only the empty loops.
     """
     at = stations_ledger(m)
-    supports = m.stations[0]
-    for i in range(supports.values.shape[0]):
-        row = supports.values[i]
-        jx, jy, vx, vy = station_point(y, m, row[0], supports.shape_x, supports.shape_y, i)
+    e, nm = m.extra_at, m.extra_at[E_NM]
+    width = len(linear_support.FIELDS)
+    for i in range(e[E_NSUP]):
+        row = m.extra[e[E_SUP] + i * width:e[E_SUP] + (i + 1) * width]
+        ox, oy = e[E_SUP_SX] + i * nm, e[E_SUP_SY] + i * nm
+        jx, jy, vx, vy = station_point(y, m, row[0], ox, oy)
         fx, fy, taken = linear_support.force(row, jx, jy, vx, vy)
         _apply_rotor(q, kin, row[0], 0.0, 0.0, fx, fy, 0.0)
-        for j in range(m.modes.stiffness.shape[0]):
-            m.scratch[_QM + j] += supports.shape_x[i, j] * fx + supports.shape_y[i, j] * fy
+        _apply_shapes(m, ox, oy, fx, fy)
         out[at + i] = taken
-    at += supports.values.shape[0] * len(linear_support.LEDGER)
-    bearings = m.stations[1]
+    at += e[E_NSUP] * len(linear_support.LEDGER)
     states = station_states_at(m)
-    for i in range(bearings.values.shape[0]):
-        row = bearings.values[i]
-        jx, jy, vx, vy = station_point(y, m, row[amb.P_POS], bearings.shape_x, bearings.shape_y, i)
-        sx, sy, _, _ = station_point(y, m, row[amb.P_SENSOR], bearings.sensor_shape_x, bearings.sensor_shape_y, i)
+    width = len(amb.FIELDS)
+    for i in range(e[E_NAMB]):
+        row = m.extra[e[E_AMB] + i * width:e[E_AMB] + (i + 1) * width]
+        ox, oy = e[E_AMB_SX] + i * nm, e[E_AMB_SY] + i * nm
+        jx, jy, vx, vy = station_point(y, m, row[amb.P_POS], ox, oy)
+        sx, sy, _, _ = station_point(y, m, row[amb.P_SENSOR], e[E_AMB_SSX] + i * nm, e[E_AMB_SSY] + i * nm)
         b = states + i * len(amb.STATES)
         fx, out[b], out[b + 1], out[b + 2] = amb.axis(row, t, jx, sx, y[b], y[b + 1], y[b + 2])
         fy, out[b + 3], out[b + 4], out[b + 5] = amb.axis(row, t, jy, sy, y[b + 3], y[b + 4], y[b + 5])
         _apply_rotor(q, kin, row[amb.P_POS], 0.0, 0.0, fx, fy, 0.0)
-        for j in range(m.modes.stiffness.shape[0]):
-            m.scratch[_QM + j] += bearings.shape_x[i, j] * fx + bearings.shape_y[i, j] * fy
+        _apply_shapes(m, ox, oy, fx, fy)
         out[at + i] = -(fx * vx + fy * vy)
 
 
@@ -705,7 +746,7 @@ def _modal_rates(y, m, kin, om, spin_acc, q, out, n_planes, nm, ledger):
     is booked as work brought in, so the energy audit still closes. Called, not inlined: a rigid rotor never
     takes it, and the right-hand side compiles for both.
     """
-    md = m.modes
+    e, x = m.extra_at, m.extra
     at = N_ROTOR + n_planes * N_PLANE
     tilt = m.rotor.tilt_free
     loss = 0.0
@@ -713,19 +754,20 @@ def _modal_rates(y, m, kin, om, spin_acc, q, out, n_planes, nm, ledger):
     unbalance_work = 0.0
     for j in range(nm):
         rate = y[at + nm + j]
-        real = md.unbalance_re[j] * c - md.unbalance_im[j] * s
-        imag = md.unbalance_re[j] * s + md.unbalance_im[j] * c
+        real = x[e[E_URE] + j] * c - x[e[E_UIM] + j] * s
+        imag = x[e[E_URE] + j] * s + x[e[E_UIM] + j] * c
         push = om * om * real + spin_acc * imag
         unbalance_work += push * rate
-        acc = m.scratch[_QM + j] + push - md.stiffness[j] * y[at + j]
+        acc = m.scratch[_QM + j] + push - x[e[E_STIFF] + j] * y[at + j]
         for i in range(nm):
             other = y[at + nm + i]
-            acc -= (md.damping[j, i] + om * md.gyroscopic[j, i]) * other
-            loss += rate * md.damping[j, i] * other
+            acc -= (x[e[E_DAMP] + j * nm + i] + om * x[e[E_GYRO] + j * nm + i]) * other
+            loss += rate * x[e[E_DAMP] + j * nm + i] * other
         if tilt:
-            acc += om * (md.tilt_gyroscopic[0, j] * kin[8] + md.tilt_gyroscopic[1, j] * kin[9])
-            q[3] -= om * md.tilt_gyroscopic[0, j] * rate
-            q[4] -= om * md.tilt_gyroscopic[1, j] * rate
+            gx, gy = x[e[E_TILT] + j], x[e[E_TILT] + nm + j]
+            acc += om * (gx * kin[8] + gy * kin[9])
+            q[3] -= om * gx * rate
+            q[4] -= om * gy * rate
         out[at + j] = rate
         out[at + nm + j] = acc
     out[ledger + L_HEAT + 3 * n_planes] = loss
@@ -754,15 +796,14 @@ def rhs(t, y, m, out):
     q = m.scratch[_Q:_Q + 6]  # generalised forces on G (3), theta_p (2), phi
     for i in range(6):
         q[i] = 0.0
-    md = m.modes
-    nm = md.stiffness.shape[0]
+    nm = m.extra_at[E_NM]
     for j in range(nm):
         m.scratch[_QM + j] = 0.0
     n_planes = len(m.planes.active)
     for k in range(n_planes):
         if m.planes.active[k] > 0.0:
             plane_forces(k, y, m, kin, q, out, m.last_diag[k])
-    if m.stations[0].values.shape[0] > 0 or m.stations[1].values.shape[0] > 0:
+    if m.extra_at[E_NSUP] > 0 or m.extra_at[E_NAMB] > 0:
         _stations(t, y, m, kin, q, out)
     om = y[OMEGA]
     mass = rotor.mass
@@ -831,16 +872,17 @@ def energy(y, m):
     be = y[PHI] + rotor.unbalance_phase
     gx_, gy_ = y[X] + e * math.cos(be), y[Y] + e * math.sin(be)
     potential = -rotor.mass * (rotor.gravity_x * gx_ + rotor.gravity_y * gy_ + rotor.gravity_z * y[Z])
-    md = m.modes
-    nm = md.stiffness.shape[0]
+    e = m.extra_at
+    nm = e[E_NM]
     at = N_ROTOR + len(p.active) * N_PLANE
     for j in range(nm):
         kinetic += 0.5 * y[at + nm + j] ** 2
-        potential += 0.5 * md.stiffness[j] * y[at + j] ** 2
-    supports = m.stations[0]
-    for i in range(supports.values.shape[0]):
-        jx, jy, _, _ = station_point(y, m, supports.values[i, 0], supports.shape_x, supports.shape_y, i)
-        potential += linear_support.energy(supports.values[i], jx, jy)
+        potential += 0.5 * m.extra[e[E_STIFF] + j] * y[at + j] ** 2
+    width = len(linear_support.FIELDS)
+    for i in range(e[E_NSUP]):
+        row = m.extra[e[E_SUP] + i * width:e[E_SUP] + (i + 1) * width]
+        jx, jy, _, _ = station_point(y, m, row[0], e[E_SUP_SX] + i * nm, e[E_SUP_SY] + i * nm)
+        potential += linear_support.energy(row, jx, jy)
     for k in range(len(p.active)):
         if p.active[k] <= 0.0:
             continue

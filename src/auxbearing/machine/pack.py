@@ -28,6 +28,8 @@ class KernelModel(NamedTuple):
     settings: ig.Settings
     energy0: float  #: mechanical energy at the start [J]
     layout: cm.Layout  #: where each quantity sits in the state
+    modes: cm.Modes  #: the rotor's elastic modes as packed (flat in ``machine.extra`` for the kernels)
+    stations: tuple  #: each station kind's parameters as packed (also flat in ``machine.extra``)
 
 
 def plane_blocks(planes) -> int:
@@ -203,7 +205,7 @@ def pack(machine: Machine) -> KernelModel:
     modal = machine.rotor.modal()
     stations = tuple(kind.pack(of_kind(machine.stations, kind.KIND), modal, nm, machine) for kind in station_kinds())
     core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine),
-                      *cm.new_scratch(n, nm), modes, stations)
+                      *cm.new_scratch(n, nm), *cm.pack_extra(modes, stations))
     layout = cm.layout_of(core)
     y0 = np.zeros(layout.size)
     y0[cm.OMEGA] = r.speed
@@ -243,4 +245,4 @@ def pack(machine: Machine) -> KernelModel:
     _amb_tolerances(machine, layout, atol, sim.atol * s)
     settings = ig.Settings(sim.rtol, atol, sim.max_step, 1e-14, 20000, sim.output_step)
     kinetic, potential = cm.energy(y0, core)
-    return KernelModel(core, y0, settings, kinetic + potential, layout)
+    return KernelModel(core, y0, settings, kinetic + potential, layout, modes, stations)
