@@ -66,7 +66,8 @@ DIMENSIONLESS_WORDS = ("fraction", "ratio", "factor", "step", "share", "count", 
 COUNT_WORDS = ("steps", "points", "samples", "count", "drops", "windows", "balls")
 #: How a key ends when it declares its unit (``race_mass_kg``, ``line_stiffness_N_per_m10_9``, ``speed_rpm``).
 UNIT_SUFFIX = re.compile(r"_(mm|um|m|m2|m3|kg|kg_m2|g_mm|N|kN|N_m|N_per_m\w*|N_s_per_m\w*|s|ms|us|K|C|degC|rpm|Hz|"
-                         r"rad_s|rad|mrad|deg|Pa|kPa|MPa|GPa|W|J|W_per_m_K|J_per_kg_K|Pa_s|mPa_s|percent|1|count)$")
+                         r"rad_s|rad|mrad|deg|Pa|kPa|MPa|GPa|W|J|W_per_m_K|J_per_kg_K|Pa_s|mPa_s|percent|1|count|"
+                         r"A|N_per_A|A_per_m|A_per_m_s|A_s_per_m)$")
 
 
 def page_text(page: str) -> str:

@@ -572,7 +572,7 @@ def _describe_structure(rotor: MachineRotor) -> dict | None:
     if modal is None:
         return None
     return {"source": rotor.structure.source, "nodes": len(modal.nodes), "mass_centre_mm": modal.centre * 1e3,
-            "max_mode_frequency_Hz": rotor.max_mode_frequency, "modal_damping": rotor.modal_damping,
+            "max_mode_frequency_Hz": rotor.max_mode_frequency, "modal_damping_ratio": rotor.modal_damping,
             "free_free_modes_Hz": [float(f) / (2.0 * math.pi) for f in modal.frequencies]}
 
 
