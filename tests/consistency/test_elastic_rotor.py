@@ -84,7 +84,7 @@ def test_a_spinning_elastic_shaft_keeps_its_energy_audit(tmp_path):
     run = run_machine(machine)
     s = run.summary
     assert s["verdict"] == "ok"
-    assert abs(s["largest_energy_error"]) < 1e-3
+    assert abs(s["largest_energy_error"]) < 1e-6  # measured 5.7e-12
     bending = np.abs(run.dataset["mode"].values).max()
     assert bending > 0.0
     # the journals' orbit is the rigid axis plus the bending at the planes
