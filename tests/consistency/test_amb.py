@@ -108,3 +108,11 @@ def test_an_unknown_scenario_names_the_scenarios_there_are():
     machine = _blower(amb={}, scenario=HELD)
     with pytest.raises(InputError, match=r"^--scenario = 'nope': no such \[\[scenario\]\] in blower \(it has: held\)"):
         machine.with_scenario("nope", "--scenario")
+
+
+def test_the_drop_records_each_bearings_currents():
+    machine = _blower(amb={"ki": f"{KINT} A/(m*s)"}, scenario=HELD).with_scenario("held")
+    ds = run_machine(machine.with_simulation(duration=0.01)).dataset
+    assert list(ds["amb"].values) == ["drive end", "non-drive end"]
+    # levitated: each carries half the weight through its current at the start, k_i i = m g / 2
+    assert ds["amb_current_y"].values[0] == pytest.approx([machine.rotor.mass * 9.80665 / 2 / KI] * 2, rel=1e-9)

@@ -321,10 +321,15 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
     if layout.modes:
         data["mode"] = (("time", "mode"), grid[:, layout.modes_at:layout.modes_at + layout.modes],
                         {"units": "m*kg**0.5", "long_name": "Elastic mode coordinate (mass-normalised shape)"})
-    for kind, params in zip(station_kinds(), model.stations, strict=True):
+    for k, (kind, params) in enumerate(zip(station_kinds(), model.stations, strict=True)):
         def axis(i, position, params=params):
             return axis_at(model, grid, position, params.shape_x[i], params.shape_y[i])
-        data.update(kind.series(of_kind(machine.stations, kind.KIND), axis))
+
+        def states(i, k=k):
+            width = len(cm.STATION_KINDS[k].STATES)
+            at = layout.station_states_at[k] + i * width
+            return grid[:, at:at + width]
+        data.update(kind.series(of_kind(machine.stations, kind.KIND), axis, states))
     # per-ball states where they fit the memory cap; their largest stress is the plane's, so the
     # diagnostics need to evaluate the ball stresses only for planes without them
     states = {}

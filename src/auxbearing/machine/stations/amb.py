@@ -157,9 +157,15 @@ def pack(bearings, modal, n_modes: int, machine=None) -> kernel.Params:
     return kernel.Params(values, *shapes)
 
 
-def series(bearings, journal) -> dict:
-    """Nothing beyond the states (the coil currents are in the run's states)."""
-    return {}
+def series(bearings, journal, states) -> dict:
+    """Each bearing's coil currents over a run (``states(i)``: its states on the run's grid, kernel order)."""
+    if not bearings:
+        return {}
+    x = np.stack([states(i)[:, kernel.S_CURRENT] for i in range(len(bearings))], axis=1)
+    y = np.stack([states(i)[:, 3 + kernel.S_CURRENT] for i in range(len(bearings))], axis=1)
+    return {"amb_current_x": (("time", "amb"), x, {"units": "A", "long_name": "Magnetic bearing's control current, x"}),
+            "amb_current_y": (("time", "amb"), y, {"units": "A", "long_name": "Magnetic bearing's control current, y"}),
+            "amb": ("amb", [b.name for b in bearings], {})}
 
 
 def describe(b: MagneticBearing) -> dict:
