@@ -95,21 +95,11 @@ AT_THE_DROP = Scenario("power loss at the drop")
 
 def read(tables) -> tuple[MagneticBearing, ...]:
     """The ``[[amb]]`` tables of a machine file (values with units)."""
-    if tables is None:
-        return ()
-    if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
-        raise InputError.for_field(KIND, tables, "give one [[amb]] table per magnetic bearing")
+    from auxbearing.machine.stations import read_tables
+
     out = []
-    for i, table in enumerate(tables):
-        where = f"{KIND}.{i}."
-        table = dict(table)
-        name = table.pop("name", f"AMB {i}")
-        if not isinstance(name, str):
-            raise InputError.for_field(where + "name", name, "must be text")
-        values = read_table(table, TABLE, where)
-        for key in ("position", "current_stiffness", "kp"):
-            if key not in values:
-                raise InputError(f"{where}{key}: missing; every [[amb]] needs position, current_stiffness and kp")
+    for where, name, values, table in read_tables(tables, KIND, TABLE, ("position", "current_stiffness", "kp"),
+                                                  "AMB"):
         bearing = MagneticBearing(name=name, **values)
         if bearing.closed_loop_stiffness() <= 0.0:
             raise InputError.for_field(where + "kp", table.get("kp"), "too small to hold the rotor: kp "

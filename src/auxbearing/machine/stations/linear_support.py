@@ -11,8 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from auxbearing.common.errors import InputError
-from auxbearing.common.params import Param, by_key, read_table
+from auxbearing.common.params import Param, by_key
 from auxbearing.core import linear_support as kernel
 
 KIND = kernel.NAME
@@ -55,22 +54,10 @@ class LinearSupport:
 
 def read(tables) -> tuple[LinearSupport, ...]:
     """The ``[[linear_support]]`` tables of a machine file (values with units)."""
-    if tables is None:
-        return ()
-    if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
-        raise InputError.for_field(KIND, tables, "give one [[linear_support]] table per station")
-    out = []
-    for i, table in enumerate(tables):
-        where = f"{KIND}.{i}."
-        table = dict(table)
-        name = table.pop("name", f"support {i}")
-        if not isinstance(name, str):
-            raise InputError.for_field(where + "name", name, "must be text")
-        values = read_table(table, TABLE, where)
-        if "position" not in values:
-            raise InputError(f"{where}position: missing; every [[linear_support]] needs its axial position")
-        out.append(LinearSupport(name=name, **values))
-    return tuple(out)
+    from auxbearing.machine.stations import read_tables
+
+    return tuple(LinearSupport(name=name, **values)
+                 for _, name, values, _ in read_tables(tables, KIND, TABLE, ("position",), "support"))
 
 
 def pack(supports, modal, n_modes: int, machine=None) -> kernel.Params:
