@@ -65,7 +65,7 @@ def test_cross_coupling_past_c_omega_n_makes_the_forward_whirl_grow(ratio):
 def test_the_support_books_the_work_of_its_cross_coupling_and_damping():
     machine = _held_rotor(0.5 * C * np.sqrt(K / MASS), duration="0.2 s")
     model = pack(machine)
-    assert model.layout.stations == (1, 0)  # one linear support, no magnetic bearing
+    assert model.layout.stations == (1, 0, 0)  # one linear support, no magnetic bearing, no load
     assert model.layout.names[model.layout.stations_at] == "support_loss_0"
     run = run_machine(machine)
     assert abs(run.summary["largest_energy_error"]) < 1e-6

@@ -22,6 +22,7 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
+from auxbearing.analysis.scenario_outcome import outcome
 from auxbearing.analysis.whirl import natural_frequency, timeline
 from auxbearing.bearings.ballset import ballset_state
 from auxbearing.bearings.ratings import ISO76_BALL_STRESS, safety_factor
@@ -35,6 +36,7 @@ from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
 from auxbearing.machine.model import Machine
 from auxbearing.machine.pack import journal_pressure, pack
+from auxbearing.machine.scenario import breakpoints
 from auxbearing.machine.stations import kinds as station_kinds
 from auxbearing.machine.stations import of_kind
 
@@ -147,11 +149,15 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
     settings, grid, y, memory, watch = start_driver(machine, model, duration, out_step)
     verdict = OK
     wall = 0.0
+    stops = [t for t in breakpoints(machine) if t < duration] + [duration]
     while True:
         interrupt.check()  # before every chunk: a Ctrl-C that a library swallowed still stops the run
         start = time.perf_counter()
-        status = drive.advance(model.machine, watch, y, duration, settings, memory, grid)
+        status = drive.advance(model.machine, watch, y, stops[0], settings, memory, grid)
         wall += time.perf_counter() - start
+        if status == ig.FINISHED and len(stops) > 1:
+            stops.pop(0)  # a scenario's or a load's time reached: on to the next
+            continue
         if status == ig.FINISHED:
             break
         if status == ig.STOPPED:
@@ -501,14 +507,9 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
     }
     bearings = of_kind(machine.stations, "amb")
     if bearings:
-        out["scenario"] = _scenario_summary(machine)
+        out["scenario"] = outcome(machine, ds, planes)
         out["amb"] = _amb_summary(machine, model, run.grid, bearings)
     return out
-
-
-def _scenario_summary(machine: Machine) -> dict:
-    s = machine.active_scenario()
-    return {"name": s.name, "kind": s.kind, "time_ms": s.time * 1e3, "decay_time_ms": s.decay_time * 1e3}
 
 
 def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[dict]:
@@ -524,11 +525,15 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
     out = []
     for i, b in enumerate(bearings):
         block = at + i * len(cm.amb.STATES)
-        currents = np.hypot(grid[:, block + cm.amb.S_CURRENT], grid[:, block + 3 + cm.amb.S_CURRENT])
+        ix, iy = grid[:, block + cm.amb.S_CURRENT], grid[:, block + 3 + cm.amb.S_CURRENT]
+        currents = np.hypot(ix, iy)
+        axis_peak = float(max(np.abs(ix).max(), np.abs(iy).max())) if len(ix) else 0.0
         levitated = held["states"][i]
         out.append({"name": b.name, "levitated_offset_um": held["offsets"][i] * 1e6,
                     "levitated_current_A": float(np.hypot(levitated[2], levitated[5])),
                     "peak_current_A": float(currents.max()) if len(currents) else 0.0,
+                    "peak_axis_current_A": axis_peak,
+                    "max_current_A": b.max_current if math.isfinite(b.max_current) else None,
                     "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()})
     return out
 

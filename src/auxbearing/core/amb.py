@@ -11,9 +11,19 @@ Springer, 2009: the linearised force law and decentralised PID control):
 * amplifier: i' = w_a (sat(i_c) - i), the command clipped at the current limit.
 
 Below the speed of the controller, a PD law gives the closed-loop stiffness k_i k_p - k_s and damping k_i k_d.
-At the failure time the amplifier loses its power: the states freeze and the force decays as
-g = exp(-(t - t_f) / tau), the coils' discharge (tau = 0: at once). The station's work on the rotor (the
-controller's and the bias's) is booked in its ledger slot as energy taken, so the energy audit closes.
+
+Failures, each axis on its own (a radial bearing has one amplifier per axis):
+
+* power lost at t_f: the axis' states freeze and its force decays as g = exp(-(t - t_f) / tau), the coils'
+  discharge (tau = 0: at once);
+* power back at t_r > t_f (a re-levitation attempt): the controller goes on from its frozen states (it kept
+  its own supply) and the force recovers as g = 1 - (1 - g(t_r)) exp(-(t - t_r) / tau), the coils charging
+  with the same time constant;
+* the sensor failing at t_s: stuck (the reading holds its value, x_m' = 0) or zero (x_s read as 0, the lag
+  decaying to it); the controller goes on acting on the false reading.
+
+The station's work on the rotor (the controller's and the bias's) is booked in its ledger slot as energy
+taken, so the energy audit closes.
 
 Parameters: one row per station of :data:`FIELDS` (SI) in :attr:`Params.values`; states per station
 :data:`STATES`.
@@ -29,8 +39,10 @@ from numba import njit
 
 NAME = "amb"
 FIELDS = ("position", "sensor_position", "current_stiffness", "position_stiffness", "kp", "ki", "kd",
-          "sensor_bandwidth", "amplifier_bandwidth", "max_current", "fail_time", "decay_time")
-(P_POS, P_SENSOR, P_KI_FORCE, P_KS, P_KP, P_KI, P_KD, P_WS, P_WA, P_IMAX, P_FAIL, P_DECAY) = range(len(FIELDS))
+          "sensor_bandwidth", "amplifier_bandwidth", "max_current", "fail_time_x", "fail_time_y", "decay_time",
+          "restore_time", "sensor_fail_time_x", "sensor_fail_time_y", "sensor_stuck")
+(P_POS, P_SENSOR, P_KI_FORCE, P_KS, P_KP, P_KI, P_KD, P_WS, P_WA, P_IMAX, P_FAIL_X, P_FAIL_Y, P_DECAY, P_RESTORE,
+ P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK) = range(len(FIELDS))
 #: Per station: the measured displacement, the integral of it and the coil current, for x then y.
 STATES = ("amb_measured_x", "amb_integral_x", "amb_current_x", "amb_measured_y", "amb_integral_y", "amb_current_y")
 S_MEASURED, S_INTEGRAL, S_CURRENT = range(3)
@@ -54,21 +66,40 @@ def no_stations(n_modes: int = 0) -> Params:
 
 
 @njit(cache=True, inline="always")
-def strength(row, t):
-    """g(t): 1 while powered, the coils' decay after the failure time."""
-    if t < row[P_FAIL]:
-        return 1.0
+def _decay(row, elapsed):
     if row[P_DECAY] <= 0.0:
         return 0.0
-    return math.exp(-(t - row[P_FAIL]) / row[P_DECAY])
+    return math.exp(-elapsed / row[P_DECAY])
 
 
 @njit(cache=True, inline="always")
-def axis(row, t, u, sensed, measured, integral, current):
-    """One axis: (force on the rotor, d measured/dt, d integral/dt, d current/dt)."""
-    force = strength(row, t) * (row[P_KI_FORCE] * current + row[P_KS] * u)
-    if t >= row[P_FAIL]:
+def strength(row, t, fail):
+    """g(t): 1 while powered, the coils' decay after the failure time ``fail``, their recharge after restore."""
+    if t < fail:
+        return 1.0
+    restore = row[P_RESTORE]
+    if t < restore:
+        return _decay(row, t - fail)
+    return 1.0 - (1.0 - _decay(row, restore - fail)) * _decay(row, t - restore)
+
+
+@njit(cache=True, inline="always")
+def powered(row, t, fail):
+    """Whether the axis' amplifier has power at t."""
+    return t < fail or t >= row[P_RESTORE]
+
+
+@njit(cache=True, inline="always")
+def axis(row, t, fail, sensor_fail, u, sensed, measured, integral, current):
+    """One axis: (force on the rotor, d measured/dt, d integral/dt, d current/dt).
+
+    ``fail`` and ``sensor_fail`` are the axis' failure times (row's P_FAIL_X or P_FAIL_Y and the sensor's).
+    """
+    force = strength(row, t, fail) * (row[P_KI_FORCE] * current + row[P_KS] * u)
+    if not powered(row, t, fail):
         return force, 0.0, 0.0, 0.0
+    if t >= sensor_fail:
+        sensed = measured if row[P_STUCK] > 0.0 else 0.0
     rate = row[P_WS] * (sensed - measured)
     command = -(row[P_KP] * measured + row[P_KI] * integral + row[P_KD] * rate)
     limit = row[P_IMAX]

@@ -59,7 +59,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from auxbearing.core import amb, linear_support
+from auxbearing.core import amb, linear_support, load
 from auxbearing.core.ballset import accumulate
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
 
@@ -90,13 +90,14 @@ def ledger_at(n_planes, n_modes, n_station_states=0):
 
 
 #: Where each part of the modes' and stations' data starts in :attr:`Machine.extra` (:attr:`Machine.extra_at`),
-#: after three counts: modes, linear supports, magnetic bearings. One flat array rather than a struct of
+#: after four counts: modes, linear supports, magnetic bearings, loads. One flat array rather than a struct of
 #: arrays: every array a :class:`Machine` holds costs a reference-count update wherever it is passed.
-EXTRA_FIELDS = ("modes", "supports", "bearings", "stiffness", "damping", "gyroscopic", "tilt_gyroscopic", "shape_x",
-                "shape_y", "unbalance_re", "unbalance_im", "support_values", "support_shape_x", "support_shape_y",
-                "bearing_values", "bearing_shape_x", "bearing_shape_y", "bearing_sensor_x", "bearing_sensor_y")
-(E_NM, E_NSUP, E_NAMB, E_STIFF, E_DAMP, E_GYRO, E_TILT, E_SX, E_SY, E_URE, E_UIM, E_SUP, E_SUP_SX, E_SUP_SY, E_AMB,
- E_AMB_SX, E_AMB_SY, E_AMB_SSX, E_AMB_SSY) = range(len(EXTRA_FIELDS))
+EXTRA_FIELDS = ("modes", "supports", "bearings", "loads", "stiffness", "damping", "gyroscopic", "tilt_gyroscopic",
+                "shape_x", "shape_y", "unbalance_re", "unbalance_im", "support_values", "support_shape_x",
+                "support_shape_y", "bearing_values", "bearing_shape_x", "bearing_shape_y", "bearing_sensor_x",
+                "bearing_sensor_y", "load_values", "load_shape_x", "load_shape_y")
+(E_NM, E_NSUP, E_NAMB, E_NLOAD, E_STIFF, E_DAMP, E_GYRO, E_TILT, E_SX, E_SY, E_URE, E_UIM, E_SUP, E_SUP_SX, E_SUP_SY,
+ E_AMB, E_AMB_SX, E_AMB_SY, E_AMB_SSX, E_AMB_SSY, E_LOAD, E_LOAD_SX, E_LOAD_SY) = range(len(EXTRA_FIELDS))
 
 
 @njit(cache=True, inline="always")
@@ -172,7 +173,8 @@ def layout(n_planes: int, n_modes: int = 0, stations: tuple = ()) -> Layout:
 
 def layout_of(m) -> Layout:
     """The state layout of a packed :class:`Machine`."""
-    return layout(len(m.planes.active), m.extra_at[E_NM], (m.extra_at[E_NSUP], m.extra_at[E_NAMB]))
+    return layout(len(m.planes.active), m.extra_at[E_NM], (m.extra_at[E_NSUP], m.extra_at[E_NAMB],
+                                                           m.extra_at[E_NLOAD]))
 
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
 #: integrates the first harmonics of the slip field exactly).
@@ -276,16 +278,17 @@ class Modes(NamedTuple):
 
 def pack_extra(modes: Modes, stations: tuple) -> tuple[np.ndarray, tuple]:
     """(extra, extra_at) of a :class:`Machine`: the modes and each kind's parameters, flat (:data:`EXTRA_FIELDS`)."""
-    supports, bearings = stations
+    supports, bearings, loads = stations
     parts = (modes.stiffness, modes.damping, modes.gyroscopic, modes.tilt_gyroscopic, modes.shape_x, modes.shape_y,
              modes.unbalance_re, modes.unbalance_im, supports.values, supports.shape_x, supports.shape_y,
-             bearings.values, bearings.shape_x, bearings.shape_y, bearings.sensor_shape_x, bearings.sensor_shape_y)
+             bearings.values, bearings.shape_x, bearings.shape_y, bearings.sensor_shape_x, bearings.sensor_shape_y,
+             loads.values, loads.shape_x, loads.shape_y)
     offsets, at = [], 0
     for part in parts:
         offsets.append(at)
         at += np.asarray(part).size
     extra = np.concatenate([np.ascontiguousarray(part, float).ravel() for part in parts]) if at else np.zeros(0)
-    counts = (modes.stiffness.shape[0], supports.values.shape[0], bearings.values.shape[0])
+    counts = (modes.stiffness.shape[0], supports.values.shape[0], bearings.values.shape[0], loads.values.shape[0])
     return extra, tuple(int(v) for v in (*counts, *offsets))
 
 
@@ -333,13 +336,13 @@ class Machine(NamedTuple):
 #: module like :mod:`auxbearing.core.linear_support` (NAME, FIELDS, STATES, LEDGER, Params, force, energy),
 #: registered here and called in :func:`_stations` and :func:`energy`; its machine-file table, description and
 #: packing are one module of :mod:`auxbearing.machine.stations`.
-STATION_KINDS = (linear_support, amb)
+STATION_KINDS = (linear_support, amb, load)
 
 
-#: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5), then
-#: the modal forces (one per mode).
-_Q, _DISP, _FORCE, _QM = 0, 6, 11, 16
-SCRATCH = 16
+#: Working memory of :func:`rhs`: generalised forces (6), ball-set displacement (5) and resultant (5), the
+#: base's d'Alembert field (2, :func:`frame_field`), then the modal forces (one per mode).
+_Q, _DISP, _FORCE, _BASE, _QM = 0, 6, 11, 16, 18
+SCRATCH = 18
 
 
 def new_scratch(n_planes: int, n_modes: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -476,11 +479,63 @@ def _stations(t, y, m, kin, q, out):
         jx, jy, vx, vy = station_point(y, m, row[amb.P_POS], ox, oy)
         sx, sy, _, _ = station_point(y, m, row[amb.P_SENSOR], e[E_AMB_SSX] + i * nm, e[E_AMB_SSY] + i * nm)
         b = states + i * len(amb.STATES)
-        fx, out[b], out[b + 1], out[b + 2] = amb.axis(row, t, jx, sx, y[b], y[b + 1], y[b + 2])
-        fy, out[b + 3], out[b + 4], out[b + 5] = amb.axis(row, t, jy, sy, y[b + 3], y[b + 4], y[b + 5])
+        fx, out[b], out[b + 1], out[b + 2] = amb.axis(row, t, row[amb.P_FAIL_X], row[amb.P_SENSOR_FAIL_X], jx, sx,
+                                                      y[b], y[b + 1], y[b + 2])
+        fy, out[b + 3], out[b + 4], out[b + 5] = amb.axis(row, t, row[amb.P_FAIL_Y], row[amb.P_SENSOR_FAIL_Y], jy, sy,
+                                                          y[b + 3], y[b + 4], y[b + 5])
         _apply_rotor(q, kin, row[amb.P_POS], 0.0, 0.0, fx, fy, 0.0)
         _apply_shapes(m, ox, oy, fx, fy)
         out[at + i] = -(fx * vx + fy * vy)
+    at += e[E_NAMB] * len(amb.LEDGER)
+    width = len(load.FIELDS)
+    bx, by = m.scratch[_BASE], m.scratch[_BASE + 1]
+    for i in range(e[E_NLOAD]):
+        row = m.extra[e[E_LOAD] + i * width:e[E_LOAD] + (i + 1) * width]
+        if row[load.P_KIND] == load.K_BASE:
+            if bx != 0.0 or by != 0.0:
+                out[at + i] = -_field_power(y, m, kin, row, t)
+            continue
+        ox, oy = e[E_LOAD_SX] + i * nm, e[E_LOAD_SY] + i * nm
+        fx, fy = load.force(row, t, y[PHI], y[OMEGA])
+        if fx == 0.0 and fy == 0.0:
+            continue
+        jx, jy, vx, vy = station_point(y, m, row[load.P_POS], ox, oy)
+        _apply_rotor(q, kin, row[load.P_POS], 0.0, 0.0, fx, fy, 0.0)
+        _apply_shapes(m, ox, oy, fx, fy)
+        out[at + i] = -(fx * vx + fy * vy)
+
+
+@njit(cache=True, inline="always")
+def frame_field(t, m):
+    """The base's d'Alembert field at t into the scratch (:mod:`auxbearing.core.load`): it joins gravity."""
+    bx, by = 0.0, 0.0
+    e = m.extra_at
+    width = len(load.FIELDS)
+    for i in range(e[E_NLOAD]):
+        fx, fy = load.base_field(m.extra[e[E_LOAD] + i * width:e[E_LOAD] + (i + 1) * width], t)
+        bx += fx
+        by += fy
+    m.scratch[_BASE], m.scratch[_BASE + 1] = bx, by
+
+
+@njit(cache=True, inline="always")
+def _field_power(y, m, kin, row, t):
+    """Power of one base-acceleration row's field on every body: rotor, races, free outer rings [W]."""
+    fx, fy = load.base_field(row, t)
+    om = y[OMEGA]
+    px = m.rotor.mass * (y[VX] + kin[0] * om)
+    py = m.rotor.mass * (y[VY] + kin[1] * om)
+    p = m.planes
+    for k in range(len(p.active)):
+        if p.active[k] <= 0.0:
+            continue
+        b = N_ROTOR + k * N_PLANE
+        px += p.race_mass[k] * y[b + RVX]
+        py += p.race_mass[k] * y[b + RVY]
+        if p.ring_free[k] > 0.0:
+            px += p.ring_mass[k] * y[b + OVX]
+            py += p.ring_mass[k] * y[b + OVY]
+    return fx * px + fy * py
 
 
 @njit(cache=True, inline="always")
@@ -695,8 +750,8 @@ def plane_forces(k, y, m, kin, q, out, diag):
     out[b + RX] = rvx
     out[b + RY] = rvy
     out[b + RPSI] = rw
-    out[b + RVX] = fx_r / mr + g.gravity_x
-    out[b + RVY] = fy_r / mr + g.gravity_y
+    out[b + RVX] = fx_r / mr + g.gravity_x + m.scratch[_BASE]
+    out[b + RVY] = fy_r / mr + g.gravity_y + m.scratch[_BASE + 1]
     out[b + ROMEGA] = t_r / p.race_inertia[k]
     if p.race_axial_free[k] > 0.0:
         out[b + RZ] = rvz
@@ -722,8 +777,8 @@ def plane_forces(k, y, m, kin, q, out, diag):
         out[heat + 2] += cm * (ovx * ovx + ovy * ovy)
         out[b + OX] = ovx
         out[b + OY] = ovy
-        out[b + OVX] = ring_fx / p.ring_mass[k] + g.gravity_x
-        out[b + OVY] = ring_fy / p.ring_mass[k] + g.gravity_y
+        out[b + OVX] = ring_fx / p.ring_mass[k] + g.gravity_x + m.scratch[_BASE]
+        out[b + OVY] = ring_fy / p.ring_mass[k] + g.gravity_y + m.scratch[_BASE + 1]
 
 
 @njit(cache=True)
@@ -799,11 +854,12 @@ def rhs(t, y, m, out):
     nm = m.extra_at[E_NM]
     for j in range(nm):
         m.scratch[_QM + j] = 0.0
+    frame_field(t, m)
     n_planes = len(m.planes.active)
     for k in range(n_planes):
         if m.planes.active[k] > 0.0:
             plane_forces(k, y, m, kin, q, out, m.last_diag[k])
-    if m.extra_at[E_NSUP] > 0 or m.extra_at[E_NAMB] > 0:
+    if m.extra_at[E_NSUP] > 0 or m.extra_at[E_NAMB] > 0 or m.extra_at[E_NLOAD] > 0:
         _stations(t, y, m, kin, q, out)
     om = y[OMEGA]
     mass = rotor.mass
@@ -821,8 +877,8 @@ def rhs(t, y, m, out):
     out[ledger + L_DRAG_LOSS] = -drag * om
     spin_acc = q[5] / rotor.polar_inertia
     # mass centre, then the geometric centre O = G - e u (module docstring)
-    gx = q[0] / mass + rotor.gravity_x
-    gy = q[1] / mass + rotor.gravity_y
+    gx = q[0] / mass + rotor.gravity_x + m.scratch[_BASE]
+    gy = q[1] / mass + rotor.gravity_y + m.scratch[_BASE + 1]
     be = y[PHI] + rotor.unbalance_phase
     e = rotor.unbalance
     ux, uy = math.cos(be), math.sin(be)

@@ -32,10 +32,10 @@ from auxbearing.machine.params import (
     hollow_cylinder,
     steel_column_stiffness,
 )
+from auxbearing.machine.scenario import read_scenarios
 from auxbearing.machine.stations import TABLES as STATION_TABLES
 from auxbearing.machine.stations import kinds as station_kinds
 from auxbearing.machine.stations import of_kind
-from auxbearing.machine.stations.amb import read_scenarios
 from auxbearing.machine.structure import ModalRotor, RotorStructure, modal_rotor, read_structure
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
@@ -316,7 +316,11 @@ class Machine:
                 modal.node_at(plane.position, f"touchdown.{j}.position")
             for kind in station_kinds():
                 for i, station in enumerate(of_kind(self.stations, kind.KIND)):
-                    modal.node_at(station.position, f"{kind.KIND}.{i}.position")
+                    if getattr(station, "on_rotor", True):
+                        modal.node_at(station.position, f"{kind.KIND}.{i}.position")
+            for i, scenario in enumerate(self.scenarios):
+                if scenario.load is not None and scenario.load.on_rotor:
+                    modal.node_at(scenario.load.position, f"scenario.{i}.position")
             for i, (position, _, _) in enumerate(self.rotor.unbalance_planes):
                 modal.node_at(position, f"unbalance.{i}.position")
 
@@ -349,7 +353,7 @@ class Machine:
 
     def active_scenario(self):
         """The scenario this run takes: the named one, or the magnetic bearings failing at the drop."""
-        from auxbearing.machine.stations.amb import AT_THE_DROP
+        from auxbearing.machine.scenario import AT_THE_DROP
 
         for s in self.scenarios:
             if s.name == self.scenario:
@@ -715,14 +719,15 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     life_table = dict(data.get("life") or {}) if isinstance(data.get("life") or {}, dict) else data.get("life")
     accumulation = life_table.pop("dent_accumulation", "same_spot") if isinstance(life_table, dict) else "same_spot"
     life_values = read_table(life_table, TABLES["life"], "life.")
+    stations = tuple(_shifted(s, centre) for s in ross_supports) + tuple(
+        _shifted(s, centre) for kind in station_kinds() for s in kind.read(data.get(kind.KIND)))
     machine = Machine(name=_text(head, "name", "machine.", name), rotor=rotor, planes=tuple(planes),
                       orientation=_text(head, "orientation", "machine.", "horizontal"),
                       simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
                       coastdown=Coastdown(**coast_values, vacuum=vacuum),
                       life=Life(**life_values, dent_accumulation=accumulation),
-                      stations=tuple(_shifted(s, centre) for s in ross_supports) + tuple(
-                          _shifted(s, centre) for kind in station_kinds() for s in kind.read(data.get(kind.KIND))),
-                      scenarios=read_scenarios(data.get("scenario")))
+                      stations=stations, scenarios=tuple(s.shifted(centre) for s in read_scenarios(
+                          data.get("scenario"), of_kind(stations, "amb"))))
     check_combinations(data, machine)
     return machine
 

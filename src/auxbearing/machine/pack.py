@@ -147,7 +147,7 @@ def _levitate(machine: Machine, modal, layout: cm.Layout, y0: np.ndarray) -> Non
     from auxbearing.machine.stations import amb
 
     bearings = of_kind(machine.stations, amb.KIND)
-    if not bearings or machine.active_scenario().time <= 0.0:
+    if not bearings or not machine.active_scenario().levitated:
         return
     held = amb.levitated_state(machine, modal, bearings)
     q = held["q"]
@@ -164,7 +164,7 @@ def _amb_tolerances(machine: Machine, layout: cm.Layout, atol: np.ndarray, lengt
     """Error scales of the magnetic bearings' states: the clearance for the sensor, the rotor's weight for the coil."""
     from auxbearing.machine.stations import amb
 
-    if machine.active_scenario().time <= 0.0:
+    if not machine.active_scenario().levitated:
         return  # failed at the drop: their frozen states stay out of the step's error norm, as if absent
     at = layout.station_states_at[cm.STATION_KINDS.index(cm.amb)]
     weight = max(machine.rotor.mass * machine.simulation.gravity, 1.0)

@@ -41,7 +41,10 @@ process loads |
 | `[[touchdown]]` | one per touchdown plane (one or more): bearing, clearances, mount, friction, heat |
 | `[[amb]]` | one per magnetic bearing: position, force law, PID gains, sensor and amplifier; it holds the rotor \
 until a `[[scenario]]` fails it (without one, it fails at the drop) |
-| `[[scenario]]` | what fails the magnetic bearings and when: `name`, `kind`, `time`, `decay_time` |
+| `[[scenario]]` | what brings the levitated rotor down, and when: a failure of the magnetic bearings or an \
+overload with them on (`name`, `kind`, `time`, the kind's keys); each is a case of `drop --scenario` and `verify` |
+| `[[load]]` | a load on the rotor in every run: a force, an unbalance appearing, a base acceleration; a step or a \
+half-sine pulse from `start` |
 | `[[linear_support]]` | one per linear station (a seal, a damper, a linearised bearing): `name`, position, \
 stiffness and damping coefficients |
 | `[drop]` | the drop simulation: duration, tolerances, budgets |
@@ -88,16 +91,31 @@ _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file o
                         "| `ross_bearings` | - | `keep` | With `ross_file`: `keep` its bearings and seals as "
                         "`[[linear_support]]` stations (coefficients at `rotor.speed`) or `drop` them | ours |"],
               "scenario": ["| `name` | - | required | The scenario's name (`drop --scenario NAME`) | ours |",
-                           "| `kind` | - | `power_loss` | What fails: `power_loss` (every magnetic bearing loses "
-                           "its amplifiers; the coils discharge with `decay_time`); `axis_loss`, `sensor_failure`, "
-                           "`shock`, `unbalance_step`, `base_acceleration` are not modelled yet and refused | ours |"]}
+                           "| `kind` | - | `power_loss` | `power_loss` (every magnetic bearing loses its amplifiers; "
+                           "the coils discharge with `decay_time`), `axis_loss` (one axis of one bearing), "
+                           "`sensor_failure` (one bearing's sensor sticks or reads zero; the controller acts on it), "
+                           "`shock` (a half-sine force pulse), `step_load` (a force step), `unbalance_step` (an "
+                           "unbalance appears: a blade lost), `base_acceleration` (the housing accelerates; a "
+                           "half-sine pulse by default) | ISO 14839-5's conditions |",
+                           "| `bearing` | - | required for axis_loss, sensor_failure | The `[[amb]]` that fails, by "
+                           "its name | ours |",
+                           "| `axis` | - | required (axis_loss); `both` (sensor_failure) | `x` or `y` (or `both`) | "
+                           "ours |",
+                           "| `mode` | - | `zero` | sensor_failure: `stuck` (holds its reading) or `zero` | ours |",
+                           "| `shape` | - | `half_sine` (shock, base_acceleration), `step` | The load's time "
+                           "profile | ours |"],
+              "load": ["| `name` | - | `load N` | The load's name | ours |",
+                       "| `kind` | - | `force` | `force`, `unbalance` (it appears at `start`) or "
+                       "`base_acceleration` | ours |",
+                       "| `shape` | - | `half_sine` (`step` for an unbalance) | `step` (for `duration`, or to the "
+                       "end) or `half_sine` (a shock pulse of `duration`) | ours |"]}
 
 
 def _sections() -> list[tuple[str, tuple[Param, ...]]]:
     from auxbearing.machine.judging import CRITERIA, VERIFY
     from auxbearing.machine.params import COASTDOWN, LIFE, ROTOR, SIMULATION, TOUCHDOWN, UNBALANCE
+    from auxbearing.machine.scenario import DOC_PARAMS as SCENARIO_PARAMS
     from auxbearing.machine.stations import kinds
-    from auxbearing.machine.stations.amb import SCENARIO_PARAMS
 
     stations = [(kind.KIND, kind.PARAMS) for kind in kinds()]
     return [("rotor", ROTOR), ("unbalance", UNBALANCE), ("touchdown", TOUCHDOWN), *stations,

@@ -34,6 +34,8 @@ from auxbearing.machine.judging import (
 from auxbearing.machine.model import Machine, machine_from_mapping
 
 #: A drop at low speed runs at this fraction of the maximum (ours: the bottom of a typical operating range).
+#: A scenario's case is named this prefix and the scenario's name.
+SCENARIO_CASE = "scenario: "
 LOW_SPEED_FRACTION = 0.25
 #: ``--quick``: the drops last at most this long [s], the coast-down is run for this long [s] and the
 #: campaign has this many samples.
@@ -113,8 +115,10 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
             data, name, base, rotor={"axial_force": f"{float(-machine.rotor.axial_force)!r} N"}, drop=drop)
     after = min(machine.simulation.duration, QUICK_DROP) if quick else machine.simulation.duration
     for scenario in machine.scenarios:  # levitated until the scenario strikes, then the drop's own duration
-        cases.machines[f"scenario: {scenario.name}"] = variant(
-            data, name, base, drop={"duration": f"{float(scenario.time + after)!r} s"}).with_scenario(scenario.name)
+        # a re-levitation asked for is watched to its limit and a settled stretch after it
+        span = max(after, 1.5 * scenario.relevitate_within) if scenario.relevitate_within else after
+        cases.machines[SCENARIO_CASE + scenario.name] = variant(
+            data, name, base, drop={"duration": f"{float(scenario.time + span)!r} s"}).with_scenario(scenario.name)
     cases.spreads = campaign_spreads(cases.machine, settings)
     cases.quick = quick
     return cases

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import math
 
+from auxbearing.analysis.scenario_outcome import SATURATED
 from auxbearing.analysis.whirl import BACKWARD
-from auxbearing.verify.cases import Cases
+from auxbearing.verify.cases import SCENARIO_CASE, Cases
 from auxbearing.verify.criteria import (
     Criterion,
     lower_bound,
@@ -119,6 +120,7 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     else:
         out.append(not_checked("journal excursion against the seal clearance", "give criteria.seal_clearance to "
                                "check it", "user input"))
+    out += _scenario_criteria(cases)
     if cases.partial_coastdown:
         out = [_unsettled(c, cases.partial_coastdown) if c.name in PARTIAL_COASTDOWN_CRITERIA else c for c in out]
     if cases.campaign is not None:
@@ -137,6 +139,34 @@ PARTIAL_COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing 
 
 #: Name of the campaign's criterion: judged by the upper end of its 95 % interval, not by the estimate.
 WHIRL_PROBABILITY = "probability of backward whirl over the drop conditions, 95 % bound"
+
+
+def _scenario_criteria(cases: Cases) -> list[Criterion]:
+    """The magnetic bearings' criteria over the scenario cases: current against its limit, re-levitation asked."""
+    runs = {c: r.summary for c, r in cases.drops.items() if c.startswith(SCENARIO_CASE) and r.summary.get("amb")}
+    if not runs:
+        return []
+    out = []
+    shares = [(a["peak_axis_current_A"] / a["max_current_A"], a["peak_axis_current_A"], a["max_current_A"], c,
+               a["name"]) for c, s in runs.items() for a in s["amb"] if a["max_current_A"]]
+    name = "peak magnetic-bearing current against its amplifier's limit"
+    if shares:
+        share, peak, limit, case, bearing = max(shares)
+        saturated = share >= SATURATED
+        out.append(Criterion(name, f"below {limit:g} A", peak, 1.0 - share, not saturated, "A", "upper",
+                             "amb.max_current of the machine file (a saturated controller has lost authority)",
+                             f"{case}, {bearing}: {share * 100:.1f} % of its limit"
+                             + (" (saturated)" if saturated else "")))
+    else:
+        out.append(not_checked(name, "give amb.max_current to check it", "amb.max_current"))
+    for case, s in runs.items():
+        asked, found = s["scenario"].get("relevitate_within_ms"), s["scenario"]
+        if asked is None:
+            continue
+        took = found["relevitated_at_ms"] - found["time_ms"] if found.get("relevitated_at_ms") is not None else None
+        out.append(upper_bound(f"re-levitation after {case.removeprefix(SCENARIO_CASE)}", took, asked, "ms",
+                               "the scenario's relevitate_within", f"{case}: {found.get('outcome', 'not levitated')}"))
+    return out
 
 
 def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:

@@ -1,4 +1,4 @@
-"""``[[amb]]``: an active magnetic bearing station, and the ``[[scenario]]`` tables that fail it.
+"""``[[amb]]``: an active magnetic bearing station (the ``[[scenario]]`` tables: :mod:`auxbearing.machine.scenario`).
 
 Its kernel is :mod:`auxbearing.core.amb` (force law, sensor, PID controller, amplifier). A drop starts at the
 levitated static state the model computes itself (:func:`levitated_state`) and the magnetic bearings work
@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import Param, by_key, read_table
+from auxbearing.common.params import Param, by_key
 from auxbearing.core import amb as kernel
 
 KIND = kernel.NAME
@@ -40,16 +40,6 @@ PARAMS: tuple[Param, ...] = (
           "ours: none unless given"),
 )
 TABLE = by_key(PARAMS, KIND)
-SCENARIO_KINDS = ("power_loss",)
-#: Kinds the issue names that this model does not make yet, refused by name.
-SCENARIO_KINDS_LATER = ("axis_loss", "sensor_failure", "shock", "unbalance_step", "base_acceleration")
-SCENARIO_PARAMS: tuple[Param, ...] = (
-    Param("scenario", "time", "time", 0.0, "ms", "nonnegative", "When the scenario strikes; levitated until then",
-          "ours"),
-    Param("scenario", "decay_time", "time", 0.0, "ms", "nonnegative",
-          "power_loss: time constant of the coils' discharge (0: the forces vanish at once)", "ours"),
-)
-SCENARIO_TABLE = by_key(SCENARIO_PARAMS, "scenario")
 
 
 @dataclass(frozen=True)
@@ -79,20 +69,6 @@ class MagneticBearing:
         return self.current_stiffness * self.kp - self.position_stiffness
 
 
-@dataclass(frozen=True)
-class Scenario:
-    """What happens to the magnetic bearings (SI)."""
-
-    name: str
-    kind: str = "power_loss"
-    time: float = 0.0
-    decay_time: float = 0.0
-
-
-#: The drop of a machine with magnetic bearings but no scenario named: they fail at the drop, at once.
-AT_THE_DROP = Scenario("power loss at the drop")
-
-
 def read(tables) -> tuple[MagneticBearing, ...]:
     """The ``[[amb]]`` tables of a machine file (values with units)."""
     from auxbearing.machine.stations import read_tables
@@ -109,35 +85,17 @@ def read(tables) -> tuple[MagneticBearing, ...]:
     return tuple(out)
 
 
-def read_scenarios(tables) -> tuple[Scenario, ...]:
-    """The ``[[scenario]]`` tables: each a case of the drop and of the verification."""
-    if tables is None:
-        return ()
-    if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
-        raise InputError.for_field("scenario", tables, "give one [[scenario]] table per scenario")
-    out = []
-    for i, table in enumerate(tables):
-        where = f"scenario.{i}."
-        table = dict(table)
-        name, kind = table.pop("name", None), table.pop("kind", "power_loss")
-        if not isinstance(name, str) or not name:
-            raise InputError.for_field(where + "name", name, "every [[scenario]] needs a name")
-        if kind in SCENARIO_KINDS_LATER:
-            raise InputError.for_field(where + "kind", kind, f"not modelled yet; modelled: {', '.join(SCENARIO_KINDS)}")
-        if kind not in SCENARIO_KINDS:
-            raise InputError.for_field(where + "kind", kind, f"must be one of {', '.join(SCENARIO_KINDS)}")
-        out.append(Scenario(name, kind, **read_table(table, SCENARIO_TABLE, where)))
-        if any(s.name == name for s in out[:-1]):
-            raise InputError.for_field(where + "name", name, "two scenarios of one name")
-    return tuple(out)
-
-
 def pack(bearings, modal, n_modes: int, machine=None) -> kernel.Params:
-    """The kernel's parameters: shapes at the actuators and sensors, the failure from the active scenario."""
+    """The kernel's parameters: shapes at the actuators and sensors, the failures from the active scenario."""
+    from auxbearing.machine.scenario import AT_THE_DROP
+
     scenario = machine.active_scenario() if machine is not None else AT_THE_DROP
-    rows = [(b.position, b.sensor, b.current_stiffness, b.position_stiffness, b.kp, b.ki, b.kd,
-             2 * math.pi * b.sensor_bandwidth, 2 * math.pi * b.amplifier_bandwidth, b.max_current, scenario.time,
-             scenario.decay_time) for b in bearings]
+    rows = []
+    for b in bearings:
+        fail_x, fail_y, restore, sensor_x, sensor_y, stuck = scenario.failure_times(b.name)
+        rows.append((b.position, b.sensor, b.current_stiffness, b.position_stiffness, b.kp, b.ki, b.kd,
+                     2 * math.pi * b.sensor_bandwidth, 2 * math.pi * b.amplifier_bandwidth, b.max_current, fail_x,
+                     fail_y, scenario.decay_time, restore, sensor_x, sensor_y, stuck))
     values = np.array(rows, float).reshape(len(bearings), len(kernel.FIELDS))
     shapes = [np.zeros((len(bearings), n_modes)) for _ in range(4)]
     if n_modes:
