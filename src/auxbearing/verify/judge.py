@@ -153,8 +153,9 @@ def _scenario_criteria(cases: Cases) -> list[Criterion]:
     if shares:
         share, peak, limit, case, bearing = max(shares)
         saturated = share >= SATURATED
-        out.append(Criterion(name, f"below {limit:g} A", peak, 1.0 - share, not saturated, "A", "upper",
-                             "amb.max_current of the machine file (a saturated controller has lost authority)",
+        out.append(Criterion(name, limit, peak, 1.0 - share, not saturated, "A", "upper",
+                             "amb.max_current of the machine file (a controller at its limit has lost authority: "
+                             "reaching it fails)",
                              f"{case}, {bearing}: {share * 100:.1f} % of its limit"
                              + (" (saturated)" if saturated else "")))
     else:

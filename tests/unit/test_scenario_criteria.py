@@ -1,0 +1,47 @@
+"""The scenarios' criteria in a verification: the magnetic bearings' current against its limit, re-levitation."""
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from auxbearing.analysis.scenario_outcome import saturation
+from auxbearing.verify.judge import _scenario_criteria
+
+
+def _cases(peak: float, scenario: dict) -> SimpleNamespace:
+    amb = [{"name": "de", "peak_axis_current_A": peak, "max_current_A": 5.0},
+           {"name": "nde", "peak_axis_current_A": 1.0, "max_current_A": 5.0}]
+    summary = {"amb": amb, "scenario": {"time_ms": 30.0, **scenario}}
+    plain = {"amb": amb, "scenario": {"time_ms": 0.0}}  # a drop from the centre is not a scenario case
+    return SimpleNamespace(drops={"drop at the maximum speed": SimpleNamespace(summary=plain),
+                                  "scenario: dip": SimpleNamespace(summary=summary)})
+
+
+def test_the_current_criterion_takes_the_bearing_closest_to_its_limit():
+    (current,) = _scenario_criteria(_cases(2.0, {}))
+    assert current.found == 2.0 and current.margin == pytest.approx(0.6) and current.passed
+    assert "scenario: dip, de: 40.0 % of its limit" in current.evidence
+
+
+def test_a_saturated_bearing_fails_the_current_criterion():
+    (current,) = _scenario_criteria(_cases(5.0, {}))
+    assert current.passed is False and "(saturated)" in current.evidence
+
+
+def test_re_levitation_is_judged_where_the_scenario_asks_for_it():
+    lifted = {"relevitate_within_ms": 100.0, "relevitated_at_ms": 80.0, "outcome": "re-levitated"}
+    _, within = _scenario_criteria(_cases(2.0, lifted))
+    assert within.name == "re-levitation after dip" and within.found == pytest.approx(50.0) and within.passed
+    held = {"relevitate_within_ms": 100.0, "relevitated_at_ms": None, "outcome": "sustained forward whirl"}
+    _, never = _scenario_criteria(_cases(2.0, held))
+    assert never.passed is False and never.found is None and "sustained forward whirl" in never.evidence
+
+
+def test_saturation_intervals_on_the_grid():
+    t = np.arange(10) * 1e-3
+    current = np.array([0, 1, 5, 5, 2, 0, -5, -5, -5, 1.0])
+    total, spans = saturation(t, current, 5.0)
+    assert np.allclose(spans, [(0.002, 0.004), (0.006, 0.009)])
+    assert total == pytest.approx(0.005)
+    assert saturation(t, current, float("inf")) == (0.0, [])
