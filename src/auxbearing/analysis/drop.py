@@ -533,7 +533,7 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
                     "levitated_current_A": float(np.hypot(levitated[2], levitated[5])),
                     "peak_current_A": float(currents.max()) if len(currents) else 0.0,
                     "peak_axis_current_A": axis_peak,
-                    "max_current_A": b.max_current if math.isfinite(b.max_current) else None,
+                    "max_current_A": b.current_limit() if math.isfinite(b.current_limit()) else None,
                     "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()})
     return out
 

@@ -70,8 +70,8 @@ def outcome(machine, ds, planes: list[dict]) -> dict:
     for i, b in enumerate(bearings):
         if "amb_current_x" not in ds:
             break
-        time_x, spans_x = saturation(t, ds.amb_current_x.values[:, i], b.max_current)
-        time_y, spans_y = saturation(t, ds.amb_current_y.values[:, i], b.max_current)
+        time_x, spans_x = saturation(t, ds.amb_current_x.values[:, i], b.current_limit())
+        time_y, spans_y = saturation(t, ds.amb_current_y.values[:, i], b.current_limit())
         spans = sorted(spans_x + spans_y)
         saturated.append({"name": b.name, "saturated_ms": (time_x + time_y) * 1e3,
                           "saturated_at_end": bool(spans and spans[-1][1] >= end),

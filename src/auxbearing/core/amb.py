@@ -4,7 +4,10 @@ Per axis (x and y alike), linearised about the bias (G. Schweitzer and E. H. Mas
 Springer, 2009: the linearised force law and decentralised PID control):
 
 * force on the rotor at the actuator, F = g(t) (k_i i + k_s u), u the rotor's displacement there, k_s > 0 the
-  negative (destabilising) stiffness of the bias flux;
+  negative (destabilising) stiffness of the bias flux; or, given the magnetic circuit, the force of the pair of
+  opposed magnets in differential driving, F = g(t) k [(i_0 + i)^2 / (g_0 - u)^2 - (i_0 - i)^2 / (g_0 + u)^2]
+  with k = mu_0 N^2 A cos(alpha) / 4 (Schweitzer & Maslen 2009, Ch. 2; the form ROSS's MagneticBearingElement
+  linearises), whose slopes at the bias are k_i = 4 k i_0 / g_0^2 and k_s = 4 k i_0^2 / g_0^3;
 * sensor: the displacement at the sensor through a first-order lag of bandwidth w_s, x_m' = w_s (x_s - x_m);
 * controller: i_c = -(k_p x_m + k_int X + k_d x_m'), X' = x_m (a PID whose derivative is the sensor's filtered
   rate);
@@ -40,9 +43,13 @@ from numba import njit
 NAME = "amb"
 FIELDS = ("position", "sensor_position", "current_stiffness", "position_stiffness", "kp", "ki", "kd",
           "sensor_bandwidth", "amplifier_bandwidth", "max_current", "fail_time_x", "fail_time_y", "decay_time",
-          "restore_time", "sensor_fail_time_x", "sensor_fail_time_y", "sensor_stuck")
+          "restore_time", "sensor_fail_time_x", "sensor_fail_time_y", "sensor_stuck", "circuit_constant",
+          "bias_current", "air_gap")
 (P_POS, P_SENSOR, P_KI_FORCE, P_KS, P_KP, P_KI, P_KD, P_WS, P_WA, P_IMAX, P_FAIL_X, P_FAIL_Y, P_DECAY, P_RESTORE,
- P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK) = range(len(FIELDS))
+ P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK, P_CIRCUIT, P_BIAS, P_GAP) = range(len(FIELDS))
+#: Smallest gap the circuit law divides by, as a share of the nominal gap (the touchdown clearance keeps the rotor
+#: far from the poles; this only keeps a run that leaves its range finite).
+MIN_GAP = 1e-3
 #: Per station: the measured displacement, the integral of it and the coil current, for x then y.
 STATES = ("amb_measured_x", "amb_integral_x", "amb_current_x", "amb_measured_y", "amb_integral_y", "amb_current_y")
 S_MEASURED, S_INTEGRAL, S_CURRENT = range(3)
@@ -90,12 +97,24 @@ def powered(row, t, fail):
 
 
 @njit(cache=True, inline="always")
+def magnet_force(row, current, u):
+    """The magnets' force on the rotor along one axis at full strength [N]: linearised, or the circuit's."""
+    k = row[P_CIRCUIT]
+    if k <= 0.0:
+        return row[P_KI_FORCE] * current + row[P_KS] * u
+    i0, g0 = row[P_BIAS], row[P_GAP]
+    near = max(g0 - u, MIN_GAP * g0)
+    far = max(g0 + u, MIN_GAP * g0)
+    return k * ((i0 + current) ** 2 / (near * near) - (i0 - current) ** 2 / (far * far))
+
+
+@njit(cache=True, inline="always")
 def axis(row, t, fail, sensor_fail, u, sensed, measured, integral, current):
     """One axis: (force on the rotor, d measured/dt, d integral/dt, d current/dt).
 
     ``fail`` and ``sensor_fail`` are the axis' failure times (row's P_FAIL_X or P_FAIL_Y and the sensor's).
     """
-    force = strength(row, t, fail) * (row[P_KI_FORCE] * current + row[P_KS] * u)
+    force = strength(row, t, fail) * magnet_force(row, current, u)
     if not powered(row, t, fail):
         return force, 0.0, 0.0, 0.0
     if t >= sensor_fail:

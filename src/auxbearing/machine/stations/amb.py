@@ -17,15 +17,29 @@ from auxbearing.common.params import Param, by_key
 from auxbearing.core import amb as kernel
 
 KIND = kernel.NAME
+#: Permeability of free space [H/m].
+MU0 = 4e-7 * math.pi
+CIRCUIT = ("turns", "pole_area", "air_gap", "bias_current")
 PARAMS: tuple[Param, ...] = (
     Param(KIND, "position", "length", None, "mm", "finite", "Axial position of the actuator from the mass centre; "
           "with rotor.matrices, the coordinate of one of the matrices' nodes", "required"),
     Param(KIND, "sensor_position", "length", None, "mm", "finite",
           "Axial position of the displacement sensor; default the actuator's (collocated)", "ours"),
     Param(KIND, "current_stiffness", "current_stiffness", None, "N/A", "positive",
-          "Force per control current k_i at the bias", "the bearing's data"),
+          "Force per control current k_i at the bias (or give the magnetic circuit)", "the bearing's data"),
     Param(KIND, "position_stiffness", "stiffness", 0.0, "N/m", "nonnegative",
           "Negative stiffness k_s of the bias flux (F = k_i i + k_s x, k_s > 0 destabilising)", "the bearing's data"),
+    Param(KIND, "turns", "dimensionless", None, "", "count", "Magnetic circuit: turns of each coil (with pole_area, "
+          "air_gap and bias_current instead of current_stiffness and position_stiffness: the nonlinear force "
+          "law)", "the bearing's data"),
+    Param(KIND, "pole_area", "area", None, "mm^2", "positive", "Magnetic circuit: area of one pole face",
+          "the bearing's data"),
+    Param(KIND, "air_gap", "length", None, "mm", "positive", "Magnetic circuit: nominal air gap at each pole",
+          "the bearing's data"),
+    Param(KIND, "bias_current", "current", None, "A", "positive", "Magnetic circuit: bias current i_0 of each coil "
+          "(the control current cannot exceed it: a coil's current stays positive)", "the bearing's data"),
+    Param(KIND, "pole_angle", "angle", math.pi / 8, "deg", "finite", "Magnetic circuit: angle of each pole to its "
+          "axis (the force is cos(alpha) of the poles' pull)", "ours: 22.5 deg, an eight-pole stator"),
     Param(KIND, "kp", "current_per_length", None, "A/m", "positive", "Proportional gain (i = -(kp x + ki int x + "
           "kd dx/dt))", "the controller's data"),
     Param(KIND, "ki", "current_per_length_time", 0.0, "A/(m*s)", "nonnegative", "Integral gain",
@@ -57,7 +71,51 @@ class MagneticBearing:
     sensor_bandwidth: float = 5000.0
     amplifier_bandwidth: float = 1000.0
     max_current: float = math.inf
+    turns: float | None = None  #: the magnetic circuit (all four given, or none: the linearised law)
+    pole_area: float | None = None
+    air_gap: float | None = None
+    bias_current: float | None = None
+    pole_angle: float = math.pi / 8
     KIND = KIND
+
+    @property
+    def circuit(self) -> bool:
+        """Whether the force law is the magnetic circuit's (nonlinear) rather than the linearised one."""
+        return self.turns is not None
+
+    def circuit_constant(self) -> float:
+        """The circuit law's constant mu_0 N^2 A cos(alpha) / 4 [N m^2 / A^2]; 0 without a circuit."""
+        if not self.circuit:
+            return 0.0
+        return MU0 * self.turns ** 2 * self.pole_area * math.cos(self.pole_angle) / 4.0
+
+    def current_limit(self) -> float:
+        """The largest control current: the amplifier's, and with the circuit no more than the bias [A]."""
+        return min(self.max_current, self.bias_current) if self.circuit else self.max_current
+
+    def force(self, current: float, displacement: float) -> float:
+        """The magnets' force along one axis at full strength [N] (:func:`auxbearing.core.amb.magnet_force`)."""
+        from auxbearing.core.amb import magnet_force
+
+        return float(magnet_force(np.array(self._row()), current, displacement))
+
+    def _row(self, failures=(math.inf,) * 5 + (0.0,), decay: float = 0.0) -> tuple[float, ...]:
+        """The kernel's row (:data:`auxbearing.core.amb.FIELDS`) with a scenario's failure times."""
+        fail_x, fail_y, restore, sensor_x, sensor_y, stuck = failures
+        return (self.position, self.sensor, self.current_stiffness, self.position_stiffness, self.kp, self.ki,
+                self.kd, 2 * math.pi * self.sensor_bandwidth, 2 * math.pi * self.amplifier_bandwidth,
+                self.current_limit(), fail_x, fail_y, decay, restore, sensor_x, sensor_y, stuck,
+                self.circuit_constant(), self.bias_current or 0.0, self.air_gap or 0.0)
+
+    def dynamic_stiffness(self, s: complex) -> complex:
+        """Force per displacement of the bearing in the loop at the Laplace variable s [N/m] (linearised).
+
+        k_i G_a(s) G_s(s) (k_p + k_int / s + k_d s) - k_s with the first-order sensor and amplifier lags
+        G = w / (s + w); at s = i w its real part is the bearing's stiffness, its imaginary part / w its damping.
+        """
+        ws, wa = 2 * math.pi * self.sensor_bandwidth, 2 * math.pi * self.amplifier_bandwidth
+        pid = self.kp + self.ki / s + self.kd * s
+        return self.current_stiffness * wa / (s + wa) * ws / (s + ws) * pid - self.position_stiffness
 
     @property
     def sensor(self) -> float:
@@ -74,8 +132,26 @@ def read(tables) -> tuple[MagneticBearing, ...]:
     from auxbearing.machine.stations import read_tables
 
     out = []
-    for where, name, values, table in read_tables(tables, KIND, TABLE, ("position", "current_stiffness", "kp"),
-                                                  "AMB"):
+    for where, name, values, table in read_tables(tables, KIND, TABLE, ("position", "kp"), "AMB"):
+        given = [key for key in CIRCUIT if key in values]
+        if given:
+            missing = [key for key in CIRCUIT if key not in values]
+            if missing:
+                raise InputError(f"{where}{missing[0]}: missing; the magnetic circuit needs "
+                                 f"{', '.join(CIRCUIT)}")
+            for key in ("current_stiffness", "position_stiffness"):
+                if key in values:
+                    raise InputError.for_field(where + key, table.get(key), "give either the force law's slopes "
+                                               "or the magnetic circuit (turns, ...), not both")
+            k = MU0 * values["turns"] ** 2 * values["pole_area"] * math.cos(values.get("pole_angle", math.pi / 8)) / 4
+            i0, g0 = values["bias_current"], values["air_gap"]
+            values.update(current_stiffness=4 * k * i0 / g0 ** 2, position_stiffness=4 * k * i0 ** 2 / g0 ** 3)
+        elif "current_stiffness" not in values:
+            raise InputError(f"{where}current_stiffness: missing; give it (and position_stiffness) or the magnetic "
+                             f"circuit ({', '.join(CIRCUIT)})")
+        elif "pole_angle" in values:
+            raise InputError.for_field(where + "pole_angle", table.get("pole_angle"), "belongs to the magnetic "
+                                       f"circuit ({', '.join(CIRCUIT)})")
         bearing = MagneticBearing(name=name, **values)
         if bearing.closed_loop_stiffness() <= 0.0:
             raise InputError.for_field(where + "kp", table.get("kp"), "too small to hold the rotor: kp "
@@ -90,12 +166,7 @@ def pack(bearings, modal, n_modes: int, machine=None) -> kernel.Params:
     from auxbearing.machine.scenario import AT_THE_DROP
 
     scenario = machine.active_scenario() if machine is not None else AT_THE_DROP
-    rows = []
-    for b in bearings:
-        fail_x, fail_y, restore, sensor_x, sensor_y, stuck = scenario.failure_times(b.name)
-        rows.append((b.position, b.sensor, b.current_stiffness, b.position_stiffness, b.kp, b.ki, b.kd,
-                     2 * math.pi * b.sensor_bandwidth, 2 * math.pi * b.amplifier_bandwidth, b.max_current, fail_x,
-                     fail_y, scenario.decay_time, restore, sensor_x, sensor_y, stuck))
+    rows = [b._row(scenario.failure_times(b.name), scenario.decay_time) for b in bearings]
     values = np.array(rows, float).reshape(len(bearings), len(kernel.FIELDS))
     shapes = [np.zeros((len(bearings), n_modes)) for _ in range(4)]
     if n_modes:
@@ -122,7 +193,11 @@ def describe(b: MagneticBearing) -> dict:
             "current_stiffness_N_per_A": b.current_stiffness, "position_stiffness_N_per_m": b.position_stiffness,
             "kp_A_per_m": b.kp, "ki_A_per_m_s": b.ki, "kd_A_s_per_m": b.kd, "sensor_bandwidth_Hz": b.sensor_bandwidth,
             "amplifier_bandwidth_Hz": b.amplifier_bandwidth, "max_current_A": b.max_current,
-            "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()}
+            "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness(),
+            **({"turns": b.turns, "pole_area_mm2": b.pole_area * 1e6, "air_gap_mm": b.air_gap * 1e3,
+                "bias_current_A": b.bias_current, "pole_angle_deg": math.degrees(b.pole_angle),
+                "force_law": "magnetic circuit (nonlinear)", "current_limit_A": b.current_limit()}
+               if b.circuit else {"force_law": "linearised"})}
 
 
 def levitated_state(machine, modal, bearings) -> dict:
