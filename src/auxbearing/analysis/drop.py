@@ -332,8 +332,7 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
             return axis_at(model, grid, position, params.shape_x[i], params.shape_y[i])
 
         def states(i, k=k):
-            width = len(cm.STATION_KINDS[k].STATES)
-            at = layout.station_states_at[k] + i * width
+            at, width = layout.station_spans[k][i]
             return grid[:, at:at + width]
         data.update(kind.series(of_kind(machine.stations, kind.KIND), axis, states))
     # per-ball states where they fit the memory cap; their largest stress is the plane's, so the
@@ -520,17 +519,17 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
     """
     from auxbearing.machine.stations.amb import levitated_state
 
-    at = model.layout.station_states_at[cm.STATION_KINDS.index(cm.amb)]
+    spans = model.layout.station_spans[cm.STATION_KINDS.index(cm.amb)]
     held = levitated_state(machine, machine.rotor.modal(), bearings)
     out = []
     for i, b in enumerate(bearings):
-        block = at + i * len(cm.amb.STATES)
-        ix, iy = grid[:, block + cm.amb.S_CURRENT], grid[:, block + 3 + cm.amb.S_CURRENT]
+        block = spans[i][0]
+        ix, iy = grid[:, block + 1 + b.order], grid[:, block + 3 + 2 * b.order]
         currents = np.hypot(ix, iy)
         axis_peak = float(max(np.abs(ix).max(), np.abs(iy).max())) if len(ix) else 0.0
         levitated = held["states"][i]
         out.append({"name": b.name, "levitated_offset_um": held["offsets"][i] * 1e6,
-                    "levitated_current_A": float(np.hypot(levitated[2], levitated[5])),
+                    "levitated_current_A": float(np.hypot(levitated[1 + b.order], levitated[3 + 2 * b.order])),
                     "peak_current_A": float(currents.max()) if len(currents) else 0.0,
                     "peak_axis_current_A": axis_peak,
                     "max_current_A": b.current_limit() if math.isfinite(b.current_limit()) else None,

@@ -136,8 +136,9 @@ def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, 
             elif kind.KIND == "amb" and state == "free":
                 sx, sy = station_rows(machine, s.sensor, f"{kind.KIND}.{i}.sensor_position")
                 sensor = np.vstack([sx, sy])
-                stiff += s.current_stiffness * s.kp * b.T @ sensor - s.position_stiffness * b.T @ b
-                damp += s.current_stiffness * s.kd * b.T @ sensor
+                spring, damper = s.spring_and_damper(machine.rotor.speed)
+                stiff += (spring + s.position_stiffness) * b.T @ sensor - s.position_stiffness * b.T @ b
+                damp += damper * b.T @ sensor
     springs = []
     for k, plane in enumerate(machine.planes):
         spring = contact_stiffness(machine, k) if state == "contact" else 0.0

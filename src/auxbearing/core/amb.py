@@ -10,7 +10,9 @@ Springer, 2009: the linearised force law and decentralised PID control):
   linearises), whose slopes at the bias are k_i = 4 k i_0 / g_0^2 and k_s = 4 k i_0^2 / g_0^3;
 * sensor: the displacement at the sensor through a first-order lag of bandwidth w_s, x_m' = w_s (x_s - x_m);
 * controller: i_c = -(k_p x_m + k_int X + k_d x_m'), X' = x_m (a PID whose derivative is the sensor's filtered
-  rate);
+  rate); or any proper linear controller given as a state space, z' = A z + B x_m, i_c = -(C z + D x_m) (a
+  transfer function C(s) from the reading to the current, i_c = -C(s) x_m, realised by python-control at the
+  boundary);
 * amplifier: i' = w_a (sat(i_c) - i), the command clipped at the current limit.
 
 Below the speed of the controller, a PD law gives the closed-loop stiffness k_i k_p - k_s and damping k_i k_d.
@@ -28,8 +30,9 @@ Failures, each axis on its own (a radial bearing has one amplifier per axis):
 The station's work on the rotor (the controller's and the bias's) is booked in its ledger slot as energy
 taken, so the energy audit closes.
 
-Parameters: one row per station of :data:`FIELDS` (SI) in :attr:`Params.values`; states per station
-:data:`STATES`.
+Parameters: one row per station of :data:`FIELDS` (SI) in :attr:`Params.values`. States per station and axis
+(:func:`width`): the reading, the controller's ``order`` states (the PID's one: its integral) and the coil current,
+x then y.
 """
 
 from __future__ import annotations
@@ -44,16 +47,30 @@ NAME = "amb"
 FIELDS = ("position", "sensor_position", "current_stiffness", "position_stiffness", "kp", "ki", "kd",
           "sensor_bandwidth", "amplifier_bandwidth", "max_current", "fail_time_x", "fail_time_y", "decay_time",
           "restore_time", "sensor_fail_time_x", "sensor_fail_time_y", "sensor_stuck", "circuit_constant",
-          "bias_current", "air_gap")
+          "bias_current", "air_gap", "order", "states_at", "controller_at")
 (P_POS, P_SENSOR, P_KI_FORCE, P_KS, P_KP, P_KI, P_KD, P_WS, P_WA, P_IMAX, P_FAIL_X, P_FAIL_Y, P_DECAY, P_RESTORE,
- P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK, P_CIRCUIT, P_BIAS, P_GAP) = range(len(FIELDS))
+ P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK, P_CIRCUIT, P_BIAS, P_GAP, P_ORDER, P_STATES_AT,
+ P_CONTROLLER_AT) = range(len(FIELDS))
 #: Smallest gap the circuit law divides by, as a share of the nominal gap (the touchdown clearance keeps the rotor
 #: far from the poles; this only keeps a run that leaves its range finite).
 MIN_GAP = 1e-3
-#: Per station: the measured displacement, the integral of it and the coil current, for x then y.
+#: Per station with a PID (order 1): the reading, its integral and the coil current, for x then y.
 STATES = ("amb_measured_x", "amb_integral_x", "amb_current_x", "amb_measured_y", "amb_integral_y", "amb_current_y")
 S_MEASURED, S_INTEGRAL, S_CURRENT = range(3)
 LEDGER = ("amb_work_taken",)
+
+
+def width(order: int) -> int:
+    """States of one station whose controller has ``order`` states per axis."""
+    return 2 * (2 + order)
+
+
+def state_names(order: int, pid: bool) -> tuple[str, ...]:
+    """The state names of one station (:data:`STATES` for a PID)."""
+    if pid:
+        return STATES
+    return tuple(name for axis in "xy" for name in (f"amb_measured_{axis}",
+                 *(f"amb_controller_{axis}{j}" for j in range(order)), f"amb_current_{axis}"))
 
 
 class Params(NamedTuple):
@@ -64,12 +81,20 @@ class Params(NamedTuple):
     shape_y: np.ndarray
     sensor_shape_x: np.ndarray  #: (stations, modes) and at the sensor
     sensor_shape_y: np.ndarray
+    #: every state-space controller's A (order x order), B, C (order each) and D, flat; a row's controller_at
+    #: points into it (-1: the PID)
+    controllers: np.ndarray = np.zeros(0)
+
+    @property
+    def state_count(self) -> int:
+        """States of all the stations."""
+        return int(sum(width(int(order)) for order in self.values[:, P_ORDER]))
 
 
 def no_stations(n_modes: int = 0) -> Params:
     """A machine without magnetic bearings."""
     z = np.zeros((0, n_modes))
-    return Params(np.zeros((0, len(FIELDS))), z, z.copy(), z.copy(), z.copy())
+    return Params(np.zeros((0, len(FIELDS))), z, z.copy(), z.copy(), z.copy(), np.zeros(0))
 
 
 @njit(cache=True, inline="always")
@@ -109,18 +134,36 @@ def magnet_force(row, current, u):
 
 
 @njit(cache=True, inline="always")
-def axis(row, t, fail, sensor_fail, u, sensed, measured, integral, current):
-    """One axis: (force on the rotor, d measured/dt, d integral/dt, d current/dt).
+def axis(row, t, fail, sensor_fail, u, sensed, y, out, at, controllers):
+    """One axis whose states start at ``y[at]``: writes their rates into ``out``, returns the force on the rotor.
 
-    ``fail`` and ``sensor_fail`` are the axis' failure times (row's P_FAIL_X or P_FAIL_Y and the sensor's).
+    ``fail`` and ``sensor_fail`` are the axis' failure times (row's P_FAIL_X or P_FAIL_Y and the sensor's);
+    ``controllers`` holds the state-space controllers (:attr:`Params.controllers`). Unpowered, the rates stay 0.
     """
+    order = int(row[P_ORDER])
+    current = y[at + 1 + order]
     force = strength(row, t, fail) * magnet_force(row, current, u)
     if not powered(row, t, fail):
-        return force, 0.0, 0.0, 0.0
+        return force
+    measured = y[at]
     if t >= sensor_fail:
         sensed = measured if row[P_STUCK] > 0.0 else 0.0
     rate = row[P_WS] * (sensed - measured)
-    command = -(row[P_KP] * measured + row[P_KI] * integral + row[P_KD] * rate)
+    out[at] = rate
+    c = int(row[P_CONTROLLER_AT])
+    if c < 0:
+        command = -(row[P_KP] * measured + row[P_KI] * y[at + 1] + row[P_KD] * rate)
+        out[at + 1] = measured
+    else:
+        b, cc = c + order * order, c + order * order + order
+        command = -controllers[cc + order] * measured
+        for j in range(order):
+            acc = controllers[b + j] * measured
+            for k in range(order):
+                acc += controllers[c + j * order + k] * y[at + 1 + k]
+            out[at + 1 + j] = acc
+            command -= controllers[cc + j] * y[at + 1 + j]
     limit = row[P_IMAX]
     command = min(max(command, -limit), limit)
-    return force, rate, measured, row[P_WA] * (command - current)
+    out[at + 1 + order] = row[P_WA] * (command - current)
+    return force

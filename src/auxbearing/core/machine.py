@@ -90,14 +90,17 @@ def ledger_at(n_planes, n_modes, n_station_states=0):
 
 
 #: Where each part of the modes' and stations' data starts in :attr:`Machine.extra` (:attr:`Machine.extra_at`),
-#: after four counts: modes, linear supports, magnetic bearings, loads. One flat array rather than a struct of
+#: after five counts: modes, linear supports, magnetic bearings, loads, the bearings' states. One flat array rather
+#: than a struct of
 #: arrays: every array a :class:`Machine` holds costs a reference-count update wherever it is passed.
-EXTRA_FIELDS = ("modes", "supports", "bearings", "loads", "stiffness", "damping", "gyroscopic", "tilt_gyroscopic",
-                "shape_x", "shape_y", "unbalance_re", "unbalance_im", "support_values", "support_shape_x",
-                "support_shape_y", "bearing_values", "bearing_shape_x", "bearing_shape_y", "bearing_sensor_x",
-                "bearing_sensor_y", "load_values", "load_shape_x", "load_shape_y")
-(E_NM, E_NSUP, E_NAMB, E_NLOAD, E_STIFF, E_DAMP, E_GYRO, E_TILT, E_SX, E_SY, E_URE, E_UIM, E_SUP, E_SUP_SX, E_SUP_SY,
- E_AMB, E_AMB_SX, E_AMB_SY, E_AMB_SSX, E_AMB_SSY, E_LOAD, E_LOAD_SX, E_LOAD_SY) = range(len(EXTRA_FIELDS))
+EXTRA_FIELDS = ("modes", "supports", "bearings", "loads", "bearing_states", "stiffness", "damping", "gyroscopic",
+                "tilt_gyroscopic", "shape_x", "shape_y", "unbalance_re", "unbalance_im", "support_values",
+                "support_shape_x", "support_shape_y", "bearing_values", "bearing_shape_x", "bearing_shape_y",
+                "bearing_sensor_x", "bearing_sensor_y", "bearing_controllers", "load_values", "load_shape_x",
+                "load_shape_y")
+(E_NM, E_NSUP, E_NAMB, E_NLOAD, E_NAMB_STATES, E_STIFF, E_DAMP, E_GYRO, E_TILT, E_SX, E_SY, E_URE, E_UIM, E_SUP,
+ E_SUP_SX, E_SUP_SY, E_AMB, E_AMB_SX, E_AMB_SY, E_AMB_SSX, E_AMB_SSY, E_AMB_CTRL, E_LOAD, E_LOAD_SX,
+ E_LOAD_SY) = range(len(EXTRA_FIELDS))
 
 
 @njit(cache=True, inline="always")
@@ -115,7 +118,7 @@ def station_states_at(m):
 @njit(cache=True, inline="always")
 def station_state_count(m):
     """States of every station of every kind (each kind's STATES per station, in :data:`STATION_KINDS` order)."""
-    return m.extra_at[E_NAMB] * len(amb.STATES)
+    return m.extra_at[E_NAMB_STATES]
 
 
 @njit(cache=True, inline="always")
@@ -141,6 +144,7 @@ class Layout(NamedTuple):
     stations: tuple = ()  #: stations of each kind of :data:`STATION_KINDS` beside the planes
     stations_at: int = 0  #: first ledger slot of those stations (each kind's LEDGER per station, kind by kind)
     station_states_at: tuple = ()  #: first state of each kind's block (each kind's STATES per station)
+    station_spans: tuple = ()  #: per kind, each station's (first state, state count)
 
     def plane(self, k: int) -> int:
         """First index of plane k's block."""
@@ -151,15 +155,24 @@ class Layout(NamedTuple):
         return self.heat_at + 3 * k + source
 
 
-def layout(n_planes: int, n_modes: int = 0, stations: tuple = ()) -> Layout:
-    """The state layout of a machine: plane blocks, elastic modes, stations of each kind (module docstring)."""
+def layout(n_planes: int, n_modes: int = 0, stations: tuple = (), station_names: tuple = ()) -> Layout:
+    """The state layout of a machine: plane blocks, elastic modes, stations of each kind (module docstring).
+
+    ``station_names``: per kind, each station's state names when they are not the kind's STATES (a magnetic
+    bearing with a state-space controller of its own order).
+    """
     counts = tuple(stations) + (0,) * (len(STATION_KINDS) - len(stations))
     modal = (*(f"mode_{j}" for j in range(n_modes)), *(f"mode_rate_{j}" for j in range(n_modes)))
     names = (*ROTOR_STATES, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_STATES), *modal)
-    state_blocks = []
-    for kind, count in zip(STATION_KINDS, counts, strict=True):
+    state_blocks, spans = [], []
+    for k, (kind, count) in enumerate(zip(STATION_KINDS, counts, strict=True)):
         state_blocks.append(len(names))
-        names += tuple(f"{name}_{i}" for i in range(count) for name in kind.STATES)
+        own = station_names[k] if k < len(station_names) and station_names[k] else (kind.STATES,) * count
+        kind_spans = []
+        for i in range(count):
+            kind_spans.append((len(names), len(own[i])))
+            names += tuple(f"{name}_{i}" for name in own[i])
+        spans.append(tuple(kind_spans))
     at = len(names)
     names += (*LEDGER, *(f"{name}_{k}" for k in range(n_planes) for name in PLANE_LEDGER),
               *(("structure_loss",) if n_modes else ()))
@@ -168,13 +181,15 @@ def layout(n_planes: int, n_modes: int = 0, stations: tuple = ()) -> Layout:
         names += tuple(f"{name}_{i}" for i in range(count) for name in kind.LEDGER)
     return Layout(n_planes, len(names), at, at + L_WORK_IN, at + L_DRAG_LOSS, at + L_BALLSET_WORK, at + L_HEAT, names,
                   n_modes, N_ROTOR + n_planes * N_PLANE, stations_at - 1 if n_modes else -1, counts, stations_at,
-                  tuple(state_blocks))
+                  tuple(state_blocks), tuple(spans))
 
 
 def layout_of(m) -> Layout:
     """The state layout of a packed :class:`Machine`."""
-    return layout(len(m.planes.active), m.extra_at[E_NM], (m.extra_at[E_NSUP], m.extra_at[E_NAMB],
-                                                           m.extra_at[E_NLOAD]))
+    e = m.extra_at
+    rows = m.extra[e[E_AMB]:e[E_AMB_SX]].reshape(e[E_NAMB], len(amb.FIELDS))
+    bearings = tuple(amb.state_names(int(row[amb.P_ORDER]), row[amb.P_CONTROLLER_AT] < 0) for row in rows)
+    return layout(len(m.planes.active), e[E_NM], (e[E_NSUP], e[E_NAMB], e[E_NLOAD]), ((), bearings, ()))
 
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
 #: integrates the first harmonics of the slip field exactly).
@@ -282,13 +297,14 @@ def pack_extra(modes: Modes, stations: tuple) -> tuple[np.ndarray, tuple]:
     parts = (modes.stiffness, modes.damping, modes.gyroscopic, modes.tilt_gyroscopic, modes.shape_x, modes.shape_y,
              modes.unbalance_re, modes.unbalance_im, supports.values, supports.shape_x, supports.shape_y,
              bearings.values, bearings.shape_x, bearings.shape_y, bearings.sensor_shape_x, bearings.sensor_shape_y,
-             loads.values, loads.shape_x, loads.shape_y)
+             bearings.controllers, loads.values, loads.shape_x, loads.shape_y)
     offsets, at = [], 0
     for part in parts:
         offsets.append(at)
         at += np.asarray(part).size
     extra = np.concatenate([np.ascontiguousarray(part, float).ravel() for part in parts]) if at else np.zeros(0)
-    counts = (modes.stiffness.shape[0], supports.values.shape[0], bearings.values.shape[0], loads.values.shape[0])
+    counts = (modes.stiffness.shape[0], supports.values.shape[0], bearings.values.shape[0], loads.values.shape[0],
+              bearings.state_count)
     return extra, tuple(int(v) for v in (*counts, *offsets))
 
 
@@ -478,11 +494,11 @@ def _stations(t, y, m, kin, q, out):
         ox, oy = e[E_AMB_SX] + i * nm, e[E_AMB_SY] + i * nm
         jx, jy, vx, vy = station_point(y, m, row[amb.P_POS], ox, oy)
         sx, sy, _, _ = station_point(y, m, row[amb.P_SENSOR], e[E_AMB_SSX] + i * nm, e[E_AMB_SSY] + i * nm)
-        b = states + i * len(amb.STATES)
-        fx, out[b], out[b + 1], out[b + 2] = amb.axis(row, t, row[amb.P_FAIL_X], row[amb.P_SENSOR_FAIL_X], jx, sx,
-                                                      y[b], y[b + 1], y[b + 2])
-        fy, out[b + 3], out[b + 4], out[b + 5] = amb.axis(row, t, row[amb.P_FAIL_Y], row[amb.P_SENSOR_FAIL_Y], jy, sy,
-                                                          y[b + 3], y[b + 4], y[b + 5])
+        b = states + int(row[amb.P_STATES_AT])
+        controllers = m.extra[e[E_AMB_CTRL]:e[E_LOAD]]
+        fx = amb.axis(row, t, row[amb.P_FAIL_X], row[amb.P_SENSOR_FAIL_X], jx, sx, y, out, b, controllers)
+        fy = amb.axis(row, t, row[amb.P_FAIL_Y], row[amb.P_SENSOR_FAIL_Y], jy, sy, y, out,
+                      b + 2 + int(row[amb.P_ORDER]), controllers)
         _apply_rotor(q, kin, row[amb.P_POS], 0.0, 0.0, fx, fy, 0.0)
         _apply_shapes(m, ox, oy, fx, fy)
         out[at + i] = -(fx * vx + fy * vy)

@@ -155,9 +155,9 @@ def _levitate(machine: Machine, modal, layout: cm.Layout, y0: np.ndarray) -> Non
     r = machine.rotor
     y0[cm.X], y0[cm.Y], y0[cm.TX], y0[cm.TY] = q[0] + r.start_x, q[1] + r.start_y, q[2], q[3]
     y0[layout.modes_at:layout.modes_at + layout.modes] = q[4:]
-    at = layout.station_states_at[cm.STATION_KINDS.index(cm.amb)]
-    for i, states in enumerate(held["states"]):
-        y0[at + i * len(cm.amb.STATES):at + (i + 1) * len(cm.amb.STATES)] = states
+    spans = layout.station_spans[cm.STATION_KINDS.index(cm.amb)]
+    for (at, width), states in zip(spans, held["states"], strict=True):
+        y0[at:at + width] = states
 
 
 def _amb_tolerances(machine: Machine, layout: cm.Layout, atol: np.ndarray, length: float) -> None:
@@ -166,14 +166,18 @@ def _amb_tolerances(machine: Machine, layout: cm.Layout, atol: np.ndarray, lengt
 
     if not machine.active_scenario().levitated:
         return  # failed at the drop: their frozen states stay out of the step's error norm, as if absent
-    at = layout.station_states_at[cm.STATION_KINDS.index(cm.amb)]
+    spans = layout.station_spans[cm.STATION_KINDS.index(cm.amb)]
     weight = max(machine.rotor.mass * machine.simulation.gravity, 1.0)
-    for i, b in enumerate(of_kind(machine.stations, amb.KIND)):
-        block = at + i * len(cm.amb.STATES)
-        for axis in (0, 3):
-            atol[block + axis] = length
-            atol[block + axis + 1] = length * 1e-2
-            atol[block + axis + 2] = machine.simulation.atol * weight / b.current_stiffness
+    for (block, _), b in zip(spans, of_kind(machine.stations, amb.KIND), strict=True):
+        current = machine.simulation.atol * weight / b.current_stiffness
+        for axis in (block, block + 2 + b.order):
+            atol[axis] = length
+            if b.controller is None:
+                atol[axis + 1] = length * 1e-2
+            else:  # a controller state's error moves the current by |C_j| times it
+                gain = np.maximum(np.abs(np.asarray(b.controller[2], float)), 1e-300)
+                atol[axis + 1:axis + 1 + b.order] = current / gain
+            atol[axis + 1 + b.order] = current
 
 
 def pack(machine: Machine) -> KernelModel:

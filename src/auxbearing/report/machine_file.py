@@ -104,6 +104,11 @@ _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file o
                            "| `mode` | - | `zero` | sensor_failure: `stuck` (holds its reading) or `zero` | ours |",
                            "| `shape` | - | `half_sine` (shock, base_acceleration), `step` | The load's time "
                            "profile | ours |"],
+              "amb": ["| `controller` | - | none (the PID of `kp`, `ki`, `kd`) | The controller from the sensor's "
+                      "reading to the current, `i = -C(s) x`, in SI (A per m): `{ num = [...], den = [...] }` "
+                      "(coefficients in descending powers of s; proper: a derivative needs its filter) or "
+                      "`{ A = [[...]], B = [[...]], C = [[...]], D = [[...]] }`; from Python also a python-control "
+                      "`TransferFunction` or `StateSpace` | the controller's data |"],
               "load": ["| `name` | - | `load N` | The load's name | ours |",
                        "| `kind` | - | `force` | `force`, `unbalance` (it appears at `start`) or "
                        "`base_acceleration` | ours |",

@@ -41,7 +41,7 @@ PARAMS: tuple[Param, ...] = (
     Param(KIND, "pole_angle", "angle", math.pi / 8, "deg", "finite", "Magnetic circuit: angle of each pole to its "
           "axis (the force is cos(alpha) of the poles' pull)", "ours: 22.5 deg, an eight-pole stator"),
     Param(KIND, "kp", "current_per_length", None, "A/m", "positive", "Proportional gain (i = -(kp x + ki int x + "
-          "kd dx/dt))", "the controller's data"),
+          "kd dx/dt)); or give a controller", "the controller's data"),
     Param(KIND, "ki", "current_per_length_time", 0.0, "A/(m*s)", "nonnegative", "Integral gain",
           "the controller's data"),
     Param(KIND, "kd", "current_time_per_length", 0.0, "A*s/m", "nonnegative", "Derivative gain",
@@ -76,7 +76,34 @@ class MagneticBearing:
     air_gap: float | None = None
     bias_current: float | None = None
     pole_angle: float = math.pi / 8
+    #: a state-space controller (A, B, C, D) as nested tuples, from the reading [m] to the current i = -(C z + D x)
+    #: [A]; None: the PID of kp, ki, kd
+    controller: tuple | None = None
     KIND = KIND
+
+    @property
+    def order(self) -> int:
+        """Controller states per axis (the PID's one: its integral)."""
+        return 1 if self.controller is None else len(self.controller[0])
+
+    def transfer(self, s: complex) -> complex:
+        """The controller's C(s) from the reading to the current command, i = -C(s) x [A/m]."""
+        if self.controller is None:
+            return self.kp + self.ki / s + self.kd * s
+        a, b, c, d = (np.asarray(v, float) for v in self.controller)
+        return complex(c @ np.linalg.solve(s * np.eye(len(a)) - a, b) + d)
+
+    def spring_and_damper(self, speed: float) -> tuple[float, float]:
+        """(k, c) of the bearing with ideal sensor and amplifier [N/m, N s/m].
+
+        The PD's k_i k_p - k_s and k_i k_d, or a state-space controller's k_i Re C(i w) - k_s and k_i Im C(i w) / w
+        at the running speed w (the frequency the unbalance drives).
+        """
+        if self.controller is None:
+            return self.closed_loop_stiffness(), self.current_stiffness * self.kd
+        w = max(abs(speed), 1.0)
+        gain = self.transfer(1j * w)
+        return self.current_stiffness * gain.real - self.position_stiffness, self.current_stiffness * gain.imag / w
 
     @property
     def circuit(self) -> bool:
@@ -99,13 +126,21 @@ class MagneticBearing:
 
         return float(magnet_force(np.array(self._row()), current, displacement))
 
-    def _row(self, failures=(math.inf,) * 5 + (0.0,), decay: float = 0.0) -> tuple[float, ...]:
-        """The kernel's row (:data:`auxbearing.core.amb.FIELDS`) with a scenario's failure times."""
+    def _row(self, failures=(math.inf,) * 5 + (0.0,), decay: float = 0.0, states_at: int = 0,
+             controller_at: int = -1) -> tuple[float, ...]:
+        """The kernel's row (:data:`auxbearing.core.amb.FIELDS`) with a scenario's failure times and its offsets."""
         fail_x, fail_y, restore, sensor_x, sensor_y, stuck = failures
-        return (self.position, self.sensor, self.current_stiffness, self.position_stiffness, self.kp, self.ki,
+        return (self.position, self.sensor, self.current_stiffness, self.position_stiffness, self.kp or 0.0, self.ki,
                 self.kd, 2 * math.pi * self.sensor_bandwidth, 2 * math.pi * self.amplifier_bandwidth,
                 self.current_limit(), fail_x, fail_y, decay, restore, sensor_x, sensor_y, stuck,
-                self.circuit_constant(), self.bias_current or 0.0, self.air_gap or 0.0)
+                self.circuit_constant(), self.bias_current or 0.0, self.air_gap or 0.0, self.order, states_at,
+                controller_at)
+
+    def flat_controller(self) -> np.ndarray:
+        """A, B, C, D of the state-space controller, flat (the kernel's layout); empty for the PID."""
+        if self.controller is None:
+            return np.zeros(0)
+        return np.concatenate([np.ravel(np.asarray(v, float)) for v in self.controller])
 
     def dynamic_stiffness(self, s: complex) -> complex:
         """Force per displacement of the bearing in the loop at the Laplace variable s [N/m] (linearised).
@@ -114,8 +149,7 @@ class MagneticBearing:
         G = w / (s + w); at s = i w its real part is the bearing's stiffness, its imaginary part / w its damping.
         """
         ws, wa = 2 * math.pi * self.sensor_bandwidth, 2 * math.pi * self.amplifier_bandwidth
-        pid = self.kp + self.ki / s + self.kd * s
-        return self.current_stiffness * wa / (s + wa) * ws / (s + ws) * pid - self.position_stiffness
+        return self.current_stiffness * wa / (s + wa) * ws / (s + ws) * self.transfer(s) - self.position_stiffness
 
     @property
     def sensor(self) -> float:
@@ -132,7 +166,22 @@ def read(tables) -> tuple[MagneticBearing, ...]:
     from auxbearing.machine.stations import read_tables
 
     out = []
-    for where, name, values, table in read_tables(tables, KIND, TABLE, ("position", "kp"), "AMB"):
+    controllers = []
+    if isinstance(tables, list):  # a controller is no number with a unit: taken out before the tables are read
+        tables = [dict(t) if isinstance(t, dict) else t for t in tables]
+        for i, t in enumerate(tables):
+            controllers.append(read_controller(t.pop("controller"), f"{KIND}.{i}.controller")
+                               if isinstance(t, dict) and "controller" in t else None)
+    for (where, name, values, table), controller in zip(read_tables(tables, KIND, TABLE, ("position",), "AMB"),
+                                                        controllers, strict=True):
+        if controller is not None:
+            for key in ("kp", "ki", "kd"):
+                if key in values:
+                    raise InputError.for_field(where + key, table.get(key), "give either the PID's gains or a "
+                                               "controller, not both")
+            values.update(controller=controller, kp=0.0)
+        elif "kp" not in values:
+            raise InputError(f"{where}kp: missing; give the PID's gains (kp, ki, kd) or a controller")
         given = [key for key in CIRCUIT if key in values]
         if given:
             missing = [key for key in CIRCUIT if key not in values]
@@ -153,7 +202,7 @@ def read(tables) -> tuple[MagneticBearing, ...]:
             raise InputError.for_field(where + "pole_angle", table.get("pole_angle"), "belongs to the magnetic "
                                        f"circuit ({', '.join(CIRCUIT)})")
         bearing = MagneticBearing(name=name, **values)
-        if bearing.closed_loop_stiffness() <= 0.0:
+        if controller is None and bearing.closed_loop_stiffness() <= 0.0:
             raise InputError.for_field(where + "kp", table.get("kp"), "too small to hold the rotor: kp "
                                        "current_stiffness must exceed position_stiffness "
                                        f"({bearing.position_stiffness:g} N/m)")
@@ -161,27 +210,79 @@ def read(tables) -> tuple[MagneticBearing, ...]:
     return tuple(out)
 
 
+#: Most controller states per axis (a controller of higher order is refused: reduce it first).
+MAX_ORDER = 20
+
+
+def read_controller(value, where: str) -> tuple:
+    """A controller as (A, B, C, D) nested tuples, read by python-control.
+
+    A ``TransferFunction`` or ``StateSpace``, or a table ``{num = [...], den = [...]}`` (coefficients in descending
+    powers of s) or ``{A, B, C, D}``, in SI, from the sensor's reading [m] to the control current [A] with
+    i = -C(s) x (so a PID is kp + ki / s + kd s / (1 + s / w)).
+    """
+    import control
+
+    try:
+        if isinstance(value, (control.TransferFunction, control.StateSpace)):
+            system = value
+        elif isinstance(value, dict) and set(value) == {"num", "den"}:
+            num, den = (np.atleast_1d(np.asarray(value[k], float)) for k in ("num", "den"))
+            if len(np.trim_zeros(num, "f")) > len(np.trim_zeros(den, "f")):
+                raise InputError.for_field(where, value, "must be proper: a derivative needs its filter "
+                                           "(kd s / (1 + s / w))")
+            system = control.tf(num, den)
+        elif isinstance(value, dict) and set(value) == {"A", "B", "C", "D"}:
+            system = control.ss(*(np.atleast_2d(np.asarray(value[k], float)) for k in ("A", "B", "C", "D")))
+        else:
+            raise InputError.for_field(where, value, "give {num = [...], den = [...]} or {A, B, C, D} (SI: A per m) "
+                                       "or a python-control TransferFunction / StateSpace")
+        if not control.isctime(system, strict=False):
+            raise InputError.for_field(where, value, "must be a continuous-time controller (dt = 0)")
+        if system.ninputs != 1 or system.noutputs != 1:
+            raise InputError.for_field(where, value, "must have one input (the reading) and one output (the current)")
+        ss = control.ss(system)
+    except InputError:
+        raise
+    except (ValueError, TypeError, np.linalg.LinAlgError) as err:
+        raise InputError.for_field(where, value, f"is no linear controller python-control can read ({err})") from None
+    a, b, c, d = (np.asarray(m, float) for m in (ss.A, ss.B, ss.C, ss.D))
+    if not all(np.all(np.isfinite(m)) for m in (a, b, c, d)):
+        raise InputError.for_field(where, value, "has coefficients that are not finite")
+    if a.shape[0] == 0:
+        raise InputError.for_field(where, value, "is a pure gain: give it as kp")
+    if a.shape[0] > MAX_ORDER:
+        raise InputError.for_field(where, value, f"has {a.shape[0]} states; at most {MAX_ORDER} (reduce it)")
+    return (tuple(map(tuple, a)), tuple(b[:, 0]), tuple(c[0]), float(d[0, 0]))
+
+
 def pack(bearings, modal, n_modes: int, machine=None) -> kernel.Params:
     """The kernel's parameters: shapes at the actuators and sensors, the failures from the active scenario."""
     from auxbearing.machine.scenario import AT_THE_DROP
 
     scenario = machine.active_scenario() if machine is not None else AT_THE_DROP
-    rows = [b._row(scenario.failure_times(b.name), scenario.decay_time) for b in bearings]
+    rows, flat, states_at = [], [], 0
+    for b in bearings:
+        at = sum(part.size for part in flat) if b.controller is not None else -1
+        rows.append(b._row(scenario.failure_times(b.name), scenario.decay_time, states_at, at))
+        flat.append(b.flat_controller())
+        states_at += kernel.width(b.order)
     values = np.array(rows, float).reshape(len(bearings), len(kernel.FIELDS))
     shapes = [np.zeros((len(bearings), n_modes)) for _ in range(4)]
     if n_modes:
         for i, b in enumerate(bearings):
             shapes[0][i], shapes[1][i] = modal.station_shapes(b.position, f"{KIND}.{i}.position")
             shapes[2][i], shapes[3][i] = modal.station_shapes(b.sensor, f"{KIND}.{i}.sensor_position")
-    return kernel.Params(values, *shapes)
+    controllers = np.concatenate(flat) if flat else np.zeros(0)
+    return kernel.Params(values, *shapes, controllers)
 
 
 def series(bearings, journal, states) -> dict:
     """Each bearing's coil currents over a run (``states(i)``: its states on the run's grid, kernel order)."""
     if not bearings:
         return {}
-    x = np.stack([states(i)[:, kernel.S_CURRENT] for i in range(len(bearings))], axis=1)
-    y = np.stack([states(i)[:, 3 + kernel.S_CURRENT] for i in range(len(bearings))], axis=1)
+    x = np.stack([states(i)[:, 1 + b.order] for i, b in enumerate(bearings)], axis=1)
+    y = np.stack([states(i)[:, 3 + 2 * b.order] for i, b in enumerate(bearings)], axis=1)
     return {"amb_current_x": (("time", "amb"), x, {"units": "A", "long_name": "Magnetic bearing's control current, x"}),
             "amb_current_y": (("time", "amb"), y, {"units": "A", "long_name": "Magnetic bearing's control current, y"}),
             "amb": ("amb", [b.name for b in bearings], {})}
@@ -191,9 +292,12 @@ def describe(b: MagneticBearing) -> dict:
     """Inputs with units in the keys, for files and reports."""
     return {"kind": KIND, "name": b.name, "position_m": b.position, "sensor_position_m": b.sensor,
             "current_stiffness_N_per_A": b.current_stiffness, "position_stiffness_N_per_m": b.position_stiffness,
-            "kp_A_per_m": b.kp, "ki_A_per_m_s": b.ki, "kd_A_s_per_m": b.kd, "sensor_bandwidth_Hz": b.sensor_bandwidth,
+            **({"kp_A_per_m": b.kp, "ki_A_per_m_s": b.ki, "kd_A_s_per_m": b.kd} if b.controller is None else
+               {"controller": f"state space of order {b.order} (A per m of reading)",
+                "controller_gain_at_1_Hz_A_per_m": abs(b.transfer(2j * math.pi))}),
+            "sensor_bandwidth_Hz": b.sensor_bandwidth,
             "amplifier_bandwidth_Hz": b.amplifier_bandwidth, "max_current_A": b.max_current,
-            "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness(),
+            **({"closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()} if b.controller is None else {}),
             **({"turns": b.turns, "pole_area_mm2": b.pole_area * 1e6, "air_gap_mm": b.air_gap * 1e3,
                 "bias_current_A": b.bias_current, "pole_angle_deg": math.degrees(b.pole_angle),
                 "force_law": "magnetic circuit (nonlinear)", "current_limit_A": b.current_limit()}
@@ -205,8 +309,9 @@ def levitated_state(machine, modal, bearings) -> dict:
 
     Unknowns: the rotor's coordinates q (x, y, theta_x, theta_y and the elastic modes) and, for a bearing with
     integral action, its steady currents (its sensor then reads zero); without integral action the current is
-    -k_p times the sensor's reading. Forces: gravity, the constant process forces and the linear supports; the
-    touchdown planes are clear. Returns q and each bearing's (measured, integral, current) for x and y.
+    -k_p times the sensor's reading; a state-space controller's steady states z solve A z + B x = 0 with the rest.
+    Forces: gravity, the constant process forces and the linear supports; the touchdown planes are clear. Returns q
+    and each bearing's states in the kernel's order (reading, controller states, current; x then y).
     """
     r = machine.rotor
     n = 4 + (modal.n_modes if modal is not None else 0)
@@ -232,8 +337,9 @@ def levitated_state(machine, modal, bearings) -> dict:
     force = np.zeros(n)
     force[0] = r.mass * gravity[0] + r.side_force_x
     force[1] = r.mass * gravity[1] + r.side_force_y
-    integral = [b for b in bearings if b.ki > 0.0]
-    size = n + 2 * len(integral)
+    unknowns = sum(2 * b.order for b in bearings if b.controller is not None) + 2 * sum(
+        1 for b in bearings if b.controller is None and b.ki > 0.0)
+    size = n + unknowns
     a, rhs = np.zeros((size, size)), np.zeros(size)
     a[:n, :n] = stiff
     rhs[:n] = force
@@ -242,7 +348,15 @@ def levitated_state(machine, modal, bearings) -> dict:
         act, sense = rows(b.position, f"{KIND}.{i}.position"), rows(b.sensor, f"{KIND}.{i}.sensor_position")
         for axis in range(2):
             a[:n, :n] -= b.position_stiffness * np.outer(act[axis], act[axis])
-            if b.ki > 0.0:
+            if b.controller is not None:  # steady: A z + B x = 0, the current -(C z + D x)
+                sys_a, sys_b, sys_c, sys_d = (np.asarray(v, float) for v in b.controller)
+                z = slice(extra, extra + b.order)
+                a[:n, z] += b.current_stiffness * np.outer(act[axis], sys_c)
+                a[:n, :n] += b.current_stiffness * sys_d * np.outer(act[axis], sense[axis])
+                a[z, z] = sys_a
+                a[z, :n] = np.outer(sys_b, sense[axis])
+                extra += b.order
+            elif b.ki > 0.0:
                 a[:n, extra] -= b.current_stiffness * act[axis]  # the unknown steady current
                 a[extra, :n] = sense[axis]  # the sensor reads zero
                 extra += 1
@@ -259,7 +373,11 @@ def levitated_state(machine, modal, bearings) -> dict:
         per_axis = []
         for axis in range(2):
             measured = float(sense[axis] @ q)
-            if b.ki > 0.0:
+            if b.controller is not None:
+                z = solution[extra:extra + b.order]
+                extra += b.order
+                per_axis += [measured, *z, -float(np.asarray(b.controller[2]) @ z + b.controller[3] * measured)]
+            elif b.ki > 0.0:
                 current = float(solution[extra])
                 extra += 1
                 per_axis += [measured, -current / b.ki, current]
