@@ -114,3 +114,6 @@ def test_the_drop_records_each_bearings_currents():
     assert list(ds["amb"].values) == ["drive end", "non-drive end"]
     # levitated: each carries half the weight through its current at the start, k_i i = m g / 2
     assert ds["amb_current_y"].values[0] == pytest.approx([machine.rotor.mass * 9.80665 / 2 / KI] * 2, rel=1e-9)
+    # and its force beside the contact forces: the same half weight, upward
+    assert ds["amb_force_y"].values[0] == pytest.approx([machine.rotor.mass * 9.80665 / 2] * 2, rel=1e-9)
+    assert ds["amb_force_y"].attrs["units"] == "N"

@@ -334,7 +334,7 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
         def states(i, k=k):
             at, width = layout.station_spans[k][i]
             return grid[:, at:at + width]
-        data.update(kind.series(of_kind(machine.stations, kind.KIND), axis, states))
+        data.update(kind.series(of_kind(machine.stations, kind.KIND), axis, states, params, t))
     # per-ball states where they fit the memory cap; their largest stress is the plane's, so the
     # diagnostics need to evaluate the ball stresses only for planes without them
     states = {}

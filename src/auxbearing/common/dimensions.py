@@ -28,6 +28,8 @@ EXTRA_UNITS = {
     "velocity": ("m/s", "m/s, mm/s"),
     "acceleration": ("m/s**2", "m/s**2"),
     "area": ("m**2", "mm**2, cm**2, m**2"),
+    "voltage": ("V", "V"),
+    "inductance": ("H", "H, mH"),
     "stiffness": ("N/m", "N/m, N/mm"),
     "torque_per_speed": ("N*m*s", "N*m*s, N*m/rpm"),
     "torque_per_speed2": ("N*m*s**2", "N*m*s**2, N*m/rpm**2"),

@@ -13,7 +13,8 @@ Springer, 2009: the linearised force law and decentralised PID control):
   rate); or any proper linear controller given as a state space, z' = A z + B x_m, i_c = -(C z + D x_m) (a
   transfer function C(s) from the reading to the current, i_c = -C(s) x_m, realised by python-control at the
   boundary);
-* amplifier: i' = w_a (sat(i_c) - i), the command clipped at the current limit.
+* amplifier: i' = w_a (sat(i_c) - i), the command clipped at the current limit and the rate at the voltage's,
+  |i'| <= U_max / L (the coil's inductance across the amplifier's supply: its slew rate).
 
 Below the speed of the controller, a PD law gives the closed-loop stiffness k_i k_p - k_s and damping k_i k_d.
 
@@ -47,10 +48,10 @@ NAME = "amb"
 FIELDS = ("position", "sensor_position", "current_stiffness", "position_stiffness", "kp", "ki", "kd",
           "sensor_bandwidth", "amplifier_bandwidth", "max_current", "fail_time_x", "fail_time_y", "decay_time",
           "restore_time", "sensor_fail_time_x", "sensor_fail_time_y", "sensor_stuck", "circuit_constant",
-          "bias_current", "air_gap", "order", "states_at", "controller_at")
+          "bias_current", "air_gap", "order", "states_at", "controller_at", "slew_rate")
 (P_POS, P_SENSOR, P_KI_FORCE, P_KS, P_KP, P_KI, P_KD, P_WS, P_WA, P_IMAX, P_FAIL_X, P_FAIL_Y, P_DECAY, P_RESTORE,
  P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK, P_CIRCUIT, P_BIAS, P_GAP, P_ORDER, P_STATES_AT,
- P_CONTROLLER_AT) = range(len(FIELDS))
+ P_CONTROLLER_AT, P_SLEW) = range(len(FIELDS))
 #: Smallest gap the circuit law divides by, as a share of the nominal gap (the touchdown clearance keeps the rotor
 #: far from the poles; this only keeps a run that leaves its range finite).
 MIN_GAP = 1e-3
@@ -133,6 +134,15 @@ def magnet_force(row, current, u):
     return k * ((i0 + current) ** 2 / (near * near) - (i0 - current) ** 2 / (far * far))
 
 
+@njit(cache=True)
+def forces(row, times, fail, currents, displacements):
+    """The axis' force on the rotor at each of ``times`` from its currents and the rotor's displacements [N]."""
+    out = np.empty(times.size)
+    for k in range(times.size):
+        out[k] = strength(row, times[k], fail) * magnet_force(row, currents[k], displacements[k])
+    return out
+
+
 @njit(cache=True, inline="always")
 def axis(row, t, fail, sensor_fail, u, sensed, y, out, at, controllers):
     """One axis whose states start at ``y[at]``: writes their rates into ``out``, returns the force on the rotor.
@@ -165,5 +175,6 @@ def axis(row, t, fail, sensor_fail, u, sensed, y, out, at, controllers):
             command -= controllers[cc + j] * y[at + 1 + j]
     limit = row[P_IMAX]
     command = min(max(command, -limit), limit)
-    out[at + 1 + order] = row[P_WA] * (command - current)
+    slew = row[P_SLEW]
+    out[at + 1 + order] = min(max(row[P_WA] * (command - current), -slew), slew)
     return force

@@ -52,6 +52,11 @@ PARAMS: tuple[Param, ...] = (
           "Current bandwidth of the amplifier (first order)", "ours: a typical switching amplifier's 1-3 kHz"),
     Param(KIND, "max_current", "current", math.inf, "A", "positive", "Largest control current the amplifier gives",
           "ours: none unless given"),
+    Param(KIND, "max_voltage", "voltage", math.inf, "V", "positive", "The amplifier's supply voltage: with "
+          "coil_inductance it limits the current's rate to max_voltage / coil_inductance (slew)",
+          "ours: none unless given"),
+    Param(KIND, "coil_inductance", "inductance", None, "mH", "optional_positive", "Inductance of one axis' coil "
+          "(needed with max_voltage)", "the bearing's data"),
 )
 TABLE = by_key(PARAMS, KIND)
 
@@ -71,6 +76,8 @@ class MagneticBearing:
     sensor_bandwidth: float = 5000.0
     amplifier_bandwidth: float = 1000.0
     max_current: float = math.inf
+    max_voltage: float = math.inf
+    coil_inductance: float | None = None
     turns: float | None = None  #: the magnetic circuit (all four given, or none: the linearised law)
     pole_area: float | None = None
     air_gap: float | None = None
@@ -134,7 +141,13 @@ class MagneticBearing:
                 self.kd, 2 * math.pi * self.sensor_bandwidth, 2 * math.pi * self.amplifier_bandwidth,
                 self.current_limit(), fail_x, fail_y, decay, restore, sensor_x, sensor_y, stuck,
                 self.circuit_constant(), self.bias_current or 0.0, self.air_gap or 0.0, self.order, states_at,
-                controller_at)
+                controller_at, self.slew_rate())
+
+    def slew_rate(self) -> float:
+        """The largest rate of the coil current, U_max / L [A/s] (inf without a voltage limit)."""
+        if math.isinf(self.max_voltage):
+            return math.inf
+        return self.max_voltage / self.coil_inductance
 
     def flat_controller(self) -> np.ndarray:
         """A, B, C, D of the state-space controller, flat (the kernel's layout); empty for the PID."""
@@ -201,6 +214,8 @@ def read(tables) -> tuple[MagneticBearing, ...]:
         elif "pole_angle" in values:
             raise InputError.for_field(where + "pole_angle", table.get("pole_angle"), "belongs to the magnetic "
                                        f"circuit ({', '.join(CIRCUIT)})")
+        if "max_voltage" in values and "coil_inductance" not in values:
+            raise InputError(f"{where}coil_inductance: missing; max_voltage limits the current's rate through it")
         bearing = MagneticBearing(name=name, **values)
         if controller is None and bearing.closed_loop_stiffness() <= 0.0:
             raise InputError.for_field(where + "kp", table.get("kp"), "too small to hold the rotor: kp "
@@ -277,15 +292,31 @@ def pack(bearings, modal, n_modes: int, machine=None) -> kernel.Params:
     return kernel.Params(values, *shapes, controllers)
 
 
-def series(bearings, journal, states) -> dict:
-    """Each bearing's coil currents over a run (``states(i)``: its states on the run's grid, kernel order)."""
+def series(bearings, journal, states, params=None, t=None) -> dict:
+    """Each bearing's coil currents over a run and, with its packed rows and the times, its force on the rotor.
+
+    ``states(i)``: its states on the run's grid (kernel order); ``journal(i, position)``: the rotor axis at its
+    actuator; ``params``: the packed :class:`auxbearing.core.amb.Params` (the scenario's failure times).
+    """
     if not bearings:
         return {}
     x = np.stack([states(i)[:, 1 + b.order] for i, b in enumerate(bearings)], axis=1)
     y = np.stack([states(i)[:, 3 + 2 * b.order] for i, b in enumerate(bearings)], axis=1)
-    return {"amb_current_x": (("time", "amb"), x, {"units": "A", "long_name": "Magnetic bearing's control current, x"}),
-            "amb_current_y": (("time", "amb"), y, {"units": "A", "long_name": "Magnetic bearing's control current, y"}),
-            "amb": ("amb", [b.name for b in bearings], {})}
+    out = {"amb_current_x": (("time", "amb"), x, {"units": "A", "long_name": "Magnetic bearing's control current, x"}),
+           "amb_current_y": (("time", "amb"), y, {"units": "A", "long_name": "Magnetic bearing's control current, y"}),
+           "amb": ("amb", [b.name for b in bearings], {})}
+    if params is None or t is None:
+        return out
+    fx, fy = np.zeros_like(x), np.zeros_like(y)
+    for i, b in enumerate(bearings):
+        row = params.values[i]
+        ux, uy, _, _ = journal(i, b.position)
+        for force, current, u, fail in ((fx, x, ux, kernel.P_FAIL_X), (fy, y, uy, kernel.P_FAIL_Y)):
+            force[:, i] = kernel.forces(row, np.ascontiguousarray(t, float), row[fail],
+                                        np.ascontiguousarray(current[:, i]), np.ascontiguousarray(u, float))
+    out["amb_force_x"] = (("time", "amb"), fx, {"units": "N", "long_name": "Magnetic bearing's force on the rotor, x"})
+    out["amb_force_y"] = (("time", "amb"), fy, {"units": "N", "long_name": "Magnetic bearing's force on the rotor, y"})
+    return out
 
 
 def describe(b: MagneticBearing) -> dict:
@@ -297,6 +328,7 @@ def describe(b: MagneticBearing) -> dict:
                 "controller_gain_at_1_Hz_A_per_m": abs(b.transfer(2j * math.pi))}),
             "sensor_bandwidth_Hz": b.sensor_bandwidth,
             "amplifier_bandwidth_Hz": b.amplifier_bandwidth, "max_current_A": b.max_current,
+            "slew_rate_A_per_s": b.slew_rate() if math.isfinite(b.slew_rate()) else None,
             **({"closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()} if b.controller is None else {}),
             **({"turns": b.turns, "pole_area_mm2": b.pole_area * 1e6, "air_gap_mm": b.air_gap * 1e3,
                 "bias_current_A": b.bias_current, "pole_angle_deg": math.degrees(b.pole_angle),
