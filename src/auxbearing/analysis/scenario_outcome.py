@@ -5,10 +5,12 @@ shorter than the output step between two samples is not seen here (the drop's pe
 observer at every step, are). The classes:
 
 * ``no touchdown``: the rotor never touched a touchdown bearing after the strike;
-* ``re-levitated``: every magnetic bearing works at the end and the rotor left its touchdown bearings for good
-  (no contact in the last :data:`SETTLED` of the run); ``relevitated_at_ms`` is the end of its last contact;
+* ``re-levitated``: every magnetic bearing works at the end and the rotor left its touchdown bearings for good:
+  no contact in the last :data:`SETTLED` of the run after the strike (at least :data:`SETTLED_MIN`), and held there
+  within :data:`HELD_EXCURSION` of each plane's clearance (not a free flight between two bounces);
+  ``relevitated_at_ms`` is the end of its last contact;
 * ``not settled``: every bearing works and the rotor still touches now and then in the last stretch (contact in
-  less than :data:`HELD` of it): a longer run tells whether it lifts off;
+  less than :data:`HELD` of it), or is clear but still swinging wide: a longer run tells whether it lifts off;
 * ``held in contact``: every bearing works at the end and the rotor touches through the last stretch (the
   controller cannot lift it);
 * ``sustained forward whirl``, ``sustained backward whirl``: as held in contact, a touchdown plane whirling at the
@@ -27,7 +29,9 @@ from auxbearing.analysis.whirl import BACKWARD
 #: Share of the time after the strike that must end free of contact for the rotor to count as re-levitated
 #: (at least :data:`SETTLED_MIN`).
 SETTLED = 0.2
-SETTLED_MIN = 0.005
+SETTLED_MIN = 0.02
+#: Largest journal excursion in that stretch, as a share of the plane's radial clearance, of a re-levitated rotor.
+HELD_EXCURSION = 0.5
 #: Share of the settled stretch in contact above which the rotor counts as held (else it still bounces).
 HELD = 0.9
 #: A current within this share of its limit counts as saturated.
@@ -84,12 +88,19 @@ def outcome(machine, ds, planes: list[dict]) -> dict:
     first, last = float(contact_times[0]), float(contact_times[-1])
     settled = max(SETTLED * (end - s.time), SETTLED_MIN)
     out.update(first_contact_ms=first * 1e3, last_contact_ms=last * 1e3, relevitated_at_ms=None)
-    share = float(touching[t >= end - settled].mean())
+    window = t >= end - settled
+    share = float(touching[window].mean())
     out["contact_share_at_end"] = share
+    excursion = np.hypot(ds.journal_x.values[window] - ds.ring_x.values[window],
+                         ds.journal_y.values[window] - ds.ring_y.values[window]).max(axis=0)
+    clearance = np.array([p.radial_clearance for p in machine.planes])
+    held = bool(np.all(excursion < HELD_EXCURSION * clearance))
     if not powered:
         out["outcome"] = "on the touchdown bearings"
-    elif last < end - settled:
+    elif last < end - settled and held:
         out.update(outcome="re-levitated", relevitated_at_ms=last * 1e3)
+    elif share == 0.0:
+        out["outcome"] = "not settled: clear of the touchdown bearings but not yet held near the centre"
     elif share < HELD:
         out["outcome"] = "not settled: touching now and then at the end"
     elif any(p.get("whirl") in BACKWARD for p in planes):

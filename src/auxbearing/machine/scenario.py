@@ -27,6 +27,8 @@ from auxbearing.common.params import Param, by_key, read_table
 from auxbearing.machine.stations.load import PARAMS as LOAD_PARAMS
 from auxbearing.machine.stations.load import Load, make_load, text_key
 
+#: A scenario's case in a verification is named this prefix and the scenario's name.
+SCENARIO_CASE = "scenario: "
 FAILURES = ("power_loss", "axis_loss", "sensor_failure")
 #: Overloads with the bearings on, and the kind of :mod:`auxbearing.core.load` each adds.
 OVERLOADS = {"shock": "force", "step_load": "force", "unbalance_step": "unbalance",

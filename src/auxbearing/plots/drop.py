@@ -243,3 +243,35 @@ def plot_sweep(sweep: xr.Dataset, paper: dict | None = None) -> Figure:
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
     return fig
+
+
+def plot_magnetic_bearings(ds: xr.Dataset, summary: dict) -> Figure:
+    """A levitated drop's magnetic bearings: currents against their limits, forces beside the collision forces.
+
+    The scenario's strike is marked.
+    """
+    fig = Figure(figsize=(7, 6), layout="constrained")
+    currents, forces = fig.subplots(2, 1, sharex=True)
+    t_ms = ds.time.values * 1e3
+    for i, name in enumerate(ds["amb"].values):
+        for axis in ("x", "y"):
+            currents.plot(t_ms, ds[f"amb_current_{axis}"].values[:, i], lw=0.7, label=f"{name}, {axis}")
+            if f"amb_force_{axis}" in ds:
+                forces.plot(t_ms, ds[f"amb_force_{axis}"].values[:, i], lw=0.7, label=f"{name}, {axis}")
+    limits = {a["max_current_A"] for a in summary.get("amb", []) if a.get("max_current_A")}
+    for limit in limits:
+        for sign in (1, -1):
+            currents.axhline(sign * limit, color="0.3", ls="--", lw=0.8)
+    for k in range(_n_planes(ds)):
+        forces.plot(t_ms, _plane(ds, k).normal_force.values, lw=0.7, color="k", alpha=0.5 + 0.5 * k / max(
+            _n_planes(ds), 1), label=f"collision force, {_plane_name(ds, k)}")
+    strike = (summary.get("scenario") or {}).get("time_ms")
+    for ax in (currents, forces):
+        if strike:
+            ax.axvline(strike, color="tab:red", ls=":", lw=0.8)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, ncol=2)
+    currents.set_ylabel("Control current [A]" + (" (dashed: limit)" if limits else ""))
+    forces.set_ylabel("Force on the rotor [N]")
+    forces.set_xlabel("Time [ms]" + (" (dotted: the scenario strikes)" if strike else ""))
+    return fig

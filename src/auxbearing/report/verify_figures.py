@@ -10,6 +10,7 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     """Section key -> [(figure, caption)] for :func:`auxbearing.report.verify_html.render`."""
     from auxbearing.analysis.coastdown_life import cycles_of_worst_contact
     from auxbearing.bearings.ratings import ISO76_BALL_STRESS
+    from auxbearing.machine.scenario import SCENARIO_CASE
     from auxbearing.plots import coastdown as pc
     from auxbearing.plots import drop as pd
     from auxbearing.plots.machine import plot_machine
@@ -36,6 +37,11 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
         drops.append((pd.plot_contact_force(ds), f"{case}: journal/race collision force ({summary['verdict']})"))
         drops.append((pd.plot_whirl_timeline(summary), f"{case}: whirl, window by window"))
     out["drops"] = drops
+    out["scenarios"] = [(pd.plot_magnetic_bearings(run.dataset, run.summary), f"{case}: the magnetic bearings' "
+                         f"currents and forces beside the collision forces ({run.summary['scenario']['outcome']})")
+                        for case, run in cases.drops.items()
+                        if case.startswith(SCENARIO_CASE) and "amb" in run.dataset and "outcome" in run.summary.get(
+                            "scenario", {})]
     coast = cases.coastdown
     if coast is not None:
         figs = [(pc.plot_speeds(coast.history), "Spin-down of rotor and races. Grey bands: stretches the reduced "

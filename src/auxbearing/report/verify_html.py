@@ -119,6 +119,16 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     parts.append(_table(["case", "plane", "verdict", "peak force [N]", "peak stress [MPa]", "s0", "axial peak [N]",
                          "whirl at the end", "backward whirl onset [ms]"], main["drop_rows"]))
     parts += [_figure(f, c) for f, c in figures.get("drops", [])]
+    if main.get("scenario_rows"):
+        parts.append("<h2>Evidence: the magnetic bearings' scenarios</h2>")
+        parts.append(_table(["scenario", "kind", "strikes at [ms]", "outcome", "first contact [ms]",
+                             "re-levitated at [ms]", "peak current per axis", "time at the current limit [ms]"],
+                            main["scenario_rows"], "Each scenario starts from the levitated rotor. Outcome: no "
+                            "touchdown; re-levitated (no contact in the last fifth of the run after the strike); not "
+                            "settled (touching now and then at the end: a longer run tells); held in contact or in "
+                            "sustained whirl (the bearings on, the rotor touching through the end); on the touchdown "
+                            "bearings (a bearing without power at the end)."))
+        parts += [_figure(f, c) for f, c in figures.get("scenarios", [])]
     parts.append("<h2>Evidence: the coast-down with heat</h2>")
     parts.append(_table(["plane", "hottest part [°C]", "smallest journal/race clearance [µm]",
                          "smallest internal clearance [µm]", "damage per drop", "drops to failure",

@@ -32,10 +32,9 @@ from auxbearing.machine.judging import (
     verify_settings,
 )
 from auxbearing.machine.model import Machine, machine_from_mapping
+from auxbearing.machine.scenario import SCENARIO_CASE
 
 #: A drop at low speed runs at this fraction of the maximum (ours: the bottom of a typical operating range).
-#: A scenario's case is named this prefix and the scenario's name.
-SCENARIO_CASE = "scenario: "
 LOW_SPEED_FRACTION = 0.25
 #: ``--quick``: the drops last at most this long [s], the coast-down is run for this long [s] and the
 #: campaign has this many samples.

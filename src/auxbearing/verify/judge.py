@@ -6,7 +6,8 @@ import math
 
 from auxbearing.analysis.scenario_outcome import SATURATED
 from auxbearing.analysis.whirl import BACKWARD
-from auxbearing.verify.cases import SCENARIO_CASE, Cases
+from auxbearing.machine.scenario import SCENARIO_CASE
+from auxbearing.verify.cases import Cases
 from auxbearing.verify.criteria import (
     Criterion,
     lower_bound,

@@ -18,7 +18,15 @@ from auxbearing.machine.check import check_candidate_seat
 from auxbearing.machine.files import machine_table
 from auxbearing.machine.judging import candidate_tables, read_criteria, verify_settings
 from auxbearing.machine.model import machine_from_mapping
-from auxbearing.verify.cases import Cases, campaign_size, collect_cases, plan_cases, run_campaign_of, submit_cases
+from auxbearing.machine.scenario import SCENARIO_CASE
+from auxbearing.verify.cases import (
+    Cases,
+    campaign_size,
+    collect_cases,
+    plan_cases,
+    run_campaign_of,
+    submit_cases,
+)
 from auxbearing.verify.convergence import convergence_started
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, worst_margin
 from auxbearing.verify.designs import recommend, recommended_tables
@@ -40,6 +48,24 @@ def _drop_rows(cases: Cases) -> list[list]:
                          _n(p["peak_ball_stress_MPa"], "{:.0f}"), _n(p["s0"], "{:.2f}"), _n(p["peak_axial_force_N"],
                                                                                             "{:.0f}"),
                          p["whirl"], _n(p["backward_whirl_onset_ms"], "{:.0f}")])
+    return rows
+
+
+def _scenario_rows(cases: Cases) -> list[list]:
+    """One row per scenario case: what struck, what came of it, the bearings' currents against their limits."""
+    rows = []
+    for case, run in cases.drops.items():
+        s = run.summary.get("scenario") or {}
+        if not case.startswith(SCENARIO_CASE) or "outcome" not in s:
+            continue
+        worst = max(run.summary.get("amb", []), key=lambda a: a["peak_axis_current_A"] / (a["max_current_A"] or
+                                                                                           math.inf), default=None)
+        peak = "-" if worst is None else f"{worst['peak_axis_current_A']:.2f} A ({worst['name']})" + (
+            f" of {worst['max_current_A']:g} A" if worst["max_current_A"] else "")
+        saturated = sum(b["saturated_ms"] for b in s.get("saturation", []))
+        rows.append([case.removeprefix(SCENARIO_CASE), s["kind"].replace("_", " "), f"{s['time_ms']:.1f}",
+                     s["outcome"], _n(s.get("first_contact_ms"), "{:.1f}"), _n(s.get("relevitated_at_ms"), "{:.1f}"),
+                     peak, f"{saturated:.1f}"])
     return rows
 
 
@@ -105,7 +131,8 @@ def _design(cases: Cases, criteria: dict) -> dict:
     campaign_rows, drivers = _campaign_rows(cases.campaign, cases.spreads)
     return {"criteria": judged, "worst_margin": worst_margin(judged),
             "verdict": overall_verdict(judged),
-            "drop_rows": _drop_rows(cases), "coastdown_rows": _coastdown_rows(cases),
+            "drop_rows": _drop_rows(cases), "scenario_rows": _scenario_rows(cases),
+            "coastdown_rows": _coastdown_rows(cases),
             "coastdown_caption": "; ".join(cases.notes), "campaign_rows": campaign_rows, "drivers": drivers,
             "spread_rows": spread_rows(cases.spreads),
             "cases": cases}
