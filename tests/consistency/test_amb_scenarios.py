@@ -180,3 +180,49 @@ def _with_voltage(voltage: str, inductance: str):
     data["scenario"] = [{"name": "knock", "kind": "shock", "time": "5 ms", "position": "0 mm", "force": "300 N",
                          "duration": "2 ms"}]
     return data, "blower", base
+
+
+def test_a_ride_through_is_the_power_loss_it_delays():
+    delayed = {"name": "dip", "kind": "power_loss", "time": "5 ms", "ride_through": "10 ms", "decay_time": "2 ms"}
+    later = {"name": "dip", "kind": "power_loss", "time": "15 ms", "decay_time": "2 ms"}
+    a = run_machine(_blower(delayed).with_simulation(duration=0.05)).summary
+    b = run_machine(_blower(later).with_simulation(duration=0.05)).summary
+    assert a["steps"] == b["steps"]
+    assert [p["peak_contact_force_N"] for p in a["planes"]] == [p["peak_contact_force_N"] for p in b["planes"]]
+    assert a["scenario"]["ride_through_ms"] == 10.0 and a["scenario"]["time_ms"] == 5.0
+    # the power back before the amplifiers stop: nothing fails
+    back = {**delayed, "restore_time": "8 ms"}
+    assert run_machine(_blower(back).with_simulation(duration=0.05)).summary["scenario"]["outcome"] == "no touchdown"
+
+
+def test_the_bearings_load_capacity_caps_their_force():
+    data, name, base = _with_voltage("1000 V", "1 mH")
+    for amb in data["amb"]:
+        amb.pop("max_voltage")
+        amb.pop("coil_inductance")
+        amb["load_capacity"] = "80 N"
+    run = run_machine(machine_from_mapping(data, name, base).with_scenario("knock").with_simulation(duration=0.012))
+    _audit(run.summary)
+    force = np.hypot(run.dataset.amb_force_x.values, run.dataset.amb_force_y.values)
+    assert np.abs(run.dataset.amb_force_y.values).max() == pytest.approx(80.0, rel=1e-9)
+    assert force.max() <= 80.0 * math.sqrt(2) * (1 + 1e-9)
+
+
+def test_a_pid_with_a_derivative_filter_levitates_on_its_linear_response():
+    data, name, base = _with_voltage("1000 V", "1 mH")
+    for amb in data["amb"]:
+        amb.pop("max_voltage")
+        amb.pop("coil_inductance")
+        amb["derivative_bandwidth"] = "300 Hz"
+    data["rotor"]["axial_force"] = "0 N"
+    data["scenario"] = [HELD]
+    machine = machine_from_mapping(data, name, base).with_scenario("held").with_simulation(duration=0.3)
+    bearing = machine.stations[0]
+    wf = 2 * math.pi * 300
+    assert bearing.transfer(1j * 1000) == pytest.approx(KP + 1e5 / 1000j + KD * 1000j / (1 + 1000j / wf), rel=1e-9)
+    run = run_machine(machine)
+    assert run.summary["planes"][0]["impacts"] == 0
+    x = run.dataset.rotor_x.values[run.dataset.time.values > 0.25]
+    w, m, e = machine.rotor.speed, machine.rotor.mass, machine.rotor.unbalance
+    assert 0.5 * np.ptp(x) == pytest.approx(abs(m * e * w * w / (2 * bearing.dynamic_stiffness(1j * w) - m * w * w)),
+                                            rel=2e-3)

@@ -109,4 +109,6 @@ def outcome(machine, ds, planes: list[dict]) -> dict:
         out["outcome"] = "sustained forward whirl"
     else:
         out["outcome"] = "held in contact"
+    if out["outcome"].startswith(("sustained", "held")) and any(b["saturated_at_end"] for b in saturated):
+        out["outcome"] += ", the controller saturated"
     return out

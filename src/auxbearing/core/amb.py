@@ -7,7 +7,8 @@ Springer, 2009: the linearised force law and decentralised PID control):
   negative (destabilising) stiffness of the bias flux; or, given the magnetic circuit, the force of the pair of
   opposed magnets in differential driving, F = g(t) k [(i_0 + i)^2 / (g_0 - u)^2 - (i_0 - i)^2 / (g_0 + u)^2]
   with k = mu_0 N^2 A cos(alpha) / 4 (Schweitzer & Maslen 2009, Ch. 2; the form ROSS's MagneticBearingElement
-  linearises), whose slopes at the bias are k_i = 4 k i_0 / g_0^2 and k_s = 4 k i_0^2 / g_0^3;
+  linearises), whose slopes at the bias are k_i = 4 k i_0 / g_0^2 and k_s = 4 k i_0^2 / g_0^3; either law
+  clipped at the bearing's load capacity (the iron saturates: no more force for more current);
 * sensor: the displacement at the sensor through a first-order lag of bandwidth w_s, x_m' = w_s (x_s - x_m);
 * controller: i_c = -(k_p x_m + k_int X + k_d x_m'), X' = x_m (a PID whose derivative is the sensor's filtered
   rate); or any proper linear controller given as a state space, z' = A z + B x_m, i_c = -(C z + D x_m) (a
@@ -48,10 +49,10 @@ NAME = "amb"
 FIELDS = ("position", "sensor_position", "current_stiffness", "position_stiffness", "kp", "ki", "kd",
           "sensor_bandwidth", "amplifier_bandwidth", "max_current", "fail_time_x", "fail_time_y", "decay_time",
           "restore_time", "sensor_fail_time_x", "sensor_fail_time_y", "sensor_stuck", "circuit_constant",
-          "bias_current", "air_gap", "order", "states_at", "controller_at", "slew_rate")
+          "bias_current", "air_gap", "order", "states_at", "controller_at", "slew_rate", "load_capacity")
 (P_POS, P_SENSOR, P_KI_FORCE, P_KS, P_KP, P_KI, P_KD, P_WS, P_WA, P_IMAX, P_FAIL_X, P_FAIL_Y, P_DECAY, P_RESTORE,
  P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK, P_CIRCUIT, P_BIAS, P_GAP, P_ORDER, P_STATES_AT,
- P_CONTROLLER_AT, P_SLEW) = range(len(FIELDS))
+ P_CONTROLLER_AT, P_SLEW, P_FMAX) = range(len(FIELDS))
 #: Smallest gap the circuit law divides by, as a share of the nominal gap (the touchdown clearance keeps the rotor
 #: far from the poles; this only keeps a run that leaves its range finite).
 MIN_GAP = 1e-3
@@ -127,11 +128,14 @@ def magnet_force(row, current, u):
     """The magnets' force on the rotor along one axis at full strength [N]: linearised, or the circuit's."""
     k = row[P_CIRCUIT]
     if k <= 0.0:
-        return row[P_KI_FORCE] * current + row[P_KS] * u
-    i0, g0 = row[P_BIAS], row[P_GAP]
-    near = max(g0 - u, MIN_GAP * g0)
-    far = max(g0 + u, MIN_GAP * g0)
-    return k * ((i0 + current) ** 2 / (near * near) - (i0 - current) ** 2 / (far * far))
+        force = row[P_KI_FORCE] * current + row[P_KS] * u
+    else:
+        i0, g0 = row[P_BIAS], row[P_GAP]
+        near = max(g0 - u, MIN_GAP * g0)
+        far = max(g0 + u, MIN_GAP * g0)
+        force = k * ((i0 + current) ** 2 / (near * near) - (i0 - current) ** 2 / (far * far))
+    capacity = row[P_FMAX]
+    return min(max(force, -capacity), capacity)
 
 
 @njit(cache=True)

@@ -36,8 +36,8 @@ OVERLOADS = {"shock": "force", "step_load": "force", "unbalance_step": "unbalanc
 KINDS = (*FAILURES, *OVERLOADS)
 #: Keys of each kind beside ``name``, ``kind``, ``time`` and ``relevitate_within``.
 KIND_KEYS = {
-    "power_loss": ("decay_time", "restore_time"),
-    "axis_loss": ("bearing", "axis", "decay_time", "restore_time"),
+    "power_loss": ("decay_time", "ride_through", "restore_time"),
+    "axis_loss": ("bearing", "axis", "decay_time", "ride_through", "restore_time"),
     "sensor_failure": ("bearing", "axis", "mode"),
     "shock": ("position", "force", "direction", "duration", "shape"),
     "step_load": ("position", "force", "direction", "duration", "shape"),
@@ -49,6 +49,9 @@ PARAMS: tuple[Param, ...] = (
           "ours"),
     Param("scenario", "decay_time", "time", 0.0, "ms", "nonnegative",
           "power_loss, axis_loss: time constant of the coils' discharge (0: the forces vanish at once)", "ours"),
+    Param("scenario", "ride_through", "time", 0.0, "ms", "nonnegative",
+          "power_loss, axis_loss: the amplifiers go on this long after the supply is lost (their DC link, a UPS)",
+          "ours: none"),
     Param("scenario", "restore_time", "time", None, "ms", "optional_positive",
           "power_loss, axis_loss: the power comes back this long after the strike (a re-levitation attempt)",
           "ours: never"),
@@ -70,6 +73,7 @@ class Scenario:
     kind: str = "power_loss"
     time: float = 0.0
     decay_time: float = 0.0
+    ride_through: float = 0.0
     restore_time: float | None = None
     relevitate_within: float | None = None
     bearing: str | None = None  #: axis_loss, sensor_failure: the bearing's name
@@ -91,13 +95,16 @@ class Scenario:
         """(fail x, fail y, restore, sensor fail x, sensor fail y, stuck) for the AMB rows of ``bearing`` [s]."""
         never = math.inf
         restore = self.time + self.restore_time if self.restore_time is not None else never
+        fail = self.time + self.ride_through
+        if fail >= restore:  # the power is back before the amplifiers stop
+            fail = never
         stuck = 1.0 if self.mode == "stuck" else 0.0
         mine = self.bearing is None or self.bearing == bearing
         if self.kind == "power_loss":
-            return self.time, self.time, restore, never, never, stuck
+            return fail, fail, restore, never, never, stuck
         if self.kind == "axis_loss" and mine:
-            return (self.time if self.axis in ("x", "both") else never,
-                    self.time if self.axis in ("y", "both") else never, restore, never, never, stuck)
+            return (fail if self.axis in ("x", "both") else never,
+                    fail if self.axis in ("y", "both") else never, restore, never, never, stuck)
         if self.kind == "sensor_failure" and mine:
             return (never, never, never, self.time if self.axis in ("x", "both") else never,
                     self.time if self.axis in ("y", "both") else never, stuck)
@@ -114,6 +121,7 @@ class Scenario:
         out = {"name": self.name, "kind": self.kind, "time_ms": self.time * 1e3}
         if not self.bearings_stay_on:
             out["decay_time_ms"] = self.decay_time * 1e3
+            out["ride_through_ms"] = self.ride_through * 1e3
             out["restore_after_ms"] = None if self.restore_time is None else self.restore_time * 1e3
         if self.kind in ("axis_loss", "sensor_failure"):
             out.update(bearing=self.bearing, axis=self.axis)
@@ -136,7 +144,7 @@ def breakpoints(machine) -> tuple[float, ...]:
     from auxbearing.machine.stations import of_kind
 
     s = machine.active_scenario()
-    times = {s.time, s.time + (s.restore_time or 0.0)}
+    times = {t for b in of_kind(machine.stations, "amb") for t in s.failure_times(b.name)[:5]}
     loads = (*of_kind(machine.stations, "load"), *((s.load,) if s.load is not None else ()))
     for load in loads:
         times.update((load.start, load.start + load.duration))

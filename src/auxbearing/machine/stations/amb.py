@@ -52,6 +52,11 @@ PARAMS: tuple[Param, ...] = (
           "Current bandwidth of the amplifier (first order)", "ours: a typical switching amplifier's 1-3 kHz"),
     Param(KIND, "max_current", "current", math.inf, "A", "positive", "Largest control current the amplifier gives",
           "ours: none unless given"),
+    Param(KIND, "load_capacity", "force", math.inf, "N", "positive", "Largest force the bearing gives along each "
+          "axis (its iron saturates)", "the bearing's data; none unless given"),
+    Param(KIND, "derivative_bandwidth", "frequency", None, "Hz", "optional_positive", "The PID's derivative "
+          "filter: kd s / (1 + s / (2 pi f)) on the reading (without it the derivative is the sensor's rate)",
+          "the controller's data"),
     Param(KIND, "max_voltage", "voltage", math.inf, "V", "positive", "The amplifier's supply voltage: with "
           "coil_inductance it limits the current's rate to max_voltage / coil_inductance (slew)",
           "ours: none unless given"),
@@ -78,6 +83,8 @@ class MagneticBearing:
     max_current: float = math.inf
     max_voltage: float = math.inf
     coil_inductance: float | None = None
+    load_capacity: float = math.inf
+    derivative_bandwidth: float | None = None
     turns: float | None = None  #: the magnetic circuit (all four given, or none: the linearised law)
     pole_area: float | None = None
     air_gap: float | None = None
@@ -141,7 +148,7 @@ class MagneticBearing:
                 self.kd, 2 * math.pi * self.sensor_bandwidth, 2 * math.pi * self.amplifier_bandwidth,
                 self.current_limit(), fail_x, fail_y, decay, restore, sensor_x, sensor_y, stuck,
                 self.circuit_constant(), self.bias_current or 0.0, self.air_gap or 0.0, self.order, states_at,
-                controller_at, self.slew_rate())
+                controller_at, self.slew_rate(), self.load_capacity)
 
     def slew_rate(self) -> float:
         """The largest rate of the coil current, U_max / L [A/s] (inf without a voltage limit)."""
@@ -214,6 +221,11 @@ def read(tables) -> tuple[MagneticBearing, ...]:
         elif "pole_angle" in values:
             raise InputError.for_field(where + "pole_angle", table.get("pole_angle"), "belongs to the magnetic "
                                        f"circuit ({', '.join(CIRCUIT)})")
+        if "derivative_bandwidth" in values:
+            if controller is not None:
+                raise InputError.for_field(where + "derivative_bandwidth", table.get("derivative_bandwidth"),
+                                           "filters the PID's derivative; put the filter into the controller")
+            values["controller"] = _filtered_pid(values, where)
         if "max_voltage" in values and "coil_inductance" not in values:
             raise InputError(f"{where}coil_inductance: missing; max_voltage limits the current's rate through it")
         bearing = MagneticBearing(name=name, **values)
@@ -223,6 +235,18 @@ def read(tables) -> tuple[MagneticBearing, ...]:
                                        f"({bearing.position_stiffness:g} N/m)")
         out.append(bearing)
     return tuple(out)
+
+
+def _filtered_pid(values: dict, where: str) -> tuple:
+    """The PID kp + ki / s + kd s / (1 + s / w_f) as a state-space controller (python-control realises it)."""
+    import control
+
+    s = control.tf("s")
+    wf = 2 * math.pi * values["derivative_bandwidth"]
+    pid = values["kp"] + values.get("kd", 0.0) * s / (1 + s / wf)
+    if values.get("ki", 0.0) > 0.0:
+        pid = pid + values["ki"] / s
+    return read_controller(control.minreal(pid, verbose=False), where + "derivative_bandwidth")
 
 
 #: Most controller states per axis (a controller of higher order is refused: reduce it first).
