@@ -226,3 +226,59 @@ def test_a_pid_with_a_derivative_filter_levitates_on_its_linear_response():
     w, m, e = machine.rotor.speed, machine.rotor.mass, machine.rotor.unbalance
     assert 0.5 * np.ptp(x) == pytest.approx(abs(m * e * w * w / (2 * bearing.dynamic_stiffness(1j * w) - m * w * w)),
                                             rel=2e-3)
+
+
+def test_the_thrust_bearing_carries_the_process_thrust_until_the_power_fails():
+    run = run_machine(_blower({"name": "off", "kind": "power_loss", "time": "10 ms"}).with_simulation(duration=0.04))
+    s = run.summary
+    _audit(s)
+    thrust = next(a for a in s["amb"] if a["axis"] == "axial")
+    # integral action: held at its place, its current balancing the 100 N thrust, i = -F / k_i
+    assert thrust["levitated_offset_um"] == pytest.approx(0.0, abs=1e-3)
+    assert run.dataset.amb_current_z.values[0, 2] == pytest.approx(-100.0 / 150.0, rel=1e-9)
+    assert np.isnan(run.dataset.amb_current_x.values[:, 2]).all()  # an axis it has not
+    assert abs(run.dataset.rotor_z.values[run.dataset.time.values < 0.01]).max() < 1e-9
+    assert s["planes"][0]["peak_axial_force_N"] > 100.0  # then the thrust drives the collar onto the race
+
+
+def test_a_pd_thrust_bearing_gives_way_by_the_thrust_over_its_stiffness():
+    data, name, base = _with_voltage("1000 V", "1 mH")
+    for amb in data["amb"]:
+        amb.pop("max_voltage")
+        amb.pop("coil_inductance")
+    data["amb"][2].pop("ki")
+    data["scenario"] = [HELD]
+    machine = machine_from_mapping(data, name, base).with_scenario("held")
+    run = run_machine(machine.with_simulation(duration=0.01))
+    # F = 100 N against k_i k_p - k_s = 150 * 6000 - 3e5 = 6e5 N/m: 166.7 um, within the 200 um collar clearance
+    assert run.dataset.rotor_z.values[0] == pytest.approx(100.0 / 6e5, rel=1e-9)
+    assert run.summary["planes"][0]["peak_axial_force_N"] == 0.0
+
+
+@pytest.mark.parametrize(("change", "expected"), [
+    ({"sensor_position": "10 mm"}, "amb.2.sensor_position = '10 mm': an axial bearing reads the rotor's axial"),
+    ({"axis": "diagonal"}, "amb.2.axis = 'diagonal': must be one of radial, axial"),
+])
+def test_a_bad_thrust_bearing_names_the_key(change, expected):
+    data, name, base = _with_voltage("1000 V", "1 mH")
+    data["amb"][2].update(change)
+    with pytest.raises(InputError) as err:
+        machine_from_mapping(data, name, base)
+    assert str(err.value).startswith(expected), str(err.value)
+
+
+def test_a_thrust_bearing_needs_a_rotor_that_moves_axially():
+    data, name, base = _with_voltage("1000 V", "1 mH")
+    data["touchdown"][0].pop("axial_clearance")
+    with pytest.raises(InputError, match=r"^amb.2.axis = 'axial': needs a rotor that moves axially"):
+        machine_from_mapping(data, name, base)
+
+
+def test_a_thrust_bearing_loses_its_z_axis_only():
+    loss = {"name": "z", "kind": "axis_loss", "bearing": "thrust AMB", "time": "5 ms"}
+    run = run_machine(_blower(loss).with_simulation(duration=0.03))
+    assert run.summary["scenario"]["axis"] == "z"
+    assert run.summary["planes"][0]["peak_axial_force_N"] > 100.0
+    assert run.summary["planes"][0]["impacts"] == 0  # the radial bearings hold on
+    with pytest.raises(InputError, match=r"^scenario.0.axis = 'x': must be one of z"):
+        _blower({**loss, "axis": "x"})

@@ -334,7 +334,7 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
         def states(i, k=k):
             at, width = layout.station_spans[k][i]
             return grid[:, at:at + width]
-        data.update(kind.series(of_kind(machine.stations, kind.KIND), axis, states, params, t))
+        data.update(kind.series(of_kind(machine.stations, kind.KIND), axis, states, params, t, grid[:, cm.Z]))
     # per-ball states where they fit the memory cap; their largest stress is the plane's, so the
     # diagnostics need to evaluate the ball stresses only for planes without them
     states = {}
@@ -523,17 +523,18 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
     held = levitated_state(machine, machine.rotor.modal(), bearings)
     out = []
     for i, b in enumerate(bearings):
-        block = spans[i][0]
-        ix, iy = grid[:, block + 1 + b.order], grid[:, block + 3 + 2 * b.order]
-        currents = np.hypot(ix, iy)
-        axis_peak = float(max(np.abs(ix).max(), np.abs(iy).max())) if len(ix) else 0.0
-        levitated = held["states"][i]
-        out.append({"name": b.name, "levitated_offset_um": held["offsets"][i] * 1e6,
-                    "levitated_current_A": float(np.hypot(levitated[1 + b.order], levitated[3 + 2 * b.order])),
+        block, axes = spans[i][0], (1 if b.axial else 2)
+        columns = [block + k * (2 + b.order) + 1 + b.order for k in range(axes)]
+        currents = np.sqrt((grid[:, columns] ** 2).sum(axis=1))
+        axis_peak = float(np.abs(grid[:, columns]).max()) if len(grid) else 0.0
+        levitated = np.asarray(held["states"][i])[[c - block for c in columns]]
+        out.append({"name": b.name, "axis": "axial" if b.axial else "radial",
+                    "levitated_offset_um": held["offsets"][i] * 1e6,
+                    "levitated_current_A": float(np.sqrt((levitated ** 2).sum())),
                     "peak_current_A": float(currents.max()) if len(currents) else 0.0,
                     "peak_axis_current_A": axis_peak,
                     "max_current_A": b.current_limit() if math.isfinite(b.current_limit()) else None,
-                    "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()})
+                    "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness() if b.controller is None else None})
     return out
 
 

@@ -69,15 +69,18 @@ def outcome(machine, ds, planes: list[dict]) -> dict:
     end = float(t[-1])
     bearings = of_kind(machine.stations, "amb")
     powered = all(math.isinf(v) or (s.restore_time is not None and end >= s.time + s.restore_time)
-                  for b in bearings for v in s.failure_times(b.name)[:2])
+                  for b in bearings for v in s.failure_times(b)[:2 - b.axial])
     saturated = []
     for i, b in enumerate(bearings):
         if "amb_current_x" not in ds:
             break
-        time_x, spans_x = saturation(t, ds.amb_current_x.values[:, i], b.current_limit())
-        time_y, spans_y = saturation(t, ds.amb_current_y.values[:, i], b.current_limit())
-        spans = sorted(spans_x + spans_y)
-        saturated.append({"name": b.name, "saturated_ms": (time_x + time_y) * 1e3,
+        total, spans = 0.0, []
+        for axis in ("x", "y", "z"):
+            if f"amb_current_{axis}" in ds:
+                time, own = saturation(t, ds[f"amb_current_{axis}"].values[:, i], b.current_limit())
+                total, spans = total + time, spans + own
+        spans.sort()
+        saturated.append({"name": b.name, "saturated_ms": total * 1e3,
                           "saturated_at_end": bool(spans and spans[-1][1] >= end),
                           "first_intervals_ms": [[a * 1e3, c * 1e3] for a, c in spans[:5]]})
     out["saturation"] = saturated

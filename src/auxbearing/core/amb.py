@@ -26,6 +26,8 @@ Failures, each axis on its own (a radial bearing has one amplifier per axis):
 * power back at t_r > t_f (a re-levitation attempt): the controller goes on from its frozen states (it kept
   its own supply) and the force recovers as g = 1 - (1 - g(t_r)) exp(-(t - t_r) / tau), the coils charging
   with the same time constant;
+* an axial bearing has one axis, along the spin axis: the rotor's axial position is its u and its reading, its
+  force acts at the mass centre's axial line and its failure times are the row's x ones;
 * the sensor failing at t_s: stuck (the reading holds its value, x_m' = 0) or zero (x_s read as 0, the lag
   decaying to it); the controller goes on acting on the false reading.
 
@@ -49,10 +51,10 @@ NAME = "amb"
 FIELDS = ("position", "sensor_position", "current_stiffness", "position_stiffness", "kp", "ki", "kd",
           "sensor_bandwidth", "amplifier_bandwidth", "max_current", "fail_time_x", "fail_time_y", "decay_time",
           "restore_time", "sensor_fail_time_x", "sensor_fail_time_y", "sensor_stuck", "circuit_constant",
-          "bias_current", "air_gap", "order", "states_at", "controller_at", "slew_rate", "load_capacity")
+          "bias_current", "air_gap", "order", "states_at", "controller_at", "slew_rate", "load_capacity", "axial")
 (P_POS, P_SENSOR, P_KI_FORCE, P_KS, P_KP, P_KI, P_KD, P_WS, P_WA, P_IMAX, P_FAIL_X, P_FAIL_Y, P_DECAY, P_RESTORE,
  P_SENSOR_FAIL_X, P_SENSOR_FAIL_Y, P_STUCK, P_CIRCUIT, P_BIAS, P_GAP, P_ORDER, P_STATES_AT,
- P_CONTROLLER_AT, P_SLEW, P_FMAX) = range(len(FIELDS))
+ P_CONTROLLER_AT, P_SLEW, P_FMAX, P_AXIAL) = range(len(FIELDS))
 #: Smallest gap the circuit law divides by, as a share of the nominal gap (the touchdown clearance keeps the rotor
 #: far from the poles; this only keeps a run that leaves its range finite).
 MIN_GAP = 1e-3
@@ -62,17 +64,18 @@ S_MEASURED, S_INTEGRAL, S_CURRENT = range(3)
 LEDGER = ("amb_work_taken",)
 
 
-def width(order: int) -> int:
-    """States of one station whose controller has ``order`` states per axis."""
-    return 2 * (2 + order)
+def width(order: int, axial: bool = False) -> int:
+    """States of one station whose controller has ``order`` states per axis (an axial bearing has one axis)."""
+    return (1 if axial else 2) * (2 + order)
 
 
-def state_names(order: int, pid: bool) -> tuple[str, ...]:
-    """The state names of one station (:data:`STATES` for a PID)."""
-    if pid:
+def state_names(order: int, pid: bool, axial: bool = False) -> tuple[str, ...]:
+    """The state names of one station (:data:`STATES` for a radial bearing's PID)."""
+    if pid and not axial:
         return STATES
-    return tuple(name for axis in "xy" for name in (f"amb_measured_{axis}",
-                 *(f"amb_controller_{axis}{j}" for j in range(order)), f"amb_current_{axis}"))
+    inner = ("integral",) if pid else tuple(f"controller{j}" for j in range(order))
+    return tuple(f"amb_{name}_{axis}" for axis in ("z" if axial else "xy")
+                 for name in ("measured", *inner, "current"))
 
 
 class Params(NamedTuple):
@@ -90,7 +93,7 @@ class Params(NamedTuple):
     @property
     def state_count(self) -> int:
         """States of all the stations."""
-        return int(sum(width(int(order)) for order in self.values[:, P_ORDER]))
+        return int(sum(width(int(row[P_ORDER]), row[P_AXIAL] > 0.0) for row in self.values))
 
 
 def no_stations(n_modes: int = 0) -> Params:

@@ -188,7 +188,8 @@ def layout_of(m) -> Layout:
     """The state layout of a packed :class:`Machine`."""
     e = m.extra_at
     rows = m.extra[e[E_AMB]:e[E_AMB_SX]].reshape(e[E_NAMB], len(amb.FIELDS))
-    bearings = tuple(amb.state_names(int(row[amb.P_ORDER]), row[amb.P_CONTROLLER_AT] < 0) for row in rows)
+    bearings = tuple(amb.state_names(int(row[amb.P_ORDER]), row[amb.P_CONTROLLER_AT] < 0, row[amb.P_AXIAL] > 0.0)
+                     for row in rows)
     return layout(len(m.planes.active), e[E_NM], (e[E_NSUP], e[E_NAMB], e[E_NLOAD]), ((), bearings, ()))
 
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
@@ -491,11 +492,16 @@ def _stations(t, y, m, kin, q, out):
     width = len(amb.FIELDS)
     for i in range(e[E_NAMB]):
         row = m.extra[e[E_AMB] + i * width:e[E_AMB] + (i + 1) * width]
+        b = states + int(row[amb.P_STATES_AT])
+        controllers = m.extra[e[E_AMB_CTRL]:e[E_LOAD]]
+        if row[amb.P_AXIAL] > 0.0:
+            fz = amb.axis(row, t, row[amb.P_FAIL_X], row[amb.P_SENSOR_FAIL_X], y[Z], y[Z], y, out, b, controllers)
+            _apply_rotor(q, kin, row[amb.P_POS], 0.0, 0.0, 0.0, 0.0, fz)
+            out[at + i] = -fz * y[VZ]
+            continue
         ox, oy = e[E_AMB_SX] + i * nm, e[E_AMB_SY] + i * nm
         jx, jy, vx, vy = station_point(y, m, row[amb.P_POS], ox, oy)
         sx, sy, _, _ = station_point(y, m, row[amb.P_SENSOR], e[E_AMB_SSX] + i * nm, e[E_AMB_SSY] + i * nm)
-        b = states + int(row[amb.P_STATES_AT])
-        controllers = m.extra[e[E_AMB_CTRL]:e[E_LOAD]]
         fx = amb.axis(row, t, row[amb.P_FAIL_X], row[amb.P_SENSOR_FAIL_X], jx, sx, y, out, b, controllers)
         fy = amb.axis(row, t, row[amb.P_FAIL_Y], row[amb.P_SENSOR_FAIL_Y], jy, sy, y, out,
                       b + 2 + int(row[amb.P_ORDER]), controllers)

@@ -54,6 +54,10 @@ def check_combinations(data: dict, machine) -> None:
         if plane.mount is not None:
             _check_mount(table, plane, k)
     _check_coastdown(data, machine)
+    for i, bearing in enumerate(getattr(machine, "stations", ())):
+        if getattr(bearing, "axial", False) and not machine.axial_free:
+            raise InputError.for_field(f"amb.{i}.axis", "axial", "needs a rotor that moves axially: give a "
+                                       "[[touchdown]] plane an axial_clearance (the collar that catches it)")
 
 
 def _check_requires(table: dict, keys: tuple[str, ...], anchor: str, k: int, why: str) -> None:

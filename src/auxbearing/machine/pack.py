@@ -154,6 +154,7 @@ def _levitate(machine: Machine, modal, layout: cm.Layout, y0: np.ndarray) -> Non
     # rotor.start_x / start_y move the rotor from its levitated place (a disturbance to start from)
     r = machine.rotor
     y0[cm.X], y0[cm.Y], y0[cm.TX], y0[cm.TY] = q[0] + r.start_x, q[1] + r.start_y, q[2], q[3]
+    y0[cm.Z] = held["z"]  # an axial bearing holds the thrust
     y0[layout.modes_at:layout.modes_at + layout.modes] = q[4:]
     spans = layout.station_spans[cm.STATION_KINDS.index(cm.amb)]
     for (at, width), states in zip(spans, held["states"], strict=True):
@@ -170,7 +171,7 @@ def _amb_tolerances(machine: Machine, layout: cm.Layout, atol: np.ndarray, lengt
     weight = max(machine.rotor.mass * machine.simulation.gravity, 1.0)
     for (block, _), b in zip(spans, of_kind(machine.stations, amb.KIND), strict=True):
         current = machine.simulation.atol * weight / b.current_stiffness
-        for axis in (block, block + 2 + b.order):
+        for axis in ((block,) if b.axial else (block, block + 2 + b.order)):
             atol[axis] = length
             if b.controller is None:
                 atol[axis + 1] = length * 1e-2

@@ -91,22 +91,26 @@ class Scenario:
         """Whether every magnetic bearing keeps working through the scenario (overloads, a sensor failure)."""
         return self.kind not in ("power_loss", "axis_loss")
 
-    def failure_times(self, bearing: str) -> tuple[float, float, float, float, float, float]:
-        """(fail x, fail y, restore, sensor fail x, sensor fail y, stuck) for the AMB rows of ``bearing`` [s]."""
+    def failure_times(self, bearing) -> tuple[float, float, float, float, float, float]:
+        """(fail x, fail y, restore, sensor fail x, sensor fail y, stuck) for the AMB row of ``bearing`` [s].
+
+        An axial bearing's one axis takes the x slots (the kernel's convention) and answers to ``axis = "z"``.
+        """
         never = math.inf
         restore = self.time + self.restore_time if self.restore_time is not None else never
         fail = self.time + self.ride_through
         if fail >= restore:  # the power is back before the amplifiers stop
             fail = never
         stuck = 1.0 if self.mode == "stuck" else 0.0
-        mine = self.bearing is None or self.bearing == bearing
+        mine = self.bearing is None or self.bearing == bearing.name
+        first = ("z", "both") if bearing.axial else ("x", "both")
         if self.kind == "power_loss":
             return fail, fail, restore, never, never, stuck
         if self.kind == "axis_loss" and mine:
-            return (fail if self.axis in ("x", "both") else never,
+            return (fail if self.axis in first else never,
                     fail if self.axis in ("y", "both") else never, restore, never, never, stuck)
         if self.kind == "sensor_failure" and mine:
-            return (never, never, never, self.time if self.axis in ("x", "both") else never,
+            return (never, never, never, self.time if self.axis in first else never,
                     self.time if self.axis in ("y", "both") else never, stuck)
         return never, never, never, never, never, stuck
 
@@ -144,7 +148,7 @@ def breakpoints(machine) -> tuple[float, ...]:
     from auxbearing.machine.stations import of_kind
 
     s = machine.active_scenario()
-    times = {t for b in of_kind(machine.stations, "amb") for t in s.failure_times(b.name)[:5]}
+    times = {t for b in of_kind(machine.stations, "amb") for t in s.failure_times(b)[:5]}
     loads = (*of_kind(machine.stations, "load"), *((s.load,) if s.load is not None else ()))
     for load in loads:
         times.update((load.start, load.start + load.duration))
@@ -184,9 +188,10 @@ def read_scenarios(tables, bearings: tuple = ()) -> tuple[Scenario, ...]:
             if bearing not in names:
                 raise InputError.for_field(where + "bearing", bearing, f"name one of the [[amb]] tables: "
                                            f"{', '.join(names)}")
-            axes = ("x", "y") if kind == "axis_loss" else ("x", "y", "both")
-            text.update(bearing=bearing, axis=text_key(table, "axis", where, axes, "both" if kind != "axis_loss"
-                                                       else None))
+            axial = next(b.axial for b in bearings if b.name == bearing)
+            axes = ("z",) if axial else ("x", "y") if kind == "axis_loss" else ("x", "y", "both")
+            default = "z" if axial else None if kind == "axis_loss" else "both"
+            text.update(bearing=bearing, axis=text_key(table, "axis", where, axes, default))
             if kind == "sensor_failure":
                 text["mode"] = text_key(table, "mode", where, ("stuck", "zero"), "zero")
         own = {k: table.pop(k) for k in list(table) if k in TABLE}

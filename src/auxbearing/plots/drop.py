@@ -254,7 +254,9 @@ def plot_magnetic_bearings(ds: xr.Dataset, summary: dict) -> Figure:
     currents, forces = fig.subplots(2, 1, sharex=True)
     t_ms = ds.time.values * 1e3
     for i, name in enumerate(ds["amb"].values):
-        for axis in ("x", "y"):
+        for axis in ("x", "y", "z"):
+            if f"amb_current_{axis}" not in ds or np.isnan(ds[f"amb_current_{axis}"].values[:, i]).all():
+                continue  # an axis this bearing has not
             currents.plot(t_ms, ds[f"amb_current_{axis}"].values[:, i], lw=0.7, label=f"{name}, {axis}")
             if f"amb_force_{axis}" in ds:
                 forces.plot(t_ms, ds[f"amb_force_{axis}"].values[:, i], lw=0.7, label=f"{name}, {axis}")

@@ -104,7 +104,9 @@ _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file o
                            "| `mode` | - | `zero` | sensor_failure: `stuck` (holds its reading) or `zero` | ours |",
                            "| `shape` | - | `half_sine` (shock, base_acceleration), `step` | The load's time "
                            "profile | ours |"],
-              "amb": ["| `controller` | - | none (the PID of `kp`, `ki`, `kd`) | The controller from the sensor's "
+              "amb": ["| `axis` | - | `radial` | `radial` (x and y at `position`) or `axial` (a thrust bearing on the "
+                      "rotor's axial position; the machine needs a plane with `axial_clearance`) | ours |",
+                      "| `controller` | - | none (the PID of `kp`, `ki`, `kd`) | The controller from the sensor's "
                       "reading to the current, `i = -C(s) x`, in SI (A per m): `{ num = [...], den = [...] }` "
                       "(coefficients in descending powers of s; proper: a derivative needs its filter) or "
                       "`{ A = [[...]], B = [[...]], C = [[...]], D = [[...]] }`; from Python also a python-control "

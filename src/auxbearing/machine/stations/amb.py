@@ -15,6 +15,7 @@ import numpy as np
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import Param, by_key
 from auxbearing.core import amb as kernel
+from auxbearing.machine.stations.load import text_key
 
 KIND = kernel.NAME
 #: Permeability of free space [H/m].
@@ -93,6 +94,8 @@ class MagneticBearing:
     #: a state-space controller (A, B, C, D) as nested tuples, from the reading [m] to the current i = -(C z + D x)
     #: [A]; None: the PID of kp, ki, kd
     controller: tuple | None = None
+    #: an axial (thrust) bearing: one axis along the spin axis, on the rotor's axial position
+    axial: bool = False
     KIND = KIND
 
     @property
@@ -148,7 +151,7 @@ class MagneticBearing:
                 self.kd, 2 * math.pi * self.sensor_bandwidth, 2 * math.pi * self.amplifier_bandwidth,
                 self.current_limit(), fail_x, fail_y, decay, restore, sensor_x, sensor_y, stuck,
                 self.circuit_constant(), self.bias_current or 0.0, self.air_gap or 0.0, self.order, states_at,
-                controller_at, self.slew_rate(), self.load_capacity)
+                controller_at, self.slew_rate(), self.load_capacity, float(self.axial))
 
     def slew_rate(self) -> float:
         """The largest rate of the coil current, U_max / L [A/s] (inf without a voltage limit)."""
@@ -186,14 +189,20 @@ def read(tables) -> tuple[MagneticBearing, ...]:
     from auxbearing.machine.stations import read_tables
 
     out = []
-    controllers = []
-    if isinstance(tables, list):  # a controller is no number with a unit: taken out before the tables are read
+    controllers, axes = [], []
+    if isinstance(tables, list):  # a controller and the axis are no numbers with units: taken out first
         tables = [dict(t) if isinstance(t, dict) else t for t in tables]
         for i, t in enumerate(tables):
             controllers.append(read_controller(t.pop("controller"), f"{KIND}.{i}.controller")
                                if isinstance(t, dict) and "controller" in t else None)
-    for (where, name, values, table), controller in zip(read_tables(tables, KIND, TABLE, ("position",), "AMB"),
-                                                        controllers, strict=True):
+            axes.append(text_key(t, "axis", f"{KIND}.{i}.", ("radial", "axial"), "radial")
+                        if isinstance(t, dict) else "radial")
+    for (where, name, values, table), controller, axis in zip(read_tables(tables, KIND, TABLE, ("position",), "AMB"),
+                                                              controllers, axes, strict=True):
+        values["axial"] = axis == "axial"
+        if values["axial"] and "sensor_position" in values:
+            raise InputError.for_field(where + "sensor_position", table.get("sensor_position"), "an axial bearing "
+                                       "reads the rotor's axial position: it has no sensor plane")
         if controller is not None:
             for key in ("kp", "ki", "kd"):
                 if key in values:
@@ -303,9 +312,9 @@ def pack(bearings, modal, n_modes: int, machine=None) -> kernel.Params:
     rows, flat, states_at = [], [], 0
     for b in bearings:
         at = sum(part.size for part in flat) if b.controller is not None else -1
-        rows.append(b._row(scenario.failure_times(b.name), scenario.decay_time, states_at, at))
+        rows.append(b._row(scenario.failure_times(b), scenario.decay_time, states_at, at))
         flat.append(b.flat_controller())
-        states_at += kernel.width(b.order)
+        states_at += kernel.width(b.order, b.axial)
     values = np.array(rows, float).reshape(len(bearings), len(kernel.FIELDS))
     shapes = [np.zeros((len(bearings), n_modes)) for _ in range(4)]
     if n_modes:
@@ -316,36 +325,51 @@ def pack(bearings, modal, n_modes: int, machine=None) -> kernel.Params:
     return kernel.Params(values, *shapes, controllers)
 
 
-def series(bearings, journal, states, params=None, t=None) -> dict:
+def series(bearings, journal, states, params=None, t=None, rotor_z=None) -> dict:
     """Each bearing's coil currents over a run and, with its packed rows and the times, its force on the rotor.
 
     ``states(i)``: its states on the run's grid (kernel order); ``journal(i, position)``: the rotor axis at its
-    actuator; ``params``: the packed :class:`auxbearing.core.amb.Params` (the scenario's failure times).
+    actuator; ``params``: the packed :class:`auxbearing.core.amb.Params` (the scenario's failure times);
+    ``rotor_z``: the rotor's axial position (an axial bearing's). A radial bearing's series are x and y, an axial
+    one's z; the axes a bearing has not are NaN.
     """
     if not bearings:
         return {}
-    x = np.stack([states(i)[:, 1 + b.order] for i, b in enumerate(bearings)], axis=1)
-    y = np.stack([states(i)[:, 3 + 2 * b.order] for i, b in enumerate(bearings)], axis=1)
-    out = {"amb_current_x": (("time", "amb"), x, {"units": "A", "long_name": "Magnetic bearing's control current, x"}),
-           "amb_current_y": (("time", "amb"), y, {"units": "A", "long_name": "Magnetic bearing's control current, y"}),
-           "amb": ("amb", [b.name for b in bearings], {})}
-    if params is None or t is None:
-        return out
-    fx, fy = np.zeros_like(x), np.zeros_like(y)
+    n = len(states(0))
+    axes = ("x", "y", "z") if any(b.axial for b in bearings) else ("x", "y")
+    currents = {a: np.full((n, len(bearings)), np.nan) for a in axes}
+    forces = {a: np.full((n, len(bearings)), np.nan) for a in axes}
     for i, b in enumerate(bearings):
+        own = ("z",) if b.axial else ("x", "y")
+        for k, a in enumerate(own):
+            currents[a][:, i] = states(i)[:, k * (2 + b.order) + 1 + b.order]
+        if params is None or t is None:
+            continue
         row = params.values[i]
-        ux, uy, _, _ = journal(i, b.position)
-        for force, current, u, fail in ((fx, x, ux, kernel.P_FAIL_X), (fy, y, uy, kernel.P_FAIL_Y)):
-            force[:, i] = kernel.forces(row, np.ascontiguousarray(t, float), row[fail],
-                                        np.ascontiguousarray(current[:, i]), np.ascontiguousarray(u, float))
-    out["amb_force_x"] = (("time", "amb"), fx, {"units": "N", "long_name": "Magnetic bearing's force on the rotor, x"})
-    out["amb_force_y"] = (("time", "amb"), fy, {"units": "N", "long_name": "Magnetic bearing's force on the rotor, y"})
+        if b.axial:
+            moved = {"z": rotor_z}
+        else:
+            ux, uy, _, _ = journal(i, b.position)
+            moved = {"x": ux, "y": uy}
+        for a, fail in zip(own, (kernel.P_FAIL_X, kernel.P_FAIL_Y), strict=False):
+            forces[a][:, i] = kernel.forces(row, np.ascontiguousarray(t, float), row[fail],
+                                            np.ascontiguousarray(currents[a][:, i]),
+                                            np.ascontiguousarray(moved[a], float))
+    out = {"amb": ("amb", [b.name for b in bearings], {}),
+           "amb_axis": ("amb", ["axial" if b.axial else "radial" for b in bearings], {})}
+    for a in axes:
+        out[f"amb_current_{a}"] = (("time", "amb"), currents[a], {"units": "A",
+                                   "long_name": f"Magnetic bearing's control current, {a}"})
+        if params is not None and t is not None:
+            out[f"amb_force_{a}"] = (("time", "amb"), forces[a], {"units": "N",
+                                     "long_name": f"Magnetic bearing's force on the rotor, {a}"})
     return out
 
 
 def describe(b: MagneticBearing) -> dict:
     """Inputs with units in the keys, for files and reports."""
-    return {"kind": KIND, "name": b.name, "position_m": b.position, "sensor_position_m": b.sensor,
+    return {"kind": KIND, "name": b.name, "axis": "axial" if b.axial else "radial", "position_m": b.position,
+            "sensor_position_m": b.sensor,
             "current_stiffness_N_per_A": b.current_stiffness, "position_stiffness_N_per_m": b.position_stiffness,
             **({"kp_A_per_m": b.kp, "ki_A_per_m_s": b.ki, "kd_A_s_per_m": b.kd} if b.controller is None else
                {"controller": f"state space of order {b.order} (A per m of reading)",
@@ -363,27 +387,38 @@ def describe(b: MagneticBearing) -> dict:
 def levitated_state(machine, modal, bearings) -> dict:
     """The static state of the rotor held by its magnetic bearings: the linear statics of the model.
 
-    Unknowns: the rotor's coordinates q (x, y, theta_x, theta_y and the elastic modes) and, for a bearing with
-    integral action, its steady currents (its sensor then reads zero); without integral action the current is
-    -k_p times the sensor's reading; a state-space controller's steady states z solve A z + B x = 0 with the rest.
-    Forces: gravity, the constant process forces and the linear supports; the touchdown planes are clear. Returns q
-    and each bearing's states in the kernel's order (reading, controller states, current; x then y).
+    Unknowns: the rotor's coordinates q (x, y, theta_x, theta_y and the elastic modes, and its axial position when
+    an axial bearing holds it) and, for a bearing with integral action, its steady currents (its sensor then reads
+    zero); without integral action the current is -k_p times the sensor's reading; a state-space controller's
+    steady states z solve A z + B x = 0 with the rest. Forces: gravity, the constant process forces and the linear
+    supports; the touchdown planes are clear. Returns q (lateral and modes), the axial position ``z`` and each
+    bearing's states in the kernel's order (reading, controller states, current; x then y, or z).
     """
     r = machine.rotor
-    n = 4 + (modal.n_modes if modal is not None else 0)
+    lateral = 4 + (modal.n_modes if modal is not None else 0)
+    axial = any(b.axial for b in bearings)
+    n = lateral + (1 if axial else 0)
     g = machine.simulation.gravity
-    gravity = (0.0, -g) if machine.orientation == "horizontal" else (0.0, 0.0)
+    gravity = (0.0, -g, 0.0) if machine.orientation == "horizontal" else (0.0, 0.0, -g)
 
     def rows(position, key):
         bx, by = np.zeros(n), np.zeros(n)
         bx[0], bx[3], by[1], by[2] = 1.0, position, 1.0, -position
-        if n > 4:
-            bx[4:], by[4:] = modal.station_shapes(position, key)
+        if lateral > 4:
+            bx[4:lateral], by[4:lateral] = modal.station_shapes(position, key)
         return bx, by
 
+    def axes(b, i):
+        if b.axial:
+            bz = np.zeros(n)
+            bz[lateral] = 1.0
+            return ((bz, bz),)
+        act, sense = rows(b.position, f"{KIND}.{i}.position"), rows(b.sensor, f"{KIND}.{i}.sensor_position")
+        return (act[0], sense[0]), (act[1], sense[1])
+
     stiff = np.zeros((n, n))
-    if n > 4:
-        stiff[4:, 4:] = np.diag(modal.frequencies ** 2)
+    if lateral > 4:
+        stiff[4:lateral, 4:lateral] = np.diag(modal.frequencies ** 2)
     for i, s in enumerate(getattr(machine, "stations", ())):
         if s.KIND != "linear_support":
             continue
@@ -393,31 +428,32 @@ def levitated_state(machine, modal, bearings) -> dict:
     force = np.zeros(n)
     force[0] = r.mass * gravity[0] + r.side_force_x
     force[1] = r.mass * gravity[1] + r.side_force_y
-    unknowns = sum(2 * b.order for b in bearings if b.controller is not None) + 2 * sum(
-        1 for b in bearings if b.controller is None and b.ki > 0.0)
+    if axial:
+        force[lateral] = r.mass * gravity[2] + r.axial_force
+    unknowns = sum((1 if b.axial else 2) * (b.order if b.controller is not None else int(b.ki > 0.0))
+                   for b in bearings)
     size = n + unknowns
     a, rhs = np.zeros((size, size)), np.zeros(size)
     a[:n, :n] = stiff
     rhs[:n] = force
     extra = n
     for i, b in enumerate(bearings):
-        act, sense = rows(b.position, f"{KIND}.{i}.position"), rows(b.sensor, f"{KIND}.{i}.sensor_position")
-        for axis in range(2):
-            a[:n, :n] -= b.position_stiffness * np.outer(act[axis], act[axis])
+        for act, sense in axes(b, i):
+            a[:n, :n] -= b.position_stiffness * np.outer(act, act)
             if b.controller is not None:  # steady: A z + B x = 0, the current -(C z + D x)
                 sys_a, sys_b, sys_c, sys_d = (np.asarray(v, float) for v in b.controller)
                 z = slice(extra, extra + b.order)
-                a[:n, z] += b.current_stiffness * np.outer(act[axis], sys_c)
-                a[:n, :n] += b.current_stiffness * sys_d * np.outer(act[axis], sense[axis])
+                a[:n, z] += b.current_stiffness * np.outer(act, sys_c)
+                a[:n, :n] += b.current_stiffness * sys_d * np.outer(act, sense)
                 a[z, z] = sys_a
-                a[z, :n] = np.outer(sys_b, sense[axis])
+                a[z, :n] = np.outer(sys_b, sense)
                 extra += b.order
             elif b.ki > 0.0:
-                a[:n, extra] -= b.current_stiffness * act[axis]  # the unknown steady current
-                a[extra, :n] = sense[axis]  # the sensor reads zero
+                a[:n, extra] -= b.current_stiffness * act  # the unknown steady current
+                a[extra, :n] = sense  # the sensor reads zero
                 extra += 1
             else:
-                a[:n, :n] += b.current_stiffness * b.kp * np.outer(act[axis], sense[axis])
+                a[:n, :n] += b.current_stiffness * b.kp * np.outer(act, sense)
     locked = () if machine.tilt_free else (2, 3)
     for i in locked:  # the planar rotor: tilts held at zero
         a[i, :], a[:, i], a[i, i], rhs[i] = 0.0, 0.0, 1.0, 0.0
@@ -425,10 +461,9 @@ def levitated_state(machine, modal, bearings) -> dict:
     q = solution[:n]
     states, extra = [], n
     for i, b in enumerate(bearings):
-        sense = rows(b.sensor, f"{KIND}.{i}.sensor_position")
         per_axis = []
-        for axis in range(2):
-            measured = float(sense[axis] @ q)
+        for _, sense in axes(b, i):
+            measured = float(sense @ q)
             if b.controller is not None:
                 z = solution[extra:extra + b.order]
                 extra += b.order
@@ -440,6 +475,6 @@ def levitated_state(machine, modal, bearings) -> dict:
             else:
                 per_axis += [measured, 0.0, -b.kp * measured]
         states.append(per_axis)
-    return {"q": q, "states": states,
-            "offsets": [float(np.hypot(*(row @ q for row in rows(b.position, f"{KIND}.{i}.position"))))
+    return {"q": q[:lateral], "z": float(q[lateral]) if axial else 0.0, "states": states,
+            "offsets": [abs(float(q[lateral])) if b.axial else float(np.hypot(*(act @ q for act, _ in axes(b, i))))
                         for i, b in enumerate(bearings)]}

@@ -70,7 +70,7 @@ def pack(supports, modal, n_modes: int, machine=None) -> kernel.Params:
     return kernel.Params(values, shape_x, shape_y)
 
 
-def series(supports, journal, states=None, params=None, t=None) -> dict:
+def series(supports, journal, states=None, params=None, t=None, rotor_z=None) -> dict:
     """Each support's force on the rotor over a run, from the rotor axis there.
 
     ``journal(i, position)`` gives the axis' displacement and velocity arrays x, y, vx, vy on the run's grid at

@@ -141,7 +141,7 @@ def pack(loads, modal, n_modes: int, machine=None) -> kernel.Params:
     return kernel.Params(values, shape_x, shape_y)
 
 
-def series(loads, journal, states=None, params=None, t=None) -> dict:
+def series(loads, journal, states=None, params=None, t=None, rotor_z=None) -> dict:
     """No series of its own: a load's value in time is its input."""
     return {}
 
