@@ -189,8 +189,10 @@ def test_own_study_with_the_drop_names_the_users_rotor_and_nothing_of_the_paper(
 @pytest.mark.slow
 def test_own_study_of_the_example_file_has_no_paper_caption(tmp_path):
     example = Path(__file__).parents[2] / "examples" / "my_study.toml"
-    config = replace(load_study_config(example), contact_angles_deg=(10.0, 70.0, 10.0),
-                     groove_ratios=(0.505, 0.6, 0.015))
+    config = load_study_config(example)
+    drop = {**config.sections["drop"], "duration": "20 ms"}  # the captions, not the drop's length, are at stake
+    config = replace(config, contact_angles_deg=(10.0, 70.0, 10.0), groove_ratios=(0.505, 0.6, 0.015),
+                     sections={**config.sections, "drop": drop})
     out = tmp_path / "out"
     run_study(config, out)
     text = _text(out)
@@ -207,12 +209,3 @@ def test_own_study_with_paper_comparison_has_every_stage_claim_labelled(tmp_path
     text = _text(out)
     assert "618 (QJ202)" in text and "Paper (its QJ202/7202): peak force [N]" in text
 
-
-@pytest.mark.slow
-def test_paper_study_keeps_its_claims_18_3_6(tmp_path):
-    results = run_study(default_config(), tmp_path / "out")
-    verdicts = [c["verdict"] for c in results["claims"]]
-    assert (verdicts.count("holds"), verdicts.count("does not hold"), verdicts.count("cannot be checked")) == (18, 3, 6)
-    text = _text(tmp_path / "out")
-    assert "Claims of the paper" in text and "Paper says" in text and "1.48 kg" in text
-    assert results["study_of"] == "the paper's bearings" and "experiment" in results["stage_times_s"]

@@ -357,6 +357,11 @@ def series(bearings, journal, states, params=None, t=None, rotor_z=None) -> dict
                                             np.ascontiguousarray(moved[a], float))
     out = {"amb": ("amb", [b.name for b in bearings], {}),
            "amb_axis": ("amb", ["axial" if b.axial else "radial" for b in bearings], {})}
+    inductance = np.array([b.coil_inductance or np.nan for b in bearings])
+    if t is not None and len(t) > 1 and np.isfinite(inductance).any():
+        for a in axes:  # the coil's inductive voltage L di/dt on the output grid (its resistance left out)
+            out[f"amb_voltage_{a}"] = (("time", "amb"), inductance * np.gradient(currents[a], t, axis=0),
+                                       {"units": "V", "long_name": f"Magnetic bearing's coil voltage L di/dt, {a}"})
     for a in axes:
         out[f"amb_current_{a}"] = (("time", "amb"), currents[a], {"units": "A",
                                    "long_name": f"Magnetic bearing's control current, {a}"})
@@ -457,7 +462,10 @@ def levitated_state(machine, modal, bearings) -> dict:
     locked = () if machine.tilt_free else (2, 3)
     for i in locked:  # the planar rotor: tilts held at zero
         a[i, :], a[:, i], a[i, i], rhs[i] = 0.0, 0.0, 1.0, 0.0
-    solution = np.linalg.lstsq(a, rhs, rcond=None)[0]
+    try:  # square and regular when the bearings hold every rigid motion
+        solution = np.linalg.solve(a, rhs)
+    except np.linalg.LinAlgError:  # a motion nothing holds (one bearing under a tilting rotor): the least-squares one
+        solution = np.linalg.lstsq(a, rhs, rcond=None)[0]
     q = solution[:n]
     states, extra = [], n
     for i, b in enumerate(bearings):
