@@ -277,3 +277,51 @@ def plot_magnetic_bearings(ds: xr.Dataset, summary: dict) -> Figure:
     forces.set_ylabel("Force on the rotor [N]")
     forces.set_xlabel("Time [ms]" + (" (dotted: the scenario strikes)" if strike else ""))
     return fig
+
+
+def axis_orbit(machine, ds: xr.Dataset, position: float) -> tuple[np.ndarray, np.ndarray]:
+    """The rotor axis' x and y at ``position`` from the mass centre over a run [m].
+
+    The rigid motion (theta_y = dx/dz, theta_x = -dy/dz) and, on an elastic rotor, its modes' shapes there
+    (``position`` on a node).
+    """
+    x = ds.rotor_x.values + position * ds.tilt_y.values
+    y = ds.rotor_y.values - position * ds.tilt_x.values
+    modal = machine.rotor.modal()
+    if modal is not None and modal.n_modes and "mode" in ds:
+        shape_x, shape_y = modal.station_shapes(position, "orbit position")
+        x, y = x + ds["mode"].values @ shape_x, y + ds["mode"].values @ shape_y
+    return x, y
+
+
+def orbit_positions(machine) -> list[tuple[str, float]]:
+    """Where an engineer looks at the rotor besides its touchdown planes: each radial station and mid-span."""
+    out = [(s.name, s.position) for s in getattr(machine, "stations", ())
+           if s.KIND in ("amb", "linear_support") and not getattr(s, "axial", False)]
+    planes = [p.position for p in machine.planes]
+    if len(planes) >= 2:
+        middle = 0.5 * (min(planes) + max(planes))
+        modal = machine.rotor.modal()
+        if modal is not None and modal.n_modes:  # the node nearest the middle of the bearing span
+            middle = float(modal.nodes[np.argmin(np.abs(modal.nodes - middle))])
+        out.append(("mid-span", middle))
+    return out
+
+
+def plot_axis_orbits(machine, ds: xr.Dataset) -> Figure:
+    """Orbits of the rotor axis at the stations and at mid-span [um], each against its nearest plane's clearance."""
+    places = orbit_positions(machine)
+    fig = Figure(figsize=(3.2 * max(len(places), 1), 3.4), layout="constrained")
+    for ax, (name, position) in zip(np.atleast_1d(fig.subplots(1, max(len(places), 1))), places, strict=False):
+        x, y = axis_orbit(machine, ds, position)
+        ax.plot(x * 1e6, y * 1e6, lw=0.5)
+        nearest = min(machine.planes, key=lambda p: abs(p.position - position))
+        circle = np.linspace(0, 2 * np.pi, 200)
+        c = nearest.radial_clearance * 1e6
+        ax.plot(c * np.cos(circle), c * np.sin(circle), "k--", lw=0.6)
+        ax.set_aspect("equal")
+        ax.set_title(f"{name} ({position * 1e3:.0f} mm)", fontsize=8)
+        ax.set_xlabel("x [um]", fontsize=8)
+        ax.set_ylabel("y [um]", fontsize=8)
+        ax.grid(alpha=0.3)
+    return fig

@@ -18,6 +18,7 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     cases = result["design"]["cases"]
     out: dict[str, list] = {"machine": [(plot_machine(cases.machine), "Rotor, touchdown planes, bearings, "
                                          "clearances (radially enlarged), mounts and collars.")]}
+    out["modes"] = _modes(cases.machine)
     out["criteria"] = [(_criteria_margins(result["design"]["criteria"]),
                         "Every criterion's margin against its limit (the line at zero): green holds, red fails; "
                         "a yes/no criterion is drawn at +-100 %, one not checked is named with no bar.")]
@@ -34,6 +35,9 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
                           + ("" if stress_limit is None else f"; dashed: the stress at which s0 falls to "
                              f"criteria.min_s0 = {float(min_s0):g} (ISO 76)")))
             drops.append((pd.plot_tilt(ds), f"{case}: tilt and axial position of the rotor"))
+            if pd.orbit_positions(cases.machine):
+                drops.append((pd.plot_axis_orbits(cases.machine, ds), f"{case}: orbits of the rotor axis at the "
+                              "stations and at mid-span (dashed: the nearest touchdown plane's clearance)"))
         drops.append((pd.plot_contact_force(ds), f"{case}: journal/race collision force ({summary['verdict']})"))
         drops.append((pd.plot_whirl_timeline(summary), f"{case}: whirl, window by window"))
     out["drops"] = drops
@@ -82,6 +86,28 @@ def build_figures(result: dict) -> dict[str, list[tuple[Figure, str]]]:
     rec = result.get("recommendation")
     if rec:
         out["recommendation"] = [(_recommendation_map(rec), "Worst drop margin of every design tried")]
+    return out
+
+
+def _modes(machine) -> list[tuple[Figure, str]]:
+    """The Campbell diagram, free (levitated) and in contact, and an elastic rotor's mode shapes."""
+    from auxbearing.analysis.modes import STATES, campbell
+    from auxbearing.plots.modes import plot_campbell, plot_mode_shapes
+
+    speeds = np.linspace(0.0, 1.2 * abs(machine.rotor.speed), 25)
+    diagrams = [campbell(machine, speeds, state) for state in STATES]
+    crossings = []
+    for d in diagrams:
+        crit = ", ".join(f"{c['speed_rpm']:.0f} rpm" for c in d.critical_speeds()) or "none up to 1.2x the speed"
+        crossings.append(f"{'levitated' if d.state == 'free' else 'in contact at rest'}: {crit}")
+    out = [(plot_campbell(diagrams, machine.rotor.speed), "Damped natural frequencies against speed (forward and "
+            "backward whirl), levitated on the magnetic bearings and linear supports and in contact with the touchdown "
+            "bearings at rest; critical speeds (the synchronous line on a forward mode): " + "; ".join(crossings)
+            + ". The magnetic bearings enter as their ideal spring and damper (sensor and amplifier lags left out).")]
+    modal = machine.rotor.modal()
+    if modal is not None and modal.n_modes:
+        out.append((plot_mode_shapes(modal), "The rotor's free-free elastic mode shapes (the drop keeps "
+                    f"{modal.n_modes} of them)"))
     return out
 
 

@@ -97,6 +97,9 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                      "coast-down and a small campaign. Run without --quick before you rely on it.</p>")
     parts.append("<h2>The machine at a glance</h2>")
     parts += [_figure(f, c) for f, c in figures.get("machine", [])]
+    if figures.get("modes"):
+        parts.append("<h3>Natural frequencies and critical speeds</h3>")
+        parts += [_figure(f, c) for f, c in figures["modes"]]
     rows, classes = verdict_rows(main["criteria"])
     parts.append("<h2>Verdicts</h2>")
     parts.append(_table(["criterion", "required", "found", "margin", "pass/fail"], rows,
