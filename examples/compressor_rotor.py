@@ -1,5 +1,10 @@
 """Builds the shipped compressor's rotor matrices: ``python examples/compressor_rotor.py``.
 
+With ``--ross`` (and ROSS installed: ``pip install 'auxbearing[ross]'``) it also builds the same shaft in ROSS
+(Euler-Bernoulli elements with rotary inertia, the same disks) and saves it as ROSS does, into
+``examples/compressor_ross/compressor_rotor.toml``, which ``examples/compressor_ross/compressor.toml`` reads
+through ``[rotor] ross_file``: the compressor as a ROSS user would bring it.
+
 Writes ``src/auxbearing/catalog/machines/compressor.npz`` (the arrays M, K, G and nodes that
 ``[rotor] matrices`` reads) and prints its node positions, where the machine file's stations sit (in
 the matrices' own frame, from the impeller end). The rotor is illustrative, not a real machine: a 40 kg
@@ -28,7 +33,25 @@ def compressor_structure():
     return beam_structure(NODES, DIAMETERS, STEEL["density"], STEEL["youngs_modulus"], disks=DISKS)
 
 
+def compressor_ross():
+    """The same rotor as a ``ross.Rotor`` (no bearings: the machine file gives its stations)."""
+    import ross as rs
+
+    steel = rs.Material(name="compressor_steel", rho=STEEL["density"], E=STEEL["youngs_modulus"], Poisson=0.3)
+    shaft = [rs.ShaftElement(L=float(L), idl=0.0, odl=float(d), material=steel, shear_effects=False,
+                             rotary_inertia=True, gyroscopic=True) for L, d in zip(np.diff(NODES), DIAMETERS,
+                                                                                   strict=True)]
+    disks = [rs.DiskElement(n=node, m=m, Id=jt, Ip=jp) for node, m, jt, jp in DISKS]
+    return rs.Rotor(shaft, disks, [])
+
+
 if __name__ == "__main__":
+    import sys
+
+    if "--ross" in sys.argv:
+        target = Path(__file__).resolve().parent / "compressor_ross" / "compressor_rotor.toml"
+        compressor_ross().save(str(target))
+        print(f"wrote {target}")
     rotor = compressor_structure()
     np.savez(TARGET, M=rotor.mass, K=rotor.stiffness, G=rotor.gyroscopic, nodes=rotor.nodes)
     body = modal_rotor(rotor, 2 * np.pi * 3000.0)

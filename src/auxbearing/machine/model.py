@@ -581,14 +581,21 @@ def _describe_structure(rotor: MachineRotor) -> dict | None:
 
 
 def _ross_rotor(rotor_table: dict, base: Path | None) -> tuple:
-    """``rotor.ross_file`` (and ``rotor.ross_bearings``): the structure and, kept, the ROSS rotor's bearings."""
+    """``rotor.ross_file`` (and ``rotor.ross_bearings``): the structure and, kept, the ROSS rotor's bearings.
+
+    From Python, ``ross_file`` may also be a ``ross.Rotor`` itself (the rotor a script built, never saved).
+    """
     from auxbearing.machine.ross_rotor import BEARINGS, read_ross_file, structure_from_ross, supports_from_ross
 
-    spec = _text(rotor_table, "ross_file", "rotor.", "")
+    given = rotor_table["ross_file"]
     keep = rotor_table.pop("ross_bearings", "keep")
     if keep not in BEARINGS:
         raise InputError.for_field("rotor.ross_bearings", keep, f"must be one of {', '.join(BEARINGS)}")
-    rotor = read_ross_file(spec, base, "rotor.ross_file")
+    if hasattr(given, "shaft_elements") and hasattr(given, "disk_elements"):  # a ross.Rotor
+        rotor, spec = given, f"{type(given).__name__} given from Python"
+    else:
+        spec = _text(rotor_table, "ross_file", "rotor.", "")
+        rotor = read_ross_file(spec, base, "rotor.ross_file")
     del rotor_table["ross_file"]
     speed = accept(TABLES["rotor"]["speed"], rotor_table.get("speed"), "rotor.speed") if "speed" in rotor_table \
         else 0.0
