@@ -167,11 +167,8 @@ def _integer(table: dict, key: str, default: int | None, low: int, high: int) ->
 
 def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Path | None]:
     """The machine's raw tables: ``campaign.machine`` (catalogue or file) with the file's tables laid over."""
-    import tomllib
-    from importlib import resources
-
     from auxbearing.common.io import read_toml
-    from auxbearing.machine.files import machine_names
+    from auxbearing.machine.files import machine_document, machine_names
 
     tables: dict = {}
     spec = head.get("machine")
@@ -180,8 +177,8 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
             raise InputError.for_field("campaign.machine", spec, "must be a catalogue name or a machine file")
         spec = spec.strip()
         if spec in machine_names():
-            text = resources.files("auxbearing.catalog").joinpath("machines", f"{spec}.toml").read_text()
-            tables = tomllib.loads(text)
+            # its folder too: the files a catalogue machine names (an elastic rotor's matrices) sit beside it
+            tables, _, base = machine_document(spec)
         else:
             path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
             if not path.is_file():
