@@ -507,6 +507,15 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
     bearings = of_kind(machine.stations, "amb")
     if bearings:
         out["scenario"] = outcome(machine, ds, planes)
+        if run.model.orbit is not None:
+            least = run.model.orbit[2]
+            out["scenario"]["levitation"] = {
+                "stable": least.real < 0.0, "least_damped_mode_Hz": abs(least.imag) / (2.0 * math.pi),
+                "least_damped_rate_per_s": least.real,
+                "note": ("the levitated machine, linearised at its speed, is stable; the run starts on its steady "
+                         "unbalance orbit" if least.real < 0.0 else "the levitated machine is UNSTABLE at its speed: "
+                         f"a mode near {abs(least.imag) / (2.0 * math.pi):.1f} Hz grows at {least.real:+.2f} 1/s "
+                         "(the controller does not hold it); the run starts from the levitated statics")}
         out["amb"] = _amb_summary(machine, model, run.grid, bearings)
     return out
 
@@ -530,12 +539,29 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
         levitated = np.asarray(held["states"][i])[[c - block for c in columns]]
         out.append({"name": b.name, "axis": "axial" if b.axial else "radial",
                     "levitated_offset_um": held["offsets"][i] * 1e6,
+                    "levitated_orbit_um": _orbit_at_sensor(model, b, i) * 1e6,
                     "levitated_current_A": float(np.sqrt((levitated ** 2).sum())),
                     "peak_current_A": float(currents.max()) if len(currents) else 0.0,
                     "peak_axis_current_A": axis_peak,
                     "max_current_A": b.current_limit() if math.isfinite(b.current_limit()) else None,
                     "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness() if b.controller is None else None})
     return out
+
+
+def _orbit_at_sensor(model, bearing, i: int) -> float:
+    """Radius of the levitated start's steady unbalance orbit at a bearing's sensor [m] (0 without one)."""
+    if model.orbit is None or model.orbit[1] is None or bearing.axial:
+        return 0.0
+    states, amplitudes, _ = model.orbit
+    full = np.zeros(model.y0.size, complex)
+    full[states] = amplitudes
+    a = bearing.sensor
+    params = model.stations[cm.STATION_KINDS.index(cm.amb)]
+    modes = full[model.layout.modes_at:model.layout.modes_at + model.layout.modes]
+    x = full[cm.X] + a * full[cm.TY] + modes @ params.sensor_shape_x[i]
+    y = full[cm.Y] - a * full[cm.TX] + modes @ params.sensor_shape_y[i]
+    phase = np.exp(1j * np.linspace(0.0, 2.0 * np.pi, 361))
+    return float(np.max(np.hypot((x * phase).real, (y * phase).real)))
 
 
 def _stop_sentence(verdict: str, where: str, t: float, value: float, machine: Machine, k: int) -> str:

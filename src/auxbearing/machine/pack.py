@@ -30,6 +30,9 @@ class KernelModel(NamedTuple):
     layout: cm.Layout  #: where each quantity sits in the state
     modes: cm.Modes  #: the rotor's elastic modes as packed (flat in ``machine.extra`` for the kernels)
     stations: tuple  #: each station kind's parameters as packed (also flat in ``machine.extra``)
+    #: a levitated start: (state indices, complex amplitudes Y of its steady unbalance orbit y = y_s + Re(Y e^(i phi)),
+    #: None if the levitation is unstable, the least damped eigenvalue of the linearised levitated machine [1/s])
+    orbit: tuple | None = None
 
 
 def plane_blocks(planes) -> int:
@@ -248,6 +251,22 @@ def pack(machine: Machine) -> KernelModel:
         atol[layout.modes_at:layout.modes_at + nm] = sim.atol * s / reach
         atol[layout.modes_at + nm:layout.modes_at + 2 * nm] = sim.atol * v / reach
     _amb_tolerances(machine, layout, atol, sim.atol * s)
+    orbit = _levitated_orbit(machine, core, layout, y0, atol)
     settings = ig.Settings(sim.rtol, atol, sim.max_step, 1e-14, 20000, sim.output_step)
     kinetic, potential = cm.energy(y0, core)
-    return KernelModel(core, y0, settings, kinetic + potential, layout, modes, stations)
+    return KernelModel(core, y0, settings, kinetic + potential, layout, modes, stations, orbit)
+
+
+def _levitated_orbit(machine: Machine, core: cm.Machine, layout: cm.Layout, y0: np.ndarray,
+                     atol: np.ndarray) -> tuple | None:
+    """Put a levitated, spinning start on its steady unbalance orbit (:mod:`auxbearing.machine.levitation`)."""
+    from auxbearing.machine.levitation import orbit_states, steady_orbit
+
+    if not of_kind(machine.stations, "amb") or not machine.active_scenario().levitated:
+        return None
+    axial = any(b.axial for b in of_kind(machine.stations, "amb")) and machine.axial_free
+    states = orbit_states(layout, machine.tilt_free, axial)
+    amplitudes, least = steady_orbit(core, y0, states, atol[states] / machine.simulation.atol)
+    if amplitudes is not None:  # an unstable levitation has no steady orbit: the run starts from the statics
+        y0[states] += amplitudes.real
+    return states, amplitudes, least

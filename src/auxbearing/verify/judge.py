@@ -161,6 +161,15 @@ def _scenario_criteria(cases: Cases) -> list[Criterion]:
                              + (" (saturated)" if saturated else "")))
     else:
         out.append(not_checked(name, "give amb.max_current to check it", "amb.max_current"))
+    levitations = {c: s["scenario"]["levitation"] for c, s in runs.items() if "levitation" in s["scenario"]}
+    if levitations:
+        unstable = {c: v for c, v in levitations.items() if not v["stable"]}
+        out.append(yes_no("the levitated machine is stable at its speed", "stable in every scenario",
+                          "stable" if not unstable else "; ".join(
+                              f"{c.removeprefix(SCENARIO_CASE)}: a mode near {v['least_damped_mode_Hz']:.1f} Hz grows "
+                              f"at {v['least_damped_rate_per_s']:+.2f} 1/s" for c, v in unstable.items()),
+                          not unstable, "a magnetic bearing that cannot hold the spinning rotor fails before any "
+                          "touchdown", "the levitated machine linearised at its speed (its least damped mode)"))
     for case, s in runs.items():
         asked, found = s["scenario"].get("relevitate_within_ms"), s["scenario"]
         if asked is None:
