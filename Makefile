@@ -5,6 +5,7 @@ PYTHON ?= python3
 VENV ?= .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed-stamp
+ROSS_STAMP := $(VENV)/.ross-stamp
 OUT ?= study
 VERIFY_OUT ?= verify
 MACHINE ?= blower
@@ -19,6 +20,11 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[dev]'
 	@touch $(STAMP)
+
+# The tests also read rotors saved by ROSS: its optional extra (about 30 s more to install), for `make test` only.
+$(ROSS_STAMP): $(STAMP)
+	$(BIN)/python -m pip install --quiet -e '.[dev,ross]'
+	@touch $(ROSS_STAMP)
 
 verify: $(STAMP)
 	@# exit 1 (FAIL) and 3 (INCOMPLETE) are verdicts, not errors of the job; 2 is bad input
@@ -42,7 +48,7 @@ kernels: $(STAMP)
 	    FAR_PLANE, _blower; run_coastdown(_blower(FAR_PLANE, duration='0.1 ms'), until_stop=False, duration=0.01)"); \
 	  second=$$?; wait $$first; s=$$?; cd / && rm -rf $$d; test $$s -eq 0 -a $$second -eq 0
 
-test: $(STAMP) kernels
+test: $(STAMP) $(ROSS_STAMP) kernels
 	$(BIN)/ruff check src tests benchmarks
 	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadfile --durations=15
 

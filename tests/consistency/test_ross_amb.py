@@ -52,3 +52,16 @@ def test_our_default_lags_cost_the_bearing_damping_that_rosss_ideal_pid_keeps():
     assert lagged.imag < ideal.imag
     lag = math.atan(w / (2 * math.pi * 1000)) + math.atan(w / (2 * math.pi * 5000))
     assert math.degrees(lag) == pytest.approx(31.0, abs=0.05)
+
+
+def test_the_stored_numbers_are_what_ross_gives_today():
+    pytest.importorskip("ross")
+    import numpy as np
+    import ross
+
+    from tests.regression.regenerate_ross_amb import BEARING, FREQUENCIES
+
+    element = ross.MagneticBearingElement(n=0, frequency=np.array(FREQUENCIES), **BEARING)
+    assert element.ki == pytest.approx(REFERENCE["ki_N_per_A"], rel=1e-12)
+    assert list(element.kxx) == pytest.approx(REFERENCE["kxx_N_per_m"], rel=1e-12)
+    assert list(element.cxx) == pytest.approx(REFERENCE["cxx_N_s_per_m"], rel=1e-12)
