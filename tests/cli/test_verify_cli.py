@@ -39,8 +39,11 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
     assert data["reason"].startswith("no checked criterion fails, but" if data["verdict"] == "incomplete"
                                      else "fails on")
     names = [c["name"] for c in data["criteria"]]
-    assert len(names) == 10 and len(set(names)) == 10  # the nine of every machine and its AMBs' current
+    # the nine of every machine, and its magnetic bearings' current and levitation
+    assert len(names) == 11 and len(set(names)) == 11
     assert "peak magnetic-bearing current against its amplifier's limit" in names
+    stable = next(c for c in data["criteria"] if c["name"] == "the levitated machine is stable at its speed")
+    assert stable["pass"] is True and stable["found"] == "stable"
     for c in data["criteria"]:
         assert {"name", "required", "found", "margin", "pass"} <= set(c)
         if c["kind"] == "lower":
