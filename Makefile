@@ -37,12 +37,13 @@ study: $(STAMP)
 
 # Compile (or load) the kernels once, in one process, before the test workers start: on a fresh machine every
 # worker compiled them at the same time instead (about 3 minutes of the CI's wall time). Two lines side by side on
-# the two cores: the two-plane drop and coast-down (about 2 minutes from cold), and the small kernels then the
+# the two cores: the two-plane drop and coast-down (about 2 minutes from cold) then a levitated start (the
+# right-hand side called from Python, which its steady orbit linearises), and the small kernels then the
 # three-plane specialisation the open-machine tests use (which took a test worker 75 s). Runs in a scratch folder.
 kernels: $(STAMP)
 	@d=$$(mktemp -d); A=$(CURDIR)/$(BIN)/auxbearing; cd $$d || exit 1; \
 	  { $$A drop --duration '0.1 ms' --quiet >/dev/null && $$A coastdown --machine paper_rig --duration 0.01 --quiet \
-	    >/dev/null; } & first=$$!; \
+	    >/dev/null && $$A drop --machine blower --scenario surge --duration '0.1 ms' --quiet >/dev/null; } & first=$$!; \
 	  $$A static --radial 1000 >/dev/null && $$A contact >/dev/null && (cd $(CURDIR) && $(BIN)/python -c \
 	    "from auxbearing.analysis.coastdown import run_coastdown; from tests.consistency.test_open_machine import \
 	    FAR_PLANE, _blower; run_coastdown(_blower(FAR_PLANE, duration='0.1 ms'), until_stop=False, duration=0.01)"); \
