@@ -45,3 +45,18 @@ def test_saturation_intervals_on_the_grid():
     assert np.allclose(spans, [(0.002, 0.004), (0.006, 0.009)])
     assert total == pytest.approx(0.005)
     assert saturation(t, current, float("inf")) == (0.0, [])
+
+
+def test_the_criteria_table_sets_the_current_share_and_a_relevitation_time_for_every_scenario():
+    criteria = {"max_amb_current_share": 0.5, "relevitation_time": 0.01, "given": ["max_amb_current_share",
+                                                                                  "relevitation_time"]}
+    held = {"relevitated_at_ms": None, "outcome": "sustained forward whirl"}
+    current, relevitation = _scenario_criteria(_cases(2.0, held), criteria)
+    assert current.required == 2.5 and current.margin == pytest.approx(0.2) and current.passed
+    assert "max_amb_current_share" in current.origin
+    assert relevitation.required == pytest.approx(10.0) and relevitation.passed is False
+    assert relevitation.origin == "your [criteria] relevitation_time"
+    # a scenario that leaves the bearings without power is not asked to re-levitate
+    assert len(_scenario_criteria(_cases(2.0, {"outcome": "on the touchdown bearings"}), criteria)) == 1
+    (over,) = _scenario_criteria(_cases(2.6, {"outcome": "on the touchdown bearings"}), criteria)
+    assert over.passed is False

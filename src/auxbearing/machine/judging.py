@@ -37,6 +37,12 @@ CRITERIA: tuple[Param, ...] = (
           "Radial clearance of the tightest seal; the journal's largest excursion must stay inside it", "user input"),
     Param("criteria", "max_backward_whirl_probability", "dimensionless", 0.05, "", "unit_interval",
           "Largest probability of sustained backward whirl over the campaign's uncertain drop conditions", "ours"),
+    Param("criteria", "max_amb_current_share", "dimensionless", 1.0, "", "fraction",
+          "Largest control current per axis in any scenario, as a share of each magnetic bearing's own limit "
+          "(reaching the limit itself fails: the controller has lost authority)", "ours: the amplifier's limit"),
+    Param("criteria", "relevitation_time", "time", None, "ms", "optional_positive",
+          "Every scenario that leaves the magnetic bearings powered must re-levitate within this time of its "
+          "strike (a scenario's own relevitate_within takes precedence)", "user input; not asked unless given"),
 )
 CRITERIA_TABLE = by_key(CRITERIA, "criteria")
 

@@ -121,7 +121,7 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     else:
         out.append(not_checked("journal excursion against the seal clearance", "give criteria.seal_clearance to "
                                "check it", "user input"))
-    out += _scenario_criteria(cases)
+    out += _scenario_criteria(cases, criteria)
     if cases.partial_coastdown:
         out = [_unsettled(c, cases.partial_coastdown) if c.name in PARTIAL_COASTDOWN_CRITERIA else c for c in out]
     if cases.campaign is not None:
@@ -142,8 +142,9 @@ PARTIAL_COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing 
 WHIRL_PROBABILITY = "probability of backward whirl over the drop conditions, 95 % bound"
 
 
-def _scenario_criteria(cases: Cases) -> list[Criterion]:
+def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Criterion]:
     """The magnetic bearings' criteria over the scenario cases: current against its limit, re-levitation asked."""
+    criteria = criteria or {"max_amb_current_share": 1.0, "relevitation_time": None, "given": []}
     runs = {c: r.summary for c, r in cases.drops.items() if c.startswith(SCENARIO_CASE) and r.summary.get("amb")}
     if not runs:
         return []
@@ -153,10 +154,12 @@ def _scenario_criteria(cases: Cases) -> list[Criterion]:
     name = "peak magnetic-bearing current against its amplifier's limit"
     if shares:
         share, peak, limit, case, bearing = max(shares)
-        saturated = share >= SATURATED
-        out.append(Criterion(name, limit, peak, 1.0 - share, not saturated, "A", "upper",
-                             "amb.max_current of the machine file (a controller at its limit has lost authority: "
-                             "reaching it fails)",
+        allowed = criteria["max_amb_current_share"]
+        saturated = share >= SATURATED * allowed
+        out.append(Criterion(name, allowed * limit, peak, 1.0 - share / allowed, not saturated, "A", "upper",
+                             ("your [criteria] max_amb_current_share of " if "max_amb_current_share" in
+                              criteria["given"] else "") + "amb.max_current of the machine file (a controller at "
+                             "its limit has lost authority: reaching it fails)",
                              f"{case}, {bearing}: {share * 100:.1f} % of its limit"
                              + (" (saturated)" if saturated else "")))
     else:
@@ -170,13 +173,17 @@ def _scenario_criteria(cases: Cases) -> list[Criterion]:
                               f"at {v['least_damped_rate_per_s']:+.2f} 1/s" for c, v in unstable.items()),
                           not unstable, "a magnetic bearing that cannot hold the spinning rotor fails before any "
                           "touchdown", "the levitated machine linearised at its speed (its least damped mode)"))
+    every = criteria.get("relevitation_time")
     for case, s in runs.items():
         asked, found = s["scenario"].get("relevitate_within_ms"), s["scenario"]
+        source = "the scenario's relevitate_within"
+        if asked is None and every is not None and found.get("outcome") != "on the touchdown bearings":
+            asked, source = every * 1e3, "your [criteria] relevitation_time"
         if asked is None:
             continue
         took = found["relevitated_at_ms"] - found["time_ms"] if found.get("relevitated_at_ms") is not None else None
         out.append(upper_bound(f"re-levitation after {case.removeprefix(SCENARIO_CASE)}", took, asked, "ms",
-                               "the scenario's relevitate_within", f"{case}: {found.get('outcome', 'not levitated')}"))
+                               source, f"{case}: {found.get('outcome', 'not levitated')}"))
     return out
 
 
