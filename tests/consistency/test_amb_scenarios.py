@@ -158,7 +158,7 @@ def test_the_amplifiers_voltage_limits_the_currents_rate():
     data_shock = {"name": "knock", "kind": "shock", "time": "5 ms", "position": "0 mm", "force": "300 N",
                   "duration": "2 ms"}
     machine = _blower(data_shock)
-    slow = machine_from_mapping(*_with_voltage("4 V", "40 mH")).with_scenario("knock")
+    slow = machine_from_mapping(*_knock(max_voltage="4 V", coil_inductance="40 mH")).with_scenario("knock")
     run = run_machine(slow.with_simulation(duration=0.012))
     _audit(run.summary)
     t = run.dataset.time.values
@@ -171,13 +171,14 @@ def test_the_amplifiers_voltage_limits_the_currents_rate():
     assert fast_rate.max() > 3 * 100.0  # measured 549 A/s without the limit
 
 
-def _with_voltage(voltage: str, inductance: str):
+def _knock(**amb_keys):
+    """The blower's tables with a 300 N, 2 ms shock at 5 ms and ``amb_keys`` on every magnetic bearing."""
     data, _, base = machine_table("blower")
     data = copy.deepcopy(data)
     for key in ("criteria", "candidate"):
         data.pop(key)
     for amb in data["amb"]:
-        amb.update(max_voltage=voltage, coil_inductance=inductance)
+        amb.update(amb_keys)
     data["scenario"] = [{"name": "knock", "kind": "shock", "time": "5 ms", "position": "0 mm", "force": "300 N",
                          "duration": "2 ms"}]
     return data, "blower", base
@@ -197,10 +198,8 @@ def test_a_ride_through_is_the_power_loss_it_delays():
 
 
 def test_the_bearings_load_capacity_caps_their_force():
-    data, name, base = _with_voltage("1000 V", "1 mH")
+    data, name, base = _knock()
     for amb in data["amb"]:
-        amb.pop("max_voltage")
-        amb.pop("coil_inductance")
         amb["load_capacity"] = "80 N"
     run = run_machine(machine_from_mapping(data, name, base).with_scenario("knock").with_simulation(duration=0.012))
     _audit(run.summary)
@@ -210,10 +209,8 @@ def test_the_bearings_load_capacity_caps_their_force():
 
 
 def test_a_pid_with_a_derivative_filter_levitates_on_its_linear_response():
-    data, name, base = _with_voltage("1000 V", "1 mH")
+    data, name, base = _knock()
     for amb in data["amb"]:
-        amb.pop("max_voltage")
-        amb.pop("coil_inductance")
         amb["derivative_bandwidth"] = "300 Hz"
     data["rotor"]["axial_force"] = "0 N"
     data["scenario"] = [HELD]
@@ -243,10 +240,7 @@ def test_the_thrust_bearing_carries_the_process_thrust_until_the_power_fails():
 
 
 def test_a_pd_thrust_bearing_gives_way_by_the_thrust_over_its_stiffness():
-    data, name, base = _with_voltage("1000 V", "1 mH")
-    for amb in data["amb"]:
-        amb.pop("max_voltage")
-        amb.pop("coil_inductance")
+    data, name, base = _knock()
     data["amb"][2].pop("ki")
     data["scenario"] = [HELD]
     machine = machine_from_mapping(data, name, base).with_scenario("held")
@@ -261,7 +255,7 @@ def test_a_pd_thrust_bearing_gives_way_by_the_thrust_over_its_stiffness():
     ({"axis": "diagonal"}, "amb.2.axis = 'diagonal': must be one of radial, axial"),
 ])
 def test_a_bad_thrust_bearing_names_the_key(change, expected):
-    data, name, base = _with_voltage("1000 V", "1 mH")
+    data, name, base = _knock()
     data["amb"][2].update(change)
     with pytest.raises(InputError) as err:
         machine_from_mapping(data, name, base)
@@ -269,7 +263,7 @@ def test_a_bad_thrust_bearing_names_the_key(change, expected):
 
 
 def test_a_thrust_bearing_needs_a_rotor_that_moves_axially():
-    data, name, base = _with_voltage("1000 V", "1 mH")
+    data, name, base = _knock()
     data["touchdown"][0].pop("axial_clearance")
     with pytest.raises(InputError, match=r"^amb.2.axis = 'axial': needs a rotor that moves axially"):
         machine_from_mapping(data, name, base)
@@ -286,7 +280,7 @@ def test_a_thrust_bearing_loses_its_z_axis_only():
 
 
 def test_the_coil_voltage_is_its_inductance_times_the_currents_rate():
-    data, name, base = _with_voltage("4 V", "40 mH")
+    data, name, base = _knock(max_voltage="4 V", coil_inductance="40 mH")
     run = run_machine(machine_from_mapping(data, name, base).with_scenario("knock").with_simulation(duration=0.012))
     voltage = run.dataset.amb_voltage_y.values
     assert run.dataset.amb_voltage_y.attrs["units"] == "V"

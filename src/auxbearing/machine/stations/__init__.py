@@ -28,26 +28,37 @@ def of_kind(stations, name: str) -> tuple:
     return tuple(s for s in stations if s.KIND == name)
 
 
-def read_tables(tables, kind: str, table: dict, required: tuple[str, ...], default_name: str):
-    """Each ``[[kind]]`` table as (where, name, SI values): the list and the keys checked, one line an error.
+def each_table(tables, kind: str, default_name: str):
+    """Each ``[[kind]]`` table as (where, name, a copy of its other keys): the list checked, one line an error.
 
-    ``where`` is the key prefix of the table (``"amb.0."``); ``required`` keys must be given; a table without
-    ``name`` is called ``default_name`` with its index.
+    ``where`` is the key prefix of the table (``"amb.0."``); a table without ``name`` is called ``default_name``
+    with its index.
     """
     from auxbearing.common.errors import InputError
-    from auxbearing.common.params import read_table
 
     if tables is None:
-        return []
+        return
     if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
         raise InputError.for_field(kind, tables, f"give one [[{kind}]] table per station")
-    out = []
     for i, given in enumerate(tables):
         where = f"{kind}.{i}."
         given = dict(given)
         name = given.pop("name", f"{default_name} {i}")
         if not isinstance(name, str):
             raise InputError.for_field(where + "name", name, "must be text")
+        yield where, name, given
+
+
+def read_tables(tables, kind: str, table: dict, required: tuple[str, ...], default_name: str):
+    """Each ``[[kind]]`` table as (where, name, SI values, its keys as given), every key checked (:func:`each_table`).
+
+    ``required`` keys must be given.
+    """
+    from auxbearing.common.errors import InputError
+    from auxbearing.common.params import read_table
+
+    out = []
+    for where, name, given in each_table(tables, kind, default_name):
         values = read_table(given, table, where)
         for key in required:
             if key not in values:

@@ -111,21 +111,11 @@ def make_load(name: str, kind: str, table: dict, where: str, start: float = 0.0)
 
 
 def read(tables) -> tuple[Load, ...]:
-    """The ``[[load]]`` tables of a machine file (values with units)."""
-    if tables is None:
-        return ()
-    if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
-        raise InputError.for_field(KIND, tables, f"give one [[{KIND}]] table per load")
-    out = []
-    for i, given in enumerate(tables):
-        where = f"{KIND}.{i}."
-        given = dict(given)
-        name = given.pop("name", f"load {i}")
-        if not isinstance(name, str):
-            raise InputError.for_field(where + "name", name, "must be text")
-        kind = text_key(given, "kind", where, kernel.KINDS, "force")
-        out.append(make_load(name, kind, given, where))
-    return tuple(out)
+    """The ``[[load]]`` tables of a machine file (values with units; each kind's keys read by :func:`make_load`)."""
+    from auxbearing.machine.stations import each_table
+
+    return tuple(make_load(name, text_key(given, "kind", where, kernel.KINDS, "force"), given, where)
+                 for where, name, given in each_table(tables, KIND, "load"))
 
 
 def pack(loads, modal, n_modes: int, machine=None) -> kernel.Params:
