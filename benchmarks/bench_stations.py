@@ -58,7 +58,7 @@ def main() -> None:
     for limit in ("3 kHz", "8 kHz"):
         machine = _compressor(limit)
         cost, steps = _best(machine, args.repeats)
-        print(f"compressor, modes to {limit} ({machine.rotor.modal().n_modes} modes): {cost:.3f} s CPU, {steps} "
+        print(f"compressor, modes to {limit} ({machine.modal().n_modes} modes): {cost:.3f} s CPU, {steps} "
               f"steps, {cost / rigid:.2f}x the rigid body")
     data, _, base = machine_table("blower")
     blower = machine_from_mapping(data, "blower", base)

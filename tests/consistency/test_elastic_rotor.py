@@ -77,8 +77,9 @@ duration = "60 ms"
 def test_a_spinning_elastic_shaft_keeps_its_energy_audit(tmp_path):
     machine = _shaft(tmp_path)
     model = pack(machine)
-    n = machine.rotor.modal().n_modes
-    assert n == 4 and model.layout.modes == n  # 372 and 771 Hz, each in x and y
+    modal = machine.modal()
+    assert modal.natural == 4  # 372 and 771 Hz, each in x and y
+    assert model.layout.modes == modal.n_modes == 4 + modal.residual
     assert model.layout.names[model.layout.modes_at] == "mode_0"
     assert model.layout.names[model.layout.structure_loss] == "structure_loss"
     run = run_machine(machine)
@@ -145,7 +146,7 @@ def test_a_very_stiff_shaft_drops_as_the_rigid_rotor_of_its_mass_and_inertias(tm
     np.savez(tmp_path / "stiff.npz", M=stiff.mass, K=stiff.stiffness, G=stiff.gyroscopic, nodes=stiff.nodes)
     data, base = _compressor(matrices=str(tmp_path / "stiff.npz"), max_mode_frequency="100 kHz")
     elastic = machine_from_mapping(data, "stiff", base)
-    assert elastic.rotor.modal().n_modes == 4
+    assert elastic.modal().natural == 4
     body = modal_rotor(stiff)
     data, base = _compressor()
     rotor = data["rotor"]
@@ -168,7 +169,7 @@ def test_doubling_the_compressors_modes_moves_its_peaks_by_less_than_one_percent
     for limit in ("3 kHz", "8 kHz"):
         data, base = _compressor(max_mode_frequency=limit)
         machine = machine_from_mapping(data, "compressor", base)
-        runs.append((machine.rotor.modal().n_modes, _peaks(run_machine(machine).summary)))
+        runs.append((machine.modal().natural, _peaks(run_machine(machine).summary)))
     (few, coarse), (many, fine) = runs
     assert (few, many) == (8, 14)
     for a, b in zip(coarse, fine, strict=True):

@@ -80,9 +80,9 @@ def test_the_compressor_from_ross_drops_as_the_shipped_compressor():
 
     ours = read_machine("compressor")
     theirs = read_machine(Path(__file__).parents[2] / "examples" / "compressor_ross" / "compressor.toml")
-    a, b = ours.rotor.modal(), theirs.rotor.modal()
-    assert b.n_modes == a.n_modes
-    assert np.allclose(b.frequencies, a.frequencies, rtol=1e-3)
+    a, b = ours.modal(), theirs.modal()
+    assert (b.natural, b.residual) == (a.natural, a.residual)
+    assert np.allclose(b.frequencies[:b.natural], a.frequencies[:a.natural], rtol=1e-3)
     assert theirs.rotor.mass == pytest.approx(ours.rotor.mass, rel=1e-9)
     peaks = [[p["peak_contact_force_N"] for p in run_machine(m, duration=0.03).summary["planes"]]
              for m in (ours, theirs)]

@@ -64,7 +64,7 @@ def test_the_steady_unbalance_response_of_an_elastic_shaft_is_the_linear_one(tmp
     assert run.summary["verdict"] == "ok" and run.summary["planes"][0]["impacts"] == 0
     assert abs(run.summary["largest_energy_error"]) < 1e-9  # the unbalance's work on the modes is booked
     ds = run.dataset
-    px, py = machine.rotor.modal().station_shapes(0.0, "disk")
+    px, py = machine.modal().station_shapes(0.0, "disk")
     x = ds["rotor_x"].values + ds["mode"].values @ px
     y = ds["rotor_y"].values + ds["mode"].values @ py
     late = ds["time"].values > 0.45

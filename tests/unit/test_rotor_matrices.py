@@ -36,7 +36,7 @@ def test_mass_and_inertias_come_from_the_matrices(tmp_path):
     machine = read_machine(_write(tmp_path))
     assert machine.rotor.mass == pytest.approx(7850.0 * np.pi / 4 * 0.04**2 * 0.6, rel=1e-12)
     assert machine.rotor.structure.source == "shaft.npz"
-    assert machine.rotor.modal().n_modes == 6  # three bending pairs below the 3 kHz default (508, 1392, 2710 Hz)
+    assert machine.modal().natural == 6  # three bending pairs below the 3 kHz default (508, 1392, 2710 Hz)
 
 
 @pytest.mark.parametrize(("kwargs", "names"), [

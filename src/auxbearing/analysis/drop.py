@@ -529,7 +529,7 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
     from auxbearing.machine.stations.amb import levitated_state
 
     spans = model.layout.station_spans[cm.STATION_KINDS.index(cm.amb)]
-    held = levitated_state(machine, machine.rotor.modal(), bearings)
+    held = levitated_state(machine, machine.modal(), bearings)
     out = []
     for i, b in enumerate(bearings):
         block, axes = spans[i][0], (1 if b.axial else 2)

@@ -82,7 +82,7 @@ class Campbell:
 
 def station_rows(machine: Machine, position: float, key: str) -> tuple[np.ndarray, np.ndarray]:
     """b_x and b_y of a station at ``position`` from the mass centre (module docstring)."""
-    modal = machine.rotor.modal()
+    modal = machine.modal()
     n = 0 if modal is None else modal.n_modes
     bx, by = np.zeros(4 + n), np.zeros(4 + n)
     bx[0], bx[3] = 1.0, position
@@ -110,7 +110,7 @@ def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, 
     if state not in STATES:
         raise InputError.for_field("state", state, f"must be one of {', '.join(STATES)}")
     r = machine.rotor
-    modal = r.modal()
+    modal = machine.modal()
     n = 0 if modal is None else modal.n_modes
     jt = r.transverse_inertia or 0.0
     size = 4 + n
@@ -158,6 +158,7 @@ def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
     rows = [station_rows(machine, p.position, f"touchdown.{k}.position") for k, p in enumerate(machine.planes)]
     rows += [station_rows(machine, a, "station") for a in _stations_positions(machine)]
     freqs, ratios, forwards = [], [], []
+    above = math.inf if machine.rotor.structure is None else machine.rotor.max_mode_frequency
     inverse = np.linalg.inv(mass)
     for omega in np.asarray(speeds, float):
         a = np.block([[np.zeros((size, size)), np.eye(size)],
@@ -171,8 +172,8 @@ def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
             if locked and np.abs(q[list(locked)]).max() > 0.5 * np.abs(q).max():
                 continue  # the locked tilts' stand-in springs
             hz = lam.imag / (2.0 * math.pi)
-            if hz < RIGID_BELOW:
-                continue
+            if hz < RIGID_BELOW or hz > above:
+                continue  # a free rotor's rigid motions; above the cut, the static correction's vectors
             x = np.array([bx @ q for bx, _ in rows])
             y = np.array([by @ q for _, by in rows])
             at = int(np.argmax(np.abs(x) ** 2 + np.abs(y) ** 2))

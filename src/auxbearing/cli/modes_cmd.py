@@ -80,7 +80,8 @@ def modes_command(machine_spec, speeds, points, out_dir, as_json):
     omegas = _speeds(speeds, machine.rotor.speed, points)
     diagrams = [campbell(machine, omegas, state) for state in STATES]
     result = {"machine": machine.name, "operating_speed_rpm": abs(machine.rotor.speed) * 30.0 / math.pi,
-              "elastic_modes": 0 if machine.rotor.modal() is None else machine.rotor.modal().n_modes,
+              "elastic_modes": 0 if machine.modal() is None else machine.modal().natural,
+              "static_correction_vectors": 0 if machine.modal() is None else machine.modal().residual,
               "modes": _by_speed(diagrams[0]), "modes_in_contact": _by_speed(diagrams[1]),
               "states": [d.as_dict() for d in diagrams]}
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
@@ -89,7 +90,7 @@ def modes_command(machine_spec, speeds, points, out_dir, as_json):
 
             write_json(result, tmp / "modes.json", machine.describe())
             save_figure(plot_campbell(diagrams, machine.rotor.speed), tmp / "campbell")
-            modal = machine.rotor.modal()
+            modal = machine.modal()
             if modal is not None and modal.n_modes:
                 save_figure(plot_mode_shapes(modal), tmp / "mode_shapes")
     if as_json:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import copy
 import math
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 from pathlib import Path
 
 from auxbearing.bearings.duplex import DuplexSet
@@ -45,6 +46,8 @@ STEEL_DENSITY = 7810.0
 #: Default shoulder height of the raceway grooves as a fraction of the ball diameter (an assumption).
 SHOULDER_FRACTION = 0.25
 ORIENTATIONS = ("horizontal", "vertical")
+#: ``rotor.reduction``: the kept modes with the static correction at the stations (default), or the modes alone
+REDUCTIONS = ("static_correction", "modes")
 #: Keys of ``[machine]``.
 MACHINE_KEYS = ("name", "orientation", "source")
 #: Tables of a machine file that other commands read and check (verify's criteria and candidates, a
@@ -143,6 +146,8 @@ class MachineRotor:
     start_y: float = 0.0
     max_mode_frequency: float = 3000.0  #: [Hz] elastic modes kept (with a structure)
     modal_damping: float = 0.01  #: damping ratio added to each elastic mode
+    #: how the structure is reduced: the kept modes and the static correction at the stations, or the modes alone
+    reduction: str = "static_correction"
     #: the rotor as matrices (:mod:`auxbearing.machine.structure`); None: the rigid rotor of mass and inertias
     structure: RotorStructure | None = None
     #: unbalance planes (axial position from the mass centre [m], U = m e [kg m], phase [rad]); when given they are
@@ -150,6 +155,8 @@ class MachineRotor:
     unbalance_planes: tuple = ()
 
     def __post_init__(self) -> None:
+        if self.reduction not in REDUCTIONS:
+            raise InputError.for_field("rotor.reduction", self.reduction, f"must be one of {', '.join(REDUCTIONS)}")
         if self.unbalance_planes:
             if self.unbalance or self.couple_unbalance:
                 raise InputError.for_field("rotor.unbalance", f"{self.unbalance * 1e6:g} um", "give the unbalance "
@@ -176,11 +183,20 @@ class MachineRotor:
         return cls(mass=body.mass, polar_inertia=body.polar_inertia, transverse_inertia=body.transverse_inertia,
                    speed=speed, structure=structure, **values)
 
-    def modal(self) -> ModalRotor | None:
-        """The structure's rigid body and kept elastic modes (None: a rigid rotor)."""
+    def modal(self, positions=()) -> ModalRotor | None:
+        """The structure's rigid body and kept elastic modes (None: a rigid rotor).
+
+        ``positions`` (from the mass centre [m], each on a node) are where the stations push: with the
+        ``static_correction`` reduction the kept modes are followed by the static correction's vectors for forces
+        there (:func:`auxbearing.machine.structure.modal_rotor`); a machine passes its own (:meth:`Machine.modal`).
+        """
         if self.structure is None:
             return None
-        return modal_rotor(self.structure, 2.0 * math.pi * self.max_mode_frequency, self.modal_damping)
+        nodes = ()
+        if self.reduction == "static_correction" and len(positions) and len(self.structure.nodes) > 1:
+            free = modal_rotor(self.structure)
+            nodes = sorted({free.node_at(p, "rotor.reduction") for p in positions})
+        return modal_rotor(self.structure, 2.0 * math.pi * self.max_mode_frequency, self.modal_damping, nodes)
 
 
 def unbalance_of_planes(planes, mass: float, transverse_inertia: float, polar_inertia: float
@@ -323,6 +339,22 @@ class Machine:
                     modal.node_at(scenario.load.position, f"scenario.{i}.position")
             for i, (position, _, _) in enumerate(self.rotor.unbalance_planes):
                 modal.node_at(position, f"unbalance.{i}.position")
+
+    def modal(self) -> ModalRotor | None:
+        """The rotor's modal model with the static correction at this machine's stations (None: rigid rotor)."""
+        return self._modal
+
+    @cached_property
+    def _modal(self) -> ModalRotor | None:
+        return self.rotor.modal(self.force_positions())
+
+    def force_positions(self) -> tuple[float, ...]:
+        """Where forces act on the rotor, from the mass centre [m]: planes, stations, loads, unbalance planes."""
+        positions = [p.position for p in self.planes]
+        positions += [s.position for s in self.stations if getattr(s, "on_rotor", True)]
+        positions += [s.load.position for s in self.scenarios if s.load is not None and s.load.on_rotor]
+        positions += [a for a, _, _ in self.rotor.unbalance_planes]
+        return tuple(positions)
 
     @property
     def tilt_free(self) -> bool:
@@ -577,6 +609,7 @@ def _describe_structure(rotor: MachineRotor) -> dict | None:
         return None
     return {"source": rotor.structure.source, "nodes": len(modal.nodes), "mass_centre_mm": modal.centre * 1e3,
             "max_mode_frequency_Hz": rotor.max_mode_frequency, "modal_damping_ratio": rotor.modal_damping,
+            "reduction": rotor.reduction,
             "free_free_modes_Hz": [float(f) / (2.0 * math.pi) for f in modal.frequencies]}
 
 
@@ -663,6 +696,12 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     elif isinstance(rotor_table, dict) and "ross_file" in rotor_table:
         rotor_table = dict(rotor_table)
         structure, ross_supports = _ross_rotor(rotor_table, base)
+    reduction = "static_correction"
+    if isinstance(rotor_table, dict) and "reduction" in rotor_table:
+        rotor_table = dict(rotor_table)
+        reduction = rotor_table.pop("reduction")
+        if reduction not in REDUCTIONS:
+            raise InputError.for_field("rotor.reduction", reduction, f"must be one of {', '.join(REDUCTIONS)}")
     rotor_values = read_table(rotor_table, TABLES["rotor"], "rotor.")
     if structure is not None:
         for key in ("mass", "polar_inertia", "transverse_inertia"):
@@ -686,7 +725,7 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                 raise InputError.for_field(f"rotor.{key}", rotor_table[key], "comes from the [[unbalance]] planes; "
                                            "give one or the other")
     rotor = MachineRotor(**{k: rotor_values.get(k, default("rotor", k)) for k in TABLES["rotor"]},
-                         structure=structure, unbalance_planes=planes_of_unbalance)
+                         structure=structure, unbalance_planes=planes_of_unbalance, reduction=reduction)
     tables = data.get("touchdown")
     if not isinstance(tables, list) or not tables or not all(isinstance(t, dict) for t in tables):
         raise InputError.for_field("touchdown", tables, "give one or more [[touchdown]] tables")

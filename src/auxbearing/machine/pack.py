@@ -130,7 +130,7 @@ def _limits(machine: Machine) -> cm.Limits:
 
 def _modes(machine: Machine, blocks: int) -> cm.Modes:
     """The rotor's elastic modes as the kernel takes them, with their shapes at each plane (none: rigid)."""
-    modal = machine.rotor.modal()
+    modal = machine.modal()
     if modal is None or modal.n_modes == 0:
         return cm.rigid_modes(blocks)
     shape_x, shape_y = np.zeros((blocks, modal.n_modes)), np.zeros((blocks, modal.n_modes))
@@ -210,7 +210,7 @@ def pack(machine: Machine) -> KernelModel:
         clearance[k] = p.bearing.diametral_clearance
     modes = _modes(machine, n)
     nm = modes.stiffness.shape[0]
-    modal = machine.rotor.modal()
+    modal = machine.modal()
     stations = tuple(kind.pack(of_kind(machine.stations, kind.KIND), modal, nm, machine) for kind in station_kinds())
     core = cm.Machine(rotor, _plane_arrays(planes), tuple(ballsets), clearance, _limits(machine),
                       *cm.new_scratch(n, nm), *cm.pack_extra(modes, stations))

@@ -96,6 +96,14 @@ class ModalRotor:
     modal_gyroscopic: np.ndarray  #: (n_modes, n_modes) Phi^T G Phi [-]
     tilt_gyroscopic: np.ndarray  #: (2, n_modes) R_tilt^T G Phi: the rigid tilts' coupling to the modes [sqrt(kg) m]
     nodes: np.ndarray  #: node positions from the mass centre [m]
+    #: of the modes, the last ``residual`` are the static correction's Ritz vectors (:func:`modal_rotor`), not
+    #: natural modes of the free shaft: their frequencies lie above the cut and are not reported as the rotor's
+    residual: int = 0
+
+    @property
+    def natural(self) -> int:
+        """Natural (free-free) modes kept, before the static correction's vectors."""
+        return self.n_modes - self.residual
 
     @property
     def n_modes(self) -> int:
@@ -127,13 +135,15 @@ def rigid_structure(mass: float, transverse_inertia: float, polar_inertia: float
     return RotorStructure(m, np.zeros((4, 4)), g, np.zeros(1), source="rigid rotor")
 
 
-def modal_rotor(structure: RotorStructure, max_frequency: float = math.inf, damping_ratio: float = 0.0
-                ) -> ModalRotor:
+def modal_rotor(structure: RotorStructure, max_frequency: float = math.inf, damping_ratio: float = 0.0,
+                correction_nodes=()) -> ModalRotor:
     """Rigid body and elastic modes of a free-free structure up to ``max_frequency`` [rad/s] (module docstring).
 
     The four rigid motions are the kernel's rotor; a mode is kept with its degenerate partner (an axisymmetric
     shaft has each bending mode twice, in x and in y), so the cut never splits a pair. ``damping_ratio`` adds
-    modal viscous damping 2 zeta omega to the structure's own C.
+    modal viscous damping 2 zeta omega to the structure's own C. With ``correction_nodes`` (node indices: where
+    the stations push) the kept modes are followed by the static correction's Ritz vectors
+    (:func:`_static_correction`), so a force at those nodes bends the shaft with its whole flexibility.
     """
     s = structure
     m_mat, k_mat = s.mass, s.stiffness
@@ -157,17 +167,54 @@ def modal_rotor(structure: RotorStructure, max_frequency: float = math.inf, damp
         keep = int(np.searchsorted(omega, max_frequency, side="right"))
         while 0 < keep < len(omega) and omega[keep] <= omega[keep - 1] * (1.0 + 1e-6):
             keep += 1
-        omega, phi = omega[:keep], vectors[:, :keep]
-        # clean the modes of any rigid part (round-off), then mass-normalise again
-        phi = phi - rigid @ np.linalg.solve(rigid_mass, rigid.T @ m_mat @ phi)
-        phi = phi / np.sqrt(np.einsum("ij,ij->j", phi, m_mat @ phi))
+        extra_omega, extra = np.zeros(0), np.zeros((n, 0))
+        if len(correction_nodes) and keep < len(omega):
+            extra_omega, extra = _static_correction(_clean(vectors[:, keep:], rigid, rigid_mass, m_mat),
+                                                    omega[keep:], correction_nodes, m_mat, k_mat)
+        omega, phi = omega[:keep], _clean(vectors[:, :keep], rigid, rigid_mass, m_mat)
+        residual = len(extra_omega)
+        omega, phi = np.concatenate([omega, extra_omega]), np.hstack([phi, extra])
     else:
-        omega, phi = np.zeros(0), np.zeros((n, 0))
+        omega, phi, residual = np.zeros(0), np.zeros((n, 0)), 0
     damping = np.diag(2.0 * damping_ratio * omega)
     if s.damping is not None:
         damping = damping + phi.T @ s.damping @ phi
     return ModalRotor(mass, float(jt), jp, centre, omega, phi, damping, phi.T @ s.gyroscopic @ phi,
-                      rigid[:, 2:].T @ s.gyroscopic @ phi, s.nodes - centre)
+                      rigid[:, 2:].T @ s.gyroscopic @ phi, s.nodes - centre, residual)
+
+
+def _clean(phi: np.ndarray, rigid: np.ndarray, rigid_mass: np.ndarray, m_mat: np.ndarray) -> np.ndarray:
+    """Modes cleaned of any rigid part (round-off), then mass-normalised again."""
+    phi = phi - rigid @ np.linalg.solve(rigid_mass, rigid.T @ m_mat @ phi)
+    return phi / np.sqrt(np.einsum("ij,ij->j", phi, m_mat @ phi))
+
+
+def _static_correction(dropped: np.ndarray, omega: np.ndarray, nodes, m_mat: np.ndarray, k_mat: np.ndarray
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """Ritz vectors that carry the flexibility of the modes left out, for forces at ``nodes`` (x and y each).
+
+    A unit force at a station's DOF d deflects the free-free shaft, beyond its rigid (inertia-relief) motion, by
+    sum over all elastic modes of phi_j phi_j[d] / omega_j^2; the kept modes carry their part, and the residual
+    psi_d = sum over the modes left out of phi_j phi_j[d] / omega_j^2 is the static correction (the residual
+    flexibility attachment modes, Craig & Kurdila, *Fundamentals of Structural Dynamics*, 2nd ed. 2006,
+    Sec. 17.4; used as extra Ritz vectors, the modal truncation augmentation of Dickens, Nakagawa & Wittbrodt,
+    Computers & Structures 62 (1997) 985-998). The psi span a subspace M- and K-orthogonal to the rigid body and
+    to the kept modes; solving K and M on it gives vectors of the same kind as the modes (mass-normalised,
+    uncoupled), so the kernels take them as further modes. Their frequencies lie above the cut. A static force at
+    the nodes is then resolved exactly, whatever the cut. Returns (frequencies [rad/s], vectors (4n, p)).
+    """
+    omega = np.where(omega > 0.0, omega, np.inf)
+    dofs = sorted({DOFS_PER_NODE * int(i) + w for i in nodes for w in (UX, UY)})
+    psi = dropped @ (dropped[dofs].T / omega[:, None] ** 2)
+    # an M-orthonormal basis of their span (vectors that repeat another's direction are dropped)
+    gram = psi.T @ m_mat @ psi
+    size, turn = eigh(0.5 * (gram + gram.T))
+    keep = size > 1e-10 * size.max()
+    basis = psi @ (turn[:, keep] / np.sqrt(size[keep]))
+    stiff = basis.T @ k_mat @ basis
+    values, vectors = eigh(0.5 * (stiff + stiff.T))
+    ritz = basis @ vectors
+    return np.sqrt(np.clip(values, 0.0, None)), ritz
 
 
 # ----------------------------------------------------------------------------- a shaft built here

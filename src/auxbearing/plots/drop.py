@@ -287,7 +287,7 @@ def axis_orbit(machine, ds: xr.Dataset, position: float) -> tuple[np.ndarray, np
     """
     x = ds.rotor_x.values + position * ds.tilt_y.values
     y = ds.rotor_y.values - position * ds.tilt_x.values
-    modal = machine.rotor.modal()
+    modal = machine.modal()
     if modal is not None and modal.n_modes and "mode" in ds:
         shape_x, shape_y = modal.station_shapes(position, "orbit position")
         x, y = x + ds["mode"].values @ shape_x, y + ds["mode"].values @ shape_y
@@ -301,7 +301,7 @@ def orbit_positions(machine) -> list[tuple[str, float]]:
     planes = [p.position for p in machine.planes]
     if len(planes) >= 2:
         middle = 0.5 * (min(planes) + max(planes))
-        modal = machine.rotor.modal()
+        modal = machine.modal()
         if modal is not None and modal.n_modes:  # the node nearest the middle of the bearing span
             middle = float(modal.nodes[np.argmin(np.abs(modal.nodes - middle))])
         out.append(("mid-span", middle))

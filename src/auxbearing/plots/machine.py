@@ -17,7 +17,7 @@ def plot_machine(machine, ax=None) -> Figure:
     fig, ax = axes_for(ax, (9, 3.6))
     planes = machine.planes
     stations = [s for s in getattr(machine, "stations", ()) if getattr(s, "on_rotor", True)]
-    modal = machine.rotor.modal()
+    modal = machine.modal()
     nodes = [] if modal is None or len(modal.nodes) < 2 else list(modal.nodes * 1e3)
     positions = ([p.position * 1e3 for p in planes] + [s.position * 1e3 for s in stations]
                  + [u[0] * 1e3 for u in machine.rotor.unbalance_planes])

@@ -54,7 +54,7 @@ def plot_mode_shapes(modal, count: int = 4, ax=None) -> Figure:
     fig, ax = axes_for(ax, (7, 3.5))
     z = modal.nodes * 1e3
     shown = 0
-    for j in range(0, modal.n_modes):
+    for j in range(0, modal.natural):  # the static correction's vectors are not modes of the shaft
         shape = modal.shapes[0::4, j]
         if np.abs(shape).max() < 0.5 * np.abs(modal.shapes[1::4, j]).max():
             continue  # the y twin of a pair: drawn once

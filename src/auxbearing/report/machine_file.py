@@ -70,7 +70,8 @@ NumPy `.npz` of the arrays `M`, `K`, `G` (the gyroscopic matrix, to be multiplie
 order x, y, theta_x, theta_y, with theta_y = dx/dz and theta_x = -dy/dz. Mass and inertias then come from the
 matrices (give neither), every `position` (of each `[[touchdown]]`, `[[unbalance]]` and station) is the axial
 coordinate of one of the matrices' `nodes`, in the matrices' own frame, and the rotor bends in its free-free
-elastic modes up to `max_mode_frequency`.
+elastic modes up to `max_mode_frequency` with the static correction at its stations (`reduction`): a force at a
+station then bends the shaft with its whole flexibility, whatever the cut.
 """
 
 
@@ -89,7 +90,11 @@ _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file o
                         "'auxbearing[ross]'`): its shaft and disks are the matrices, its nodes' coordinates the "
                         "positions | ROSS |",
                         "| `ross_bearings` | - | `keep` | With `ross_file`: `keep` its bearings and seals as "
-                        "`[[linear_support]]` stations (coefficients at `rotor.speed`) or `drop` them | ours |"],
+                        "`[[linear_support]]` stations (coefficients at `rotor.speed`) or `drop` them | ours |",
+                        "| `reduction` | - | `static_correction` | With `matrices` or `ross_file`: `static_correction` "
+                        "keeps the modes up to `max_mode_frequency` and adds, for x and y at every station, the "
+                        "flexibility of the modes left out (Ritz vectors of the residual flexibility, above the cut; "
+                        "not reported as modes); `modes` keeps the modes alone | Craig & Kurdila 2006, Sec. 17.4 |"],
               "scenario": ["| `name` | - | required | The scenario's name (`drop --scenario NAME`) | ours |",
                            "| `kind` | - | `power_loss` | `power_loss` (every magnetic bearing loses its amplifiers; "
                            "the coils discharge with `decay_time`), `axis_loss` (one axis of one bearing), "

@@ -104,10 +104,13 @@ def _modes(machine) -> list[tuple[Figure, str]]:
             "backward whirl), levitated on the magnetic bearings and linear supports and in contact with the touchdown "
             "bearings at rest; critical speeds (the synchronous line on a forward mode): " + "; ".join(crossings)
             + ". The magnetic bearings enter as their ideal spring and damper (sensor and amplifier lags left out).")]
-    modal = machine.rotor.modal()
+    modal = machine.modal()
     if modal is not None and modal.n_modes:
-        out.append((plot_mode_shapes(modal), "The rotor's free-free elastic mode shapes (the drop keeps "
-                    f"{modal.n_modes} of them)"))
+        kept = f"the drop keeps {modal.natural} of them"
+        if modal.residual:
+            kept += (f" and {modal.residual} static correction vectors, which carry the flexibility of the modes "
+                     "left out at the stations")
+        out.append((plot_mode_shapes(modal), f"The rotor's free-free elastic mode shapes ({kept})"))
     return out
 
 
