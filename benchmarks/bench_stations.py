@@ -1,9 +1,9 @@
 """What an elastic rotor and magnetic bearings cost a drop, against the rigid drop of the same machine.
 
 1. The shipped compressor (an elastic rotor from matrices) with its modes to 3 kHz (8, the file's) and to 8 kHz
-   (14), each with the static correction's 8 vectors (x and y at its four stations), against its rigid body (the same mass and inertias, the same planes): CPU of a 0.2 s drop, best of
-   ``--repeats`` in this process after the kernels are loaded. Target (issue 23): 10 modes within 3x the rigid
-   drop's cost.
+   (14), each with the static correction's 8 vectors (x and y at its four stations), against its rigid body
+   (the same mass and inertias, the same planes): CPU of a 0.2 s drop, best of ``--repeats`` in this process
+   after the kernels are loaded. Target (issue 23): 10 modes within 3x the rigid drop's cost.
 2. The blower dropped from its levitated state (its power-loss scenario: 30 ms levitated, then 0.2 s) against
    the same 0.23 s from the centre with its magnetic bearings failed at the drop. Target (issue 24): 1.5x.
 
