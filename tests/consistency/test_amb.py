@@ -53,6 +53,7 @@ def test_bearings_that_fail_at_the_drop_leave_the_drop_as_it_was():
     assert failed["scenario"]["time_ms"] == 0.0
 
 
+@pytest.mark.slow
 def test_a_pd_bearing_is_a_spring_and_a_damper():
     ideal = {"sensor_bandwidth": "1 MHz", "amplifier_bandwidth": "1 MHz"}
     machine = _blower(amb=ideal, scenario=HELD, speed="0 rpm", unbalance="0 um", axial_force="0 N",

@@ -74,6 +74,7 @@ def test_a_short_shock_gives_the_rotor_its_impulse():
     assert run.summary["scenario"]["outcome"] == "no touchdown"
 
 
+@pytest.mark.slow
 def test_the_base_falling_at_half_g_halves_the_weight_the_bearings_carry():
     base = [{"name": "fall", "kind": "base_acceleration", "acceleration": f"{G0 / 2} m/s^2", "direction": "-90 deg",
              "start": "5 ms", "shape": "step"}]

@@ -54,6 +54,7 @@ def test_our_default_lags_cost_the_bearing_damping_that_rosss_ideal_pid_keeps():
     assert math.degrees(lag) == pytest.approx(31.0, abs=0.05)
 
 
+@pytest.mark.slow
 def test_the_stored_numbers_are_what_ross_gives_today():
     pytest.importorskip("ross")
     import numpy as np

@@ -50,6 +50,7 @@ def test_every_lateral_mode_below_1_1_khz_is_rosss_within_half_a_percent():
             assert np.min(np.abs(ross - w)) / w < 0.005
 
 
+@pytest.mark.slow
 def test_a_ross_file_reads_as_the_matrices_and_supports_it_was_saved_with():
     pytest.importorskip("ross")
     from_file = _machine({"ross_file": "ross_rotor.toml", "max_mode_frequency": "10 kHz"})
@@ -60,6 +61,7 @@ def test_a_ross_file_reads_as_the_matrices_and_supports_it_was_saved_with():
     assert [s.kxx for s in from_file.stations] == [s.kxx for s in from_npz.stations]
 
 
+@pytest.mark.slow
 def test_a_ross_rotor_from_python_is_the_rotor_its_file_holds():
     ross = pytest.importorskip("ross")
     rotor = ross.Rotor.load(str(HERE / "ross_rotor.toml"))
@@ -70,6 +72,7 @@ def test_a_ross_rotor_from_python_is_the_rotor_its_file_holds():
     assert [s.kxx for s in from_object.stations] == [s.kxx for s in from_file.stations]
 
 
+@pytest.mark.slow
 def test_the_compressor_from_ross_drops_as_the_shipped_compressor():
     """The shipped compressor's shaft rebuilt in ROSS (examples/compressor_ross, Euler-Bernoulli elements with
     consistent rotary inertia where ours lumps it): free-free bending 390.2, 760.7, 1246.9, 2079.2 Hz against our
