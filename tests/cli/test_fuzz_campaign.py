@@ -21,6 +21,9 @@ import pytest
 from tests.cli.test_fuzz_harness import case, check_case
 from tests.cli.test_fuzz_machine import machine, nested
 
+#: the quick loop leaves this module to `make test` (its share of the loop's time against what it guards)
+pytestmark = pytest.mark.slow
+
 CAMPAIGN = """[campaign]
 machine = "paper_rig"
 samples = 4

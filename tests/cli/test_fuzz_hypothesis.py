@@ -20,6 +20,9 @@ from hypothesis import strategies as st
 
 from tests.cli.test_fuzz_harness import Case, explain, run_in_process
 
+#: the quick loop leaves this module to `make test` (its share of the loop's time against what it guards)
+pytestmark = pytest.mark.slow
+
 UNITS = ("", "N", "kN", "kg", "mm", "um", "m", "deg", "rad", "rpm", "Hz", "rps", "rad/s", "N*m", "N/m**1.5",
          "N/mm**1.5", "degC", "s", "ms", "us", "%", "1/s", "N N", "m/s**2", "kg*m**2", "N*s/m")
 
@@ -87,7 +90,6 @@ DROP_OPTIONS = ("--clearance", "--friction", "--speed", "--eccentricity", "--rac
                 "--unbalance-phase", "--start-x", "--ball-constant", "--line-stiffness", "--gravity", "--rtol")
 
 
-@pytest.mark.slow
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(option=st.sampled_from(DROP_OPTIONS), value=QUANTITY)
 def test_drop_options(option, value):

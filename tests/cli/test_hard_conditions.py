@@ -79,6 +79,7 @@ def test_tiny_max_step_is_refused_before_any_step(tmp_path):
     assert time.monotonic() - start < 10 and "1.5e+08 steps" in _error_line(o)
 
 
+@pytest.mark.slow
 def test_a_machine_run_past_its_budget_ends_with_that_verdict(tmp_path):
     # the machine's own budgets: a file's drop.max_wall_time stops the run with a verdict and partial results
     machine = (Path(__file__).parents[2] / "src/auxbearing/catalog/machines/paper_rig.toml").read_text()

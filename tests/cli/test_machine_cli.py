@@ -48,6 +48,7 @@ def test_heavy_fast_rotor_prints_its_failure_not_a_result():
     assert "warning: verdict contact_ellipse_over_shoulder" in result.stderr
 
 
+@pytest.mark.slow
 def test_coastdown_of_a_drop_out_of_range_reports_no_life(tmp_path):
     out = tmp_path / "cd"
     result = _run("coastdown", "--machine", "heavy_fast_rotor", "--until-stop", "--json", "--out", str(out))

@@ -43,6 +43,7 @@ def _blower(amb=None, scenario=None, **rotor):
 HELD = {"name": "held", "kind": "power_loss", "time": "10 s"}
 
 
+@pytest.mark.slow
 def test_bearings_that_fail_at_the_drop_leave_the_drop_as_it_was():
     plain = run_machine(_blower()).summary
     failed = run_machine(_blower(amb={"ki": f"{KINT} A/(m*s)"})).summary

@@ -23,6 +23,9 @@ from auxbearing.common.errors import InputError
 from auxbearing.machine.files import machine_table
 from auxbearing.machine.model import machine_from_mapping
 
+#: the quick loop leaves this module to `make test` (its share of the loop's time against what it guards)
+pytestmark = pytest.mark.slow
+
 KI, KS, KP, KD = 100.0, 2e5, 6000.0, 12.0
 G0 = 9.80665
 
@@ -74,7 +77,6 @@ def test_a_short_shock_gives_the_rotor_its_impulse():
     assert run.summary["scenario"]["outcome"] == "no touchdown"
 
 
-@pytest.mark.slow
 def test_the_base_falling_at_half_g_halves_the_weight_the_bearings_carry():
     base = [{"name": "fall", "kind": "base_acceleration", "acceleration": f"{G0 / 2} m/s^2", "direction": "-90 deg",
              "start": "5 ms", "shape": "step"}]

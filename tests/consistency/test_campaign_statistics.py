@@ -48,6 +48,7 @@ def test_wilson_ends_are_roots_of_the_score_equation(k, n):
     assert mirror[1] == pytest.approx(1 - high, abs=1e-12) and mirror[2] == pytest.approx(1 - low, abs=1e-12)
 
 
+@pytest.mark.slow
 def test_wilson_exact_coverage_is_near_nominal():
     n = 60
     coverages = []
@@ -137,6 +138,7 @@ def _ishigami_campaign(sampler, samples):
                    "high": f"{math.pi!r} m"}]}})
 
 
+@pytest.mark.slow
 def test_sobol_indices_of_ishigami_through_the_campaign_path(tmp_path):
     c = _ishigami_campaign("saltelli", 4096)
     points = design(c)

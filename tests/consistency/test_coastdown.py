@@ -91,6 +91,7 @@ def test_thermal_growth_closes_the_internal_clearance_of_hot_balls(hot_blower):
         assert plane["min_internal_clearance_um"] < 0.0  # QJ208 starts at zero clearance
 
 
+@pytest.mark.slow
 def test_life_figures_are_consistent():
     summary = run_coastdown(_paper_rig(), until_stop=False, duration=0.5).summary
     plane = summary["planes"][0]

@@ -12,6 +12,7 @@ from auxbearing.campaign.evaluate import VERDICTS, _prepared, evaluate_batch
 from auxbearing.machine.model import machine_from_mapping
 
 
+@pytest.mark.slow
 def test_each_sample_of_the_compressor_is_its_own_elastic_drop():
     campaign = campaign_from_mapping({"campaign": {"machine": "compressor", "samples": 2, "input": [
         {"key": "touchdown.0.sliding_friction", "distribution": "uniform", "low": 0.1, "high": 0.3}]},

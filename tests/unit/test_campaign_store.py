@@ -61,6 +61,7 @@ def test_store_layout(tmp_path):
     assert json.loads(ds.attrs["campaign"])["seed"] == 1
 
 
+@pytest.mark.slow
 def test_batches_are_written_into_their_region_and_flagged(tmp_path):
     c = small()
     points = design(c)

@@ -12,6 +12,9 @@ from auxbearing.analysis.contact import contact_map
 from auxbearing.analysis.statics import load_distribution
 from auxbearing.plots import contact, experiment, static
 
+#: the quick loop leaves this module to `make test` (its share of the loop's time against what it guards)
+pytestmark = pytest.mark.slow
+
 LOADS = np.array([0.0, 200.0, 400.0])
 
 
