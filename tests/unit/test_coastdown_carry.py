@@ -42,3 +42,26 @@ def test_an_unloaded_race_keeps_its_gap_to_the_balls():
     assert np.hypot(*_ballset_radial(before, 0, 0.0, d)) == 0.0
     # half the 2 um the clearance closed, along d: towards the centre
     assert _race_carry(before, after, 0, 0.0, d) == pytest.approx(np.array([0.0, -4e-6]), abs=1e-15)
+
+
+def test_a_handover_keeps_the_mass_centres_momentum_and_the_principal_axis_turning():
+    from auxbearing.analysis.coastdown import _Session
+    from auxbearing.analysis.drop import integrate_machine
+    from auxbearing.core import machine as cm
+
+    machine = read_machine("blower")
+    session = _Session(machine, integrate_machine(machine, 0.002, None, None))
+    rotor = session.core.rotor
+    rotor = rotor._replace(unbalance=2e-5, couple_unbalance=1e-4)  # both unbalances, large enough to see
+    session.core = session.core._replace(rotor=rotor)
+
+    def momenta(y):
+        kin = cm.rotor_kinematics(y, rotor)
+        om = y[cm.OMEGA]
+        return np.array([y[cm.VX] + kin[0] * om, y[cm.VY] + kin[1] * om, kin[8], kin[9]])
+
+    before = momenta(session.y.copy())
+    omega = 0.9 * float(session.y[cm.OMEGA])
+    session.set_speeds(omega, [0.9 * float(session.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) for k in range(2)])
+    assert session.y[cm.OMEGA] == omega
+    assert momenta(session.y) == pytest.approx(before, rel=1e-12, abs=1e-15)

@@ -227,7 +227,21 @@ class _Session:
         return status, watch, ledger
 
     def set_speeds(self, omega: float, race_speeds) -> None:
-        """Set the rotor's and the races' spin speeds (the end of a reduced stretch)."""
+        """Set the rotor's and the races' spin speeds (the end of a reduced stretch).
+
+        The state holds the geometric axis, whose velocity is the mass centre's less the unbalance's turning
+        offset: G' = O' + e u' Omega and theta_p' = theta_g' + chi w' Omega (:mod:`auxbearing.core.machine`).
+        Over the stretch the spin slowed while the mass centre's momentum and the principal axis' angular
+        momentum carried on, so the axis' velocities take the change of the unbalance terms (left as they were,
+        the mass centre took a kick of e dOmega at every handover).
+        """
+        y = self.y
+        kin = cm.rotor_kinematics(y, self.core.rotor)
+        slowed = float(y[cm.OMEGA]) - omega
+        y[cm.VX] += kin[0] * slowed
+        y[cm.VY] += kin[1] * slowed
+        y[cm.WX] += kin[4] * slowed
+        y[cm.WY] += kin[5] * slowed
         self.y[cm.OMEGA] = omega
         for k in range(len(self.machine.planes)):
             self.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA] = race_speeds[k]

@@ -68,6 +68,19 @@ class RotorStructure:
         if not np.allclose(self.gyroscopic, -self.gyroscopic.T, atol=1e-12 * max(np.abs(self.gyroscopic).max(), 1.0)):
             raise InputError.for_field("rotor.matrices.gyroscopic", "G", "must be skew-symmetric (G = -G^T)")
 
+    def mass_centre(self) -> tuple[float, float]:
+        """(mass [kg], axial position of the mass centre in the structure's frame [m]), from M alone."""
+        origin = self.rigid_modes(0.0)
+        mass = float(origin[:, 0] @ self.mass @ origin[:, 0])
+        if not mass > 0.0:
+            raise InputError.for_field("rotor.matrices.mass", f"{mass:g} kg", "must give the rotor a positive mass")
+        return mass, float(origin[:, 0] @ self.mass @ origin[:, 3]) / mass
+
+    def nodes_at(self, positions) -> list[int]:
+        """Indices of the nodes nearest ``positions`` from the mass centre [m], each once, in order."""
+        nodes = self.nodes - self.mass_centre()[1]
+        return sorted({int(np.argmin(np.abs(nodes - p))) for p in positions})
+
     def rigid_modes(self, centre: float) -> np.ndarray:
         """(4n, 4): translations x, y and tilts theta_x, theta_y about the axial position ``centre`` (columns)."""
         n = len(self.nodes)
@@ -147,11 +160,7 @@ def modal_rotor(structure: RotorStructure, max_frequency: float = math.inf, damp
     """
     s = structure
     m_mat, k_mat = s.mass, s.stiffness
-    origin = s.rigid_modes(0.0)
-    mass = float(origin[:, 0] @ m_mat @ origin[:, 0])
-    if not mass > 0.0:
-        raise InputError.for_field("rotor.matrices.mass", f"{mass:g} kg", "must give the rotor a positive mass")
-    centre = float(origin[:, 0] @ m_mat @ origin[:, 3]) / mass
+    mass, centre = s.mass_centre()
     rigid = s.rigid_modes(centre)
     rigid_mass = rigid.T @ m_mat @ rigid
     jt = 0.5 * (rigid_mass[2, 2] + rigid_mass[3, 3])
