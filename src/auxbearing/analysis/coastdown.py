@@ -646,7 +646,8 @@ def tail_note(tail: dict | None) -> str:
 def _window_load(machine: Machine, k: int, window) -> float:
     """ISO 281 equivalent load on plane k's bearing over a window [N].
 
-    Radial: the window's mean journal contact force plus the race's weight; axial: its mean face force.
+    Radial: the window's mean journal contact force plus the race's weight; axial: its mean face force (the
+    averaging this implies: :mod:`auxbearing.analysis.coastdown_life`).
     """
     from auxbearing.analysis.coastdown_life import equivalent_load
 

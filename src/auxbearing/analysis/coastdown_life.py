@@ -8,7 +8,11 @@ Per plane and drop (:func:`plane_life`):
 * the coast-down: its settled stretches over-roll the raceways under loads that barely change, so each
   stretch adds revolutions / L10(P) with the ISO 281 basic rating life L10 = (C/P)^3 10^6 revolutions at
   its equivalent load P (ISO 281:2007 Eq. 1; the constant-load case of the same law, which the helper's
-  consistency test checks against the stress-history path);
+  consistency test checks against the stress-history path). P is taken from each full-dynamics window's mean
+  forces (``coastdown.check_window``): a rattle's faster swings are averaged before the cube, so its damage
+  depends on that length (blower over 30 s in full dynamics, 10 -> 20 -> 30 ms: drive end -0.7 and -1.6 %,
+  non-drive end -2.5 and -4.2 %); the window's revolution-weighted cube mean of the instantaneous load would
+  not;
 * the permanent dent of the drop's largest ball load (Palmgren, ISO 76's 1e-4 D limit;
   :func:`auxbearing.analysis.life.dent_per_drop`), the same spot dented every drop;
 * which of the two governs against ``life.required_drops`` (:func:`auxbearing.analysis.life.governing`).
