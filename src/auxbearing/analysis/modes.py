@@ -158,7 +158,7 @@ def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
     rows = [station_rows(machine, p.position, f"touchdown.{k}.position") for k, p in enumerate(machine.planes)]
     rows += [station_rows(machine, a, "station") for a in _stations_positions(machine)]
     freqs, ratios, forwards = [], [], []
-    above = math.inf if machine.rotor.structure is None else machine.rotor.max_mode_frequency
+    above = _natural_below(machine)
     inverse = np.linalg.inv(mass)
     for omega in np.asarray(speeds, float):
         a = np.block([[np.zeros((size, size)), np.eye(size)],
@@ -194,6 +194,19 @@ def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
     return Campbell(machine.name, state, np.asarray(speeds, float), np.array([f[:width] for f in freqs]),
                     np.array([z[:width] for z in ratios]), np.array([list(w[:width]) for w in forwards], dtype=object),
                     springs)
+
+
+def _natural_below(machine: Machine) -> float:
+    """Frequency [Hz] above which an eigenvalue is the static correction's, not a mode of the rotor.
+
+    Halfway between the highest natural mode kept and the lowest correction vector (both at rest, free): the
+    cut itself would split a kept pair that sits on it, or drop a kept mode that the spin lifts past it.
+    """
+    modal = machine.modal()
+    if modal is None or not modal.residual:
+        return math.inf
+    top = float(modal.frequencies[:modal.natural].max()) if modal.natural else 0.0
+    return 0.5 * (top + float(modal.frequencies[modal.natural:].min())) / (2.0 * math.pi)
 
 
 def _stations_positions(machine: Machine) -> list[float]:
