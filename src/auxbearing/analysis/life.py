@@ -8,8 +8,10 @@ it, so the turning race makes every ball pass every inner-raceway point (at the 
 relative to the race), the cage carries the balls over the outer raceway, and a ball that bounces
 while the race stands still loads the same point again and again. An over-rolling is charged the
 largest stress seen within half a point pitch, which raises the damage of a smoothly varying load
-zone by under 1 % at the default pitch (tests/consistency). The histories are cycle-counted with
-the maintained ``rainflow`` package (ASTM E1049-85, 5.4.4 rainflow counting), each cycle is
+zone by under 1 % at the default pitch (tests/consistency). The histories are cycle-counted by
+ASTM E1049-85's rainflow rule (5.4.4) in a compiled loop that gives what the maintained ``rainflow``
+package gives, cycle for cycle (tests/consistency; the package's Python loop took 9 of the blower
+coast-down's 36 s), each cycle is
 charged 1/N_f from the stress-life law of :mod:`auxbearing.core.fatigue` (exponent 9, calibrated
 on ISO 281's C), Miner's sum gives each point's damage, and Lundberg-Palmgren's Weibull sums give
 rings and bearing. A bearing run at a constant load for N revolutions so gets N/L10
@@ -37,7 +39,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import rainflow
 
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.core import fatigue as cf
@@ -156,7 +157,7 @@ def race_constants(bearing: BearingGeometry) -> dict:
 
 
 def count_cycles(series) -> dict:
-    """Rainflow cycles of a history (ASTM E1049-85 5.4.4, through the ``rainflow`` package).
+    """Rainflow cycles of a history (ASTM E1049-85 5.4.4, :func:`auxbearing.core.fatigue.rainflow_turning_points`).
 
     The history is first cut to its turning points (which leaves the count unchanged), then
     counted; ``start``/``end`` index the input.
@@ -179,7 +180,7 @@ def count_cycles(series) -> dict:
     index = np.flatnonzero(np.r_[True, np.diff(x) != 0.0])
     step = np.diff(x[index])
     index = index[np.r_[True, step[:-1] * step[1:] < 0.0, True]] if step.size else index
-    cycles = np.array(list(rainflow.extract_cycles(x[index].tolist())), dtype=float).reshape(-1, 5)
+    cycles = cf.rainflow_turning_points(np.ascontiguousarray(x[index]))
     return {"ranges": cycles[:, 0], "means": cycles[:, 1], "counts": cycles[:, 2],
             "start": index[cycles[:, 3].astype(int)], "end": index[cycles[:, 4].astype(int)]}
 
