@@ -88,7 +88,7 @@ def on_every_worker(client, fn, *args) -> dict:
 
 def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = None, workers: int | None = None,
                  progress: Callable[[Progress], None] | None = None,
-                 decided: Callable[[Path, int], bool] | None = None) -> dict:
+                 decided: Callable[[Path, int], bool] | None = None, priority: int = 0, client=None) -> dict:
     """Run every sample of ``campaign`` not yet in ``store``; returns counts and timing.
 
     Parameters
@@ -107,6 +107,13 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         campaign is run for. It is asked at every batch end n, in design order, once every sample before n is
         complete: never of a set that depends on which batches a busy cluster finished first. When it says True
         the rest is cancelled and ``decided_at`` is n; batches past n already stored stay in the store.
+    priority : int
+        Dask priority of its batches on a shared cluster (higher runs first; ``Client.submit``).
+    client : distributed.Client, optional
+        A client of the caller's to run on (``scheduler`` then only names it in messages), left open: the
+        campaigns of a verification, run side by side in threads, share the verification's client (each
+        with a client of its own to the same scheduler, one waited forever on batches the scheduler held
+        in memory: a completion message lost between the clients of one process).
 
     Returns
     -------
@@ -119,15 +126,18 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
     start = time.perf_counter()
     points = design(campaign)
     # a scheduler address is tried before the store is touched, so a wrong address writes nothing
-    client = _client(scheduler, None)[0] if scheduler is not None else None
+    own_client = client is None and scheduler is not None
+    if own_client:
+        client = _client(scheduler, None)[0]
     try:
         # one writer per store: the lock is held from before the store is made until its last batch is in
         with store_lock(store):
             prepare_store(store, campaign, points)
             todo = pending_batches(store, campaign.runs, campaign.batch_size)
-            return _run(campaign, store, points, todo, client, scheduler, workers, progress, start, decided)
+            return _run(campaign, store, points, todo, client, scheduler, workers, progress, start, decided,
+                        priority)
     finally:
-        if client is not None:
+        if own_client:
             client.close()
 
 
@@ -152,7 +162,7 @@ def _first_settled(decided, store: Path, ends: list, before: int, now: int) -> i
 
 
 def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler: str | None, workers: int | None,
-         progress, start: float, decided=None) -> dict:
+         progress, start: float, decided=None, priority: int = 0) -> dict:
     """The batches still to do, on the cluster (started here unless ``client`` is given), into the store."""
     from distributed import as_completed
 
@@ -196,7 +206,8 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
         tag = campaign.fingerprint()
         pending = {}
         for a, b in todo:
-            future = client.submit(evaluate_batch, shared, points.values[a:b], key=f"campaign-{tag}-{a}", pure=False)
+            future = client.submit(evaluate_batch, shared, points.values[a:b], key=f"campaign-{tag}-{a}", pure=False,
+                                   priority=priority)
             pending[future.key] = (future, a, b)
         new = lost = 0
         try:

@@ -229,10 +229,15 @@ def prepare_store(path: str | Path, campaign: Campaign, design: Design) -> bool:
 
 
 def open_store(path: str | Path):
-    """The store as a lazy :class:`xarray.Dataset`."""
+    """The store as a lazy :class:`xarray.Dataset` read by zarr in this process.
+
+    No Dask arrays (``chunks=None``): a read must not become tasks on whatever cluster a Dask client in
+    this process has made the default (a verification's, busy with its runs), nor depend on a global
+    ``dask.config`` that concurrent campaigns would set and reset under each other.
+    """
     import xarray as xr
 
-    return xr.open_zarr(Path(path), consolidated=False)
+    return xr.open_zarr(Path(path), consolidated=False, chunks=None)
 
 
 def load_results(path: str | Path):

@@ -88,6 +88,10 @@ class Immediate:
         """Run ``fn`` now; an object whose ``result()`` returns what it returned."""
         return self._Done(fn(*args, **kwargs))
 
+    def ahead(self) -> Immediate:
+        """Itself: one task at a time has no order to change."""
+        return self
+
 
 def campaign_size(settings: dict, quick: bool, samples: int | None) -> int:
     """Drops of a design's campaign: ``samples`` if given, the quick look's, or ``verify.campaign_samples``."""
@@ -165,8 +169,10 @@ def collect_cases(cases: Cases, futures: dict) -> Cases:
 
 def run_campaign_of(cases: Cases, data: dict, name: str, base: Path | None, samples: int, store: Path | None,
                     workers: int | None, scheduler: str | None, required_s0: float,
-                    whirl_limit: float | None = None) -> None:
-    """The design's campaign over its spreads into ``cases`` (on the scheduler given, or a cluster of its own).
+                    whirl_limit: float | None = None, priority: int = 0, client=None) -> None:
+    """The design's campaign over its spreads into ``cases`` (:func:`auxbearing.campaign.run.run_campaign`).
+
+    It runs on ``client`` if given, else on the scheduler given, else on a local cluster of its own.
 
     With ``whirl_limit`` the campaign stops once its first drops (in design order) fail the whirl criterion
     whatever the rest would show (:func:`auxbearing.verify.criteria.whirl_fails_whatever_follows`); its
@@ -178,7 +184,8 @@ def run_campaign_of(cases: Cases, data: dict, name: str, base: Path | None, samp
     if cases.quick:
         drop["duration"] = f"{float(cases.machine.simulation.duration)!r} s"
     cases.campaign, cases.campaign_store = _campaign(data, name, base, cases.machine, verify_settings(data), samples,
-                                                     store, workers, scheduler, required_s0, drop, whirl_limit)
+                                                     store, workers, scheduler, required_s0, drop, whirl_limit,
+                                                     priority, client)
 
 
 def run_cases(data: dict, name: str, base: Path | None, quick: bool = False, samples: int | None = None,
@@ -281,13 +288,10 @@ def campaign_tables(data: dict, machine: Machine, settings: dict, samples: int, 
 
 
 def _first_drops(store, n: int):
-    """The campaign store's first ``n`` samples, read in this process."""
-    import dask
-
+    """The campaign store's first ``n`` samples, read in this process (:func:`auxbearing.campaign.store.open_store`)."""
     from auxbearing.campaign.store import load_results
 
-    with dask.config.set(scheduler="synchronous"):  # not the cluster a Dask client here may have made the default
-        return load_results(store).isel(sample=slice(0, n))
+    return load_results(store).isel(sample=slice(0, n))
 
 
 def _whirl_settled(store, n: int, total: int, limit: float) -> bool:
@@ -301,9 +305,7 @@ def _whirl_settled(store, n: int, total: int, limit: float) -> bool:
 
 
 def _campaign(data, name, base, machine, settings, samples, store, workers, scheduler, required_s0, drop,
-              whirl_limit=None):
-    import dask
-
+              whirl_limit=None, priority=0, client=None):
     from auxbearing.campaign.config import campaign_from_mapping
     from auxbearing.campaign.run import run_campaign
     from auxbearing.campaign.statistics import campaign_statistics
@@ -313,11 +315,10 @@ def _campaign(data, name, base, machine, settings, samples, store, workers, sche
     campaign = campaign_from_mapping(campaign_tables(data, machine, settings, samples, drop), f"{name} campaign", base)
     decided = None if whirl_limit is None else (
         lambda path, n: _whirl_settled(path, n, campaign.runs, whirl_limit))
-    ran = run_campaign(campaign, store, scheduler=scheduler, workers=workers, decided=decided)
+    ran = run_campaign(campaign, store, scheduler=scheduler, workers=workers, decided=decided, priority=priority,
+                       client=client)
     stop = ran.get("decided_at")
-    with dask.config.set(scheduler="synchronous"):  # the statistics too, in this process
-        stats = campaign_statistics(_first_drops(store, campaign.runs if stop is None else stop),
-                                    required_s0=required_s0)
+    stats = campaign_statistics(_first_drops(store, campaign.runs if stop is None else stop), required_s0=required_s0)
     stats["planned"] = campaign.runs
     stats["stopped_decided"] = stop is not None
     return stats, str(store)

@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
+from functools import partial
 from pathlib import Path
 
 from auxbearing.common.errors import InputError
@@ -228,10 +230,10 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
     temperature, a clearance) gets a campaign of :data:`FAILING_CANDIDATE_SAMPLES` drops, enough to show
     its whirl tendency; its verdict cannot change, and its whirl criterion says how few drops it rests on.
 
-    The drops and coast-downs of the design and of every candidate go to the cluster at once; the campaigns
-    follow on the same cluster (their batches queue behind those runs, so no worker idles), then the geometry
-    search's grid in one batch. Once the design is judged, its governing case runs again tighter, beside
-    the recommended design's own verification.
+    The drops and coast-downs of the design and of every candidate go to the cluster at once. Then, side by
+    side (:func:`_side_by_side`): the design's campaign, after which the design is judged and its governing
+    case runs again tighter; each candidate's campaign once its own cases are in; the geometry search, then
+    the recommended geometry's own verification. Their batches queue behind the first runs, so no worker idles.
     """
     n = campaign_size(settings, quick, samples)
     designs = [("design", data, name, out_dir / "campaign.zarr")]
@@ -243,11 +245,12 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
         say(f"{label}: drops and coast-down")
         planned[label] = (cases, submit_cases(cases, executor), tables, title, store)
     collected, short = set(), {}
-    for label, (cases, futures, tables, title, store) in planned.items():
+
+    def campaign(label: str) -> None:
+        cases, futures, tables, title, store = planned[label]
         size = n
         if label != "design" and n > FAILING_CANDIDATE_SAMPLES:
-            # the design's campaign has run meanwhile, so this candidate's drops and coast-down are done
-            collect_cases(cases, futures)
+            collect_cases(cases, futures)  # the candidate's own drops and coast-down decide its campaign's size
             collected.add(label)
             failing = [c.name for c in judge(cases, criteria) if c.passed is False]
             if failing:
@@ -256,42 +259,82 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
                                 f"{'; '.join(failing)}, which no campaign can change")
         say(f"{label}: campaign of {size} drops")
         run_campaign_of(cases, tables, title, base, size, store, None, address, criteria["min_s0"],
-                        criteria["max_backward_whirl_probability"])
-    rec = recommend(data, name, base, criteria, quick, say, executor) if with_recommendation else None
-    judged = {}
-    for label, (cases, futures, *_) in planned.items():
+                        criteria["max_backward_whirl_probability"], client=getattr(executor, "client", None))
+
+    def design() -> tuple[dict, Callable]:
+        # once the design is judged, its governing case runs again tighter, beside whatever still runs
+        campaign("design")
+        cases, futures, *_ = planned["design"]
+        collect_cases(cases, futures)
+        judged = _design(cases, criteria)
+        say("convergence of the governing case")
+        return judged, convergence_started(judged["cases"], judged["criteria"], executor.ahead())
+
+    def search() -> dict | None:
+        # a chain of steps that wait on each other: its tasks go ahead of the campaigns' batches
+        ahead = executor.ahead()
+        rec = recommend(data, name, base, criteria, quick, say, ahead)
+        if rec is not None and rec["passes"]:
+            _verify_recommendation(rec, data, name, base, criteria, quick, n, out_dir, ahead, address, say)
+        return rec
+
+    candidates = [label for label in planned if label != "design"]
+    (design_judged, converging), *_, rec = _side_by_side(
+        [design, *(partial(campaign, label) for label in candidates), search if with_recommendation else lambda: None])
+    others = []
+    for label in candidates:
+        cases, futures, *_ = planned[label]
         if label not in collected:
             collect_cases(cases, futures)
-        judged[label] = _design(cases, criteria)
+        judged = _design(cases, criteria)
         if label in short:
-            judged[label]["criteria"] = [c._replace(evidence=f"{c.evidence} ({short[label]})")
-                                         if c.name == WHIRL_PROBABILITY else c for c in judged[label]["criteria"]]
-    design = judged.pop("design")
-    converging = None
-    if rec is not None and rec["passes"]:
-        # the recommendation is itself verified: every case of the design, on the recommended geometry
-        tables = recommended_tables(data, name, base, rec)
-        title = f"{name}, recommended geometry"
-        cases = plan_cases(tables, title, base, quick)
-        futures = submit_cases(cases, executor)
-        say("convergence of the governing case, beside the recommended geometry's verification")
-        converging = convergence_started(design["cases"], design["criteria"], executor)
-        say(f"recommended geometry: campaign of {n} drops")
-        run_campaign_of(cases, tables, title, base, n, out_dir / "campaign_recommended.zarr", None, address,
-                        criteria["min_s0"], criteria["max_backward_whirl_probability"])
-        checked = _design(collect_cases(cases, futures), criteria)
-        rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
-                               "reason": _reason(checked["criteria"]),
-                               "criteria": [c.as_json() for c in checked["criteria"]]}
-        if checked["verdict"] == "fail":
-            # a geometry whose own verification fails is not recommended, however well its drops went
-            rec["passes"] = False
-            rec["note"] = (f"the search's best geometry passes the drop criteria but fails its own verification: "
-                           f"{rec['verification']['reason']}")
-    else:
-        say("convergence of the governing case")
-        converging = convergence_started(design["cases"], design["criteria"], executor)
-    return design, list(judged.items()), rec, converging()
+            judged["criteria"] = [c._replace(evidence=f"{c.evidence} ({short[label]})")
+                                  if c.name == WHIRL_PROBABILITY else c for c in judged["criteria"]]
+        others.append((label, judged))
+    return design_judged, others, rec, converging()
+
+
+def _verify_recommendation(rec: dict, data, name, base, criteria, quick, n, out_dir, executor, address, say) -> None:
+    """Every case of the design on the recommended geometry into ``rec["verification"]``; a failing one withdrawn."""
+    tables = recommended_tables(data, name, base, rec)
+    title = f"{name}, recommended geometry"
+    cases = plan_cases(tables, title, base, quick)
+    futures = submit_cases(cases, executor)
+    say(f"recommended geometry: drops, coast-down and a campaign of {n} drops")
+    run_campaign_of(cases, tables, title, base, n, out_dir / "campaign_recommended.zarr", None, address,
+                    criteria["min_s0"], criteria["max_backward_whirl_probability"], getattr(executor, "priority", 0),
+                    getattr(executor, "client", None))
+    checked = _design(collect_cases(cases, futures), criteria)
+    rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
+                           "reason": _reason(checked["criteria"]),
+                           "criteria": [c.as_json() for c in checked["criteria"]]}
+    if checked["verdict"] == "fail":
+        # a geometry whose own verification fails is not recommended, however well its drops went
+        rec["passes"] = False
+        rec["note"] = (f"the search's best geometry passes the drop criteria but fails its own verification: "
+                       f"{rec['verification']['reason']}")
+
+
+def _side_by_side(jobs: list) -> list:
+    """Run ``jobs`` each in a thread of this process, all at once; their results in order.
+
+    Each job waits on its own runs on the cluster (a campaign on its batches, the geometry search on its
+    drops, a candidate's campaign first on that candidate's coast-down); side by side their tasks keep the
+    cluster's queue full while this process reads stores and judges. What each computes does not depend on
+    the order the cluster finishes them in (a campaign stops on its drops in design order), so the verdict
+    is the same as one after another. The first error is raised at once: the jobs still running end when
+    the verification's cluster closes under them, and a Ctrl-C reaches them between their batches
+    (:func:`auxbearing.common.interrupt.check`).
+    """
+    pool = ThreadPoolExecutor(max_workers=len(jobs), thread_name_prefix="verify")
+    finished = False
+    try:
+        futures = [pool.submit(job) for job in jobs]
+        results = [future.result() for future in futures]
+        finished = True
+        return results
+    finally:
+        pool.shutdown(wait=finished, cancel_futures=not finished)
 
 
 def _reason(criteria) -> str:
