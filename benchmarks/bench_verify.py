@@ -6,13 +6,14 @@ In one process, after a short drop that compiles or loads the kernels:
    verification within 150 of these drops' wall time);
 2. ``verify("blower")`` on a local cluster of ``--workers`` (default 2, then 1: the cases side by side
    against one after another on the same code), each with its wall time, the CPU time of this process and
-   of its worker processes, and the wall time between consecutive progress messages (the schedule's phases:
-   cases submitted, campaigns one after another, the geometry search, the recommended design and the
-   convergence re-run). The verdict is printed too: it must not change with the number of workers.
+   of its worker processes, the wall time between consecutive progress messages, and the workers' time split
+   by case from the cluster's task stream: each coast-down, the convergence re-run, each campaign (named by
+   its store), the drops, the geometry search's points and the kernel loading, with how busy the workers
+   were over the run. The verdict is printed too: it must not change with the number of workers.
 
     python benchmarks/bench_verify.py [--quick] [--workers 2 --workers 1] [--machine blower]
 
-A full blower verification takes 5-15 minutes a run on the 2-core machine; ``--quick`` measures the quick
+A full blower verification takes 4-8 minutes a run on the 2-core machine; ``--quick`` measures the quick
 verification instead.
 """
 
@@ -52,17 +53,58 @@ def children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
+def _case_of(key: str, stores: dict) -> str:
+    """The case a task of the verification belongs to, from its key (function name or campaign tag)."""
+    if key.startswith("campaign-"):
+        return f"campaign {stores.get(key.split('-')[1], key.split('-')[1])}"
+    kind = key.split("-")[0]
+    return {"_coastdown_task": "coast-downs (design, candidates, recommended geometry)",
+            "run_coastdown": "convergence re-run (coast-down)", "run_machine": "drops (cases, scenarios)",
+            "_point_summary": "geometry search", "warm_up": "kernel loading", "_load_kernels": "kernel loading",
+            "evaluate_batch": "campaign batches"}.get(kind, kind)
+
+
+def _stores(out: Path) -> dict:
+    """Campaign fingerprint -> store name, for naming the campaign tasks."""
+    import json
+
+    names = {}
+    for attrs in out.glob("*.zarr/.zattrs"):
+        tag = json.loads(attrs.read_text()).get("auxbearing_campaign")
+        if tag:
+            names[tag] = attrs.parent.name
+    return names
+
+
 def one_verification(machine_name: str, workers: int, quick: bool) -> dict:
+    from distributed import get_task_stream
+
+    from auxbearing.campaign.run import _client
+
     phases: list[tuple[float, str]] = []
-    cpu0, child0, wall0 = time.process_time(), children_cpu(), time.perf_counter()
-    with tempfile.TemporaryDirectory() as out:
-        result = verify(machine_name, Path(out), quick=quick, workers=workers,
-                        progress=lambda text: phases.append((time.perf_counter(), text)))
-    wall = time.perf_counter() - wall0
+    client, cluster = _client(None, workers)
+    try:
+        cpu0, child0, wall0 = time.process_time(), children_cpu(), time.perf_counter()
+        with tempfile.TemporaryDirectory() as out, get_task_stream(client) as stream:
+            result = verify(machine_name, Path(out), quick=quick, scheduler=client.scheduler.address,
+                            progress=lambda text: phases.append((time.perf_counter(), text)))
+            stores = _stores(Path(out))
+        wall = time.perf_counter() - wall0
+        workers_cpu = children_cpu() - child0
+    finally:
+        client.close()
+        cluster.close()
     marks = [(t - wall0, text) for t, text in phases] + [(wall, "end")]
     split = [(text, later - t) for (t, text), (later, _) in pairwise(marks)]
-    return {"wall": wall, "cpu": time.process_time() - cpu0, "workers_cpu": children_cpu() - child0,
-            "verdict": result["verdict"], "reason": result["reason"], "split": split}
+    cases: dict[str, list] = {}
+    for task in stream.data:
+        key = task["key"] if isinstance(task["key"], str) else str(task["key"])
+        compute = sum(s["stop"] - s["start"] for s in task["startstops"] if s["action"] == "compute")
+        entry = cases.setdefault(_case_of(key, stores), [0, 0.0])
+        entry[0] += 1
+        entry[1] += compute
+    return {"wall": wall, "cpu": time.process_time() - cpu0, "workers_cpu": workers_cpu, "workers": workers,
+            "verdict": result["verdict"], "reason": result["reason"], "split": split, "cases": cases}
 
 
 def main() -> None:
@@ -82,6 +124,12 @@ def main() -> None:
               f"here + {run['workers_cpu']:.1f} s in the workers; {run['verdict'].upper()}: {run['reason']}")
         for text, seconds in run["split"]:
             print(f"  {seconds:8.1f} s  {text}")
+        busy = sum(seconds for _, seconds in run["cases"].values())
+        print(f"  the workers' time by case ({busy:.1f} s computing, busy {100 * busy / (workers * run['wall']):.0f} % "
+              "of the run):")
+        for case, (tasks, seconds) in sorted(run["cases"].items(), key=lambda item: -item[1][1]):
+            if seconds >= 0.05:
+                print(f"  {seconds:8.1f} s  {100 * seconds / busy:5.1f} %  {tasks:4d} tasks  {case}")
         print(load())
     if len(runs) > 1:
         (a, ra), (b, rb) = list(runs.items())[:2]
