@@ -116,9 +116,9 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         Dask priority of its batches on a shared cluster (higher runs first; ``Client.submit``).
     client : distributed.Client, optional
         A client of the caller's to run on (``scheduler`` then only names it in messages), left open: the
-        campaigns of a verification, run side by side in threads, share the verification's client (each
-        with a client of its own to the same scheduler, one waited forever on batches the scheduler held
-        in memory: a completion message lost between the clients of one process).
+        campaigns of a verification, run side by side in threads, share the verification's client (seen
+        with a client each to the same scheduler: one campaign waited forever on batches the scheduler
+        already held in memory).
 
     Returns
     -------
