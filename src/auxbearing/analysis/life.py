@@ -7,16 +7,16 @@ ball stresses of a drop: a point carries the stress of the ball whose contact ce
 it, so the turning race makes every ball pass every inner-raceway point (at the ball-pass rate
 relative to the race), the cage carries the balls over the outer raceway, and a ball that bounces
 while the race stands still loads the same point again and again. An over-rolling is charged the
-largest stress seen within half a point pitch, which raises the damage of a smoothly varying load
-zone by under 1 % at the default pitch (tests/consistency). The histories are cycle-counted by
-ASTM E1049-85's rainflow rule (5.4.4) in a compiled loop that gives what the maintained ``rainflow``
-package gives, cycle for cycle (tests/consistency; the package's Python loop over the 1.3 million cycles of
-the blower's drop window took 3 of its coast-down's 36 s), each cycle is charged 1/N_f from the stress-life law of :mod:`auxbearing.core.fatigue` (exponent 9, calibrated
-on ISO 281's C), Miner's sum gives each point's damage, and Lundberg-Palmgren's Weibull sums give
-rings and bearing. A bearing run at a constant load for N revolutions so gets N/L10
-(tests/consistency). Lee & Palazzolo, "Catcher bearing life prediction using a rainflow counting
-approach", J. Tribol. 134 (2012) apply rainflow counting and Miner's rule to touchdown-bearing
-contact stresses; their paper was not retrievable here, so nothing below is taken from it.
+largest stress seen within half a point pitch, which raises the damage of a smoothly varying load zone by under 1 %
+at the default pitch (tests/consistency). The histories are cycle-counted by ASTM E1049-85's rainflow rule (5.4.4)
+in a compiled loop that gives what the maintained ``rainflow`` package gives, cycle for cycle (tests/consistency;
+the package's Python loop over the 1.3 million cycles of the blower's drop window took 3 of its coast-down's 36 s),
+each cycle is charged 1/N_f from the stress-life law of :mod:`auxbearing.core.fatigue` (exponent 9, calibrated on
+ISO 281's C), Miner's sum gives each point's damage, and Lundberg-Palmgren's Weibull sums give rings and bearing. A
+bearing run at a constant load for N revolutions so gets N/L10 (tests/consistency). Lee & Palazzolo, "Catcher
+bearing life prediction using a rainflow counting approach", J. Tribol. 134 (2012) apply rainflow counting and
+Miner's rule to touchdown-bearing contact stresses; their paper was not retrievable here, so nothing below is taken
+from it.
 
 Assumptions, all stated in the results: ball kinematics of the cage without slip unless the cage
 speed is given; drops repeat on the same raceway points (damage per drop adds); a cycle is charged
