@@ -229,13 +229,13 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
             completed = as_completed([f for f, _, _ in pending.values()])
             for future in completed:
                 _, a, b = pending.pop(future.key)
-                if queue:
-                    submit_next(completed)
                 try:
                     arrays = future.result()
                 except Exception as err:  # a worker died or the batch broke: its samples stay pending
                     lost += b - a
                     out["lost_reason"] = out["lost_reason"] or f"{type(err).__name__}: {err}"[:200]
+                    if queue:
+                        submit_next(completed)
                     continue
                 finally:
                     future.release()
@@ -252,6 +252,8 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
                     for rest, _, _ in pending.values():
                         rest.cancel()
                     break
+                if queue:  # only now: a batch sent before the stopping rule is asked may be one too many
+                    submit_next(completed)
                 if progress is not None:
                     elapsed = time.perf_counter() - first
                     rate = new / elapsed if elapsed > 0 else 0.0
