@@ -77,6 +77,9 @@ def variant(data: dict, name: str, base: Path | None, rotor: dict | None = None,
 class Immediate:
     """Runs a task at once, in this process: the executor of a verification without a cluster."""
 
+    client = None  #: no Dask client: a campaign run with it starts a cluster of its own
+    priority = 0
+
     class _Done:
         def __init__(self, value) -> None:
             self._value = value

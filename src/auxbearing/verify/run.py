@@ -259,7 +259,7 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
                                 f"{'; '.join(failing)}, which no campaign can change")
         say(f"{label}: campaign of {size} drops")
         run_campaign_of(cases, tables, title, base, size, store, None, address, criteria["min_s0"],
-                        criteria["max_backward_whirl_probability"], client=getattr(executor, "client", None))
+                        criteria["max_backward_whirl_probability"], client=executor.client)
 
     def design() -> tuple[dict, Callable]:
         # once the design is judged, its governing case runs again tighter, beside whatever still runs
@@ -302,8 +302,8 @@ def _verify_recommendation(rec: dict, data, name, base, criteria, quick, n, out_
     futures = submit_cases(cases, executor)
     say(f"recommended geometry: drops, coast-down and a campaign of {n} drops")
     run_campaign_of(cases, tables, title, base, n, out_dir / "campaign_recommended.zarr", None, address,
-                    criteria["min_s0"], criteria["max_backward_whirl_probability"], getattr(executor, "priority", 0),
-                    getattr(executor, "client", None))
+                    criteria["min_s0"], criteria["max_backward_whirl_probability"], executor.priority,
+                    executor.client)
     checked = _design(collect_cases(cases, futures), criteria)
     rec["verification"] = {"verdict": checked["verdict"], "worst_margin": checked["worst_margin"],
                            "reason": _reason(checked["criteria"]),

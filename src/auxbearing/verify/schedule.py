@@ -3,7 +3,8 @@
 A verification is many independent runs: each design's drops and coast-down, its campaign, the geometry
 search's drops, the recommended design's cases and the convergence run. They go to one cluster (a local
 one of single-threaded worker processes, one per core, or the user's by address), started once, its
-workers loading the compiled kernels once; the campaigns share it through its address.
+workers loading the compiled kernels once; every campaign, run side by side with the others in a thread of
+this process, submits through the verification's one client.
 """
 
 from __future__ import annotations
