@@ -536,7 +536,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         checked.append(windows)
         del checked[:-MAX_WINDOWS]  # settled looks back over these at most
         carried = settled(checked)
-        if verdict != OK or mode == "full" or carried is None or session.t < coast.settle_after_drop:
+        if verdict != OK or mode == "full" or carried is None:
             continue
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
             continue  # at standstill: the loop's top ends the run

@@ -263,7 +263,6 @@ class Coastdown:
     speed_step: float = default("coastdown", "speed_step")
     max_steps: float = default("coastdown", "max_steps")
     check_window: float = default("coastdown", "check_window")
-    settle_after_drop: float = default("coastdown", "settle_after_drop")
     settle_time: float = default("coastdown", "settle_time")
     tail_temperature_rise: float = default("coastdown", "tail_temperature_rise")
     vacuum: bool = False

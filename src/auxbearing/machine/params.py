@@ -208,13 +208,6 @@ COASTDOWN: tuple[Param, ...] = (
           "that part by less than this and its revolutions could add less than 0.1 % to any damage; the time left "
           "to standstill is then extrapolated at the last deceleration (0: simulate down to stop_speed)",
           "ours: 0.05 K, below what the temperature criteria resolve"),
-    Param("coastdown", "settle_after_drop", "time", 1.2, "s", "nonnegative",
-          "Full dynamics from the failure for at least this long before the first reduced stretch: the rattle's "
-          "slow transverse swing builds up over about a second after touchdown, and a stretch freezes the "
-          "motion as it is",
-          "ours, measured on the blower against full dynamics over 30 s: with the first stretch at 0.46 s its "
-          "windows carried the swing of the first second (rotor's transverse speed 40 % low) for 15 s and the "
-          "damage per drop was 2.3 % low; from 1.2 s, -0.28 / +0.12 %"),
     Param("coastdown", "settle_time", "time", 0.0, "ms", "nonnegative",
           "Full dynamics after each reduced stretch that is run and booked but not judged for the next one: the "
           "stretch's jump in speeds and clearances rings there, and the load those windows measure is low",
