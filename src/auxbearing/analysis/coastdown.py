@@ -54,7 +54,18 @@ import xarray as xr
 
 from auxbearing import __version__
 from auxbearing.analysis.coastdown_life import plane_life
-from auxbearing.analysis.coastdown_phases import MAX_WINDOWS, integrate_stretch, plane_window, settled, spin_model
+from auxbearing.analysis.coastdown_phases import (
+    MAX_WINDOWS,
+    REDUCIBLE,
+    STEADY_SPAN,
+    STEADY_SPANS,
+    integrate_stretch,
+    motion_steady,
+    plane_window,
+    same_families,
+    settled,
+    spin_model,
+)
 from auxbearing.analysis.drop import (
     MachineRun,
     as_machine,
@@ -444,6 +455,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     reduced_time = 0.0
     counts = {"windows": 0, "stretches": 0, "states": {}}
     checked: list = []  # each full window's planes since the last stretch
+    motion: list = []  # the last full windows in one family of reducible states, for motion_steady
+    steady = False  # the motion has been found steady since it last changed state
     settling = 0
     stopped_at = None
 
@@ -527,6 +540,13 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             overrolling[k].append((revs, w.load))
         verdict, reason = limits.update(temps, session.t)
         record(0)
+        if any(p.state not in REDUCIBLE for p in windows) or (motion and not same_families(motion[-1], windows)):
+            motion, steady = [], False
+        if all(p.state in REDUCIBLE for p in windows):
+            span = math.ceil(STEADY_SPAN / length - 1e-9)
+            motion.append(windows)
+            del motion[:-STEADY_SPANS * span]
+            steady = steady or motion_steady(motion, span)
         if progress is not None:
             rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
             progress(done(), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
@@ -536,7 +556,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         checked.append(windows)
         del checked[:-MAX_WINDOWS]  # settled looks back over these at most
         carried = settled(checked)
-        if verdict != OK or mode == "full" or carried is None:
+        if verdict != OK or mode == "full" or carried is None or not steady:
             continue
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
             continue  # at standstill: the loop's top ends the run

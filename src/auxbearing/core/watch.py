@@ -53,8 +53,11 @@ STOP_NAMES = {JOURNAL_PRESSURE: "journal_contact_overstress", BALL_STRESS: "ball
 #: contact angles), so the stresses are evaluated only on the others.
 STRESS_CANDIDATE_LOAD = 0.7
 #: Columns of a whirl-window record.
+#: ``orbit_speed_sq`` is the mean square of the journal centre's speed in its bore [m^2/s^2]: how much the
+#: journal moves (rattle, swing, whirl), which a coast-down's reduced stretch freezes
+#: (:func:`auxbearing.analysis.coastdown_phases.motion_steady`).
 WHIRL_FIELDS = ("whirl_speed", "mean_radius", "contact_fraction", "spin_speed", "race_speed", "duration",
-                "mean_normal_force", "mean_axial_force")
+                "mean_normal_force", "mean_axial_force", "orbit_speed_sq")
 _FORCE, _STRESS, _AXIAL = range(3)
 
 
@@ -151,6 +154,8 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
         acc[5] += h
         acc[6] += diags[k, D_FN] * h
         acc[7] += abs(diags[k, D_FA]) * h
+        if h > 0.0:  # (step's displacement / h)^2 over h
+            acc[8] += ((x1 - x0) ** 2 + (y1_ - y0_) ** 2) / h
     if t + h >= w.window_end[0]:
         i = w.window_count[0]
         if i < w.whirl.shape[0]:
@@ -166,6 +171,7 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
                     w.whirl[i, k, 5] = span
                     w.whirl[i, k, 6] = acc[6] / span
                     w.whirl[i, k, 7] = acc[7] / span
+                    w.whirl[i, k, 8] = acc[8] / span
                 for j in range(acc.size):
                     acc[j] = 0.0
             w.window_count[0] = i + 1
