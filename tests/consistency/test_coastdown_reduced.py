@@ -4,8 +4,9 @@ The reduced model (auxbearing.core.spin, states chosen by auxbearing.analysis.co
 dynamics where it runs: over the same simulated time, the rotor's speed within 2 % (of the speed lost) and
 every part's peak temperature within 2 K, the smallest clearances within 2 % of their change, the damage per
 drop within 2 %. Full dynamics costs 5-10 s of computing per simulated second on these machines, so the
-comparison runs the first seconds here (where a sliding race was once handed over wrongly); the closing note
-of the coast-down issue gives the same table to 30 s and to standstill, made by this module's `compare`.
+comparison runs the first seconds here: 4 s, of which the reduced model carries 2.0-2.9 s once the journals'
+motion after the drop has stopped changing (coastdown_phases.motion_steady); the closing note of the coast-down
+issue gives the same table to 30 s, made by this module's `compare`.
 """
 
 import copy
@@ -19,7 +20,7 @@ from auxbearing.machine.judging import candidate_tables
 from auxbearing.machine.model import machine_from_mapping
 
 #: Simulated seconds of the comparison in the test suite.
-HORIZON = 2.0
+HORIZON = 4.0
 
 
 def _machine(case: str):
@@ -42,20 +43,17 @@ def compare(machine, duration: float | None) -> dict:
 CASES = ["paper_rig", "paper_rig_two_planes", "blower", "blower:7208", "blower:6208", "vertical", "compressor"]
 #: The paper rig's journal swings to and fro in the bottom of its bore after the drop (a slow, lightly damped
 #: rolling pendulum, about 0.3 s a swing, whose losses vary by +-10 % along it); the windows the reduced model
-#: averages need not span whole swings, and its speed lost over the first seconds is 2-4 % short of full
-#: dynamics' (measured; its standstill time then lies within 1-4 % of full dynamics', which itself moves by
-#: 3 % with where the drop window ends). Every other example holds 2 %.
+#: averages need not span whole swings, and its speed lost over the first seconds is short of full dynamics'
+#: (measured over 4 s: 1.5 %, before the first stretch waited for the swing to settle 2-4 % over 2 s; its
+#: standstill time lies within 1-4 % of full dynamics', which itself moves by 3 % with where the drop window
+#: ends). Every other example holds 2 %.
 SPEED_TOLERANCE = {"paper_rig": 0.05, "paper_rig_two_planes": 0.05}
-#: Damage per drop of the blower's non-drive end over the first 2 s: the two stretches there carry nine tenths
-#: of the revolutions, and their load comes from the few windows after the drop, on a plane loaded at a
-#: third of the drive end. Measured (races carried across the clearance steps at their ball force, the mass
-#: centre's momentum kept at a handover): blower +13.6 %, with the 7208 +12.6 % (+38.3 % with the earlier
-#: half-the-change carry), with the 6208 +13.2 %; the drive ends +1.2, +2.8 and +0.2 %. The 7208's drive end was
-#: +2.2 % here before those two changes and within 2 % on another computer with the same code (a rattle is
-#: chaotic: the last bits of the arithmetic move it), so it is held to 3 %. Over 30 s the same planes are -0.7,
-#: +0.1 and +2.8 % (closing note of the coast-down issue); these bounds hold the first seconds to what they are,
-#: not to the 2 % target.
-DAMAGE_TOLERANCE = {("blower", 1): 0.16, ("blower:7208", 0): 0.03, ("blower:7208", 1): 0.15, ("blower:6208", 1): 0.16}
+#: Damage per drop over the first 4 s of the two non-drive ends, loaded at a third of their drive ends and
+#: rattling: the few windows after the handover set the load of most of the reduced revolutions. Measured: blower
+#: -3.7 %, compressor +3.0 % (their drive ends +0.4 and +1.8 %); every other plane within 2 %. A rattle is chaotic
+#: (the last bits of the arithmetic move it), so these hold the first seconds to what they are; over 30 s the
+#: same planes are +0.5 and +3.4 %.
+DAMAGE_TOLERANCE = {("blower", 1): 0.05, ("compressor", 1): 0.04}
 
 
 @pytest.mark.slow
@@ -65,6 +63,7 @@ def test_reduced_model_agrees_with_full_dynamics(case):
     both = compare(machine, HORIZON)
     auto, full = both["auto"], both["full"]
     assert auto["verdict"] == full["verdict"] == "ok"
+    assert auto["reduced_model_s"] > 0.0  # the comparison reaches past the handover
     start = abs(machine.rotor.speed) * 30.0 / math.pi
     lost_auto = start - abs(auto["final_rotor_speed_rpm"])
     lost_full = start - abs(full["final_rotor_speed_rpm"])

@@ -10,7 +10,8 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
 * **a reduced model** (:mod:`auxbearing.core.spin`) on the stretches whose state it can represent, as
   :mod:`auxbearing.analysis.coastdown_phases` decides from the window: every race rolling on its journal (in
   contact or in a steady backward rolling whirl) or free of it, no dry whip, and a whirl or a rattle only
-  when two windows agree. A race that still slides stays in full dynamics until it rolls. Only the slow
+  when two windows agree. A race that still slides stays in full dynamics until it rolls, and the first
+  stretch waits until the journals' motion is steady (a swing building up after the drop). Only the slow
   quantities move there: the rotor's and the free races' spin speeds under the losses the window measured
   (the bearings' viscous torque as Palmgren's law of the speed, the rest as torques), the drag law
   T0 + c1 Omega + c2 Omega^2 and the process torque; the temperatures follow their networks. A stretch ends

@@ -20,7 +20,9 @@ rolling, whirling or rattling (rolling and rattling counted alike) in the last :
 :data:`MAX_WINDOWS` windows since the last stretch, and the mean of their loss torques is known to
 :data:`STATIONARY` (:func:`settled`); that mean is carried, with the cube mean of their loads for the
 over-rolling. A sliding race stays in full dynamics until it rolls: the reduced model has no state for the
-race's own speed while it is driven.
+race's own speed while it is driven. The first stretch, and the first after a window in a state it does not
+carry, also waits until the journals' motion has stopped changing (:func:`motion_steady`): a stretch leaves
+the motion as it was, so a swing still building up would be frozen in its early form.
 """
 
 from __future__ import annotations

@@ -1,0 +1,62 @@
+"""motion_steady: a coast-down's reduced stretch waits until the journals' motion no longer changes.
+
+The series below have the shape measured on the blower's drive end after the drop (mean square orbit speed over
+0.25 s: 7e-4, 4e-4, 1.7e-4, 1.5e-4, 2.5e-4, then 4.7e-4 m^2/s^2 steady); the rule itself is the issue's physics
+check, not a published number.
+"""
+
+import numpy as np
+
+from auxbearing.analysis.coastdown_phases import (
+    QUIET_ORBIT,
+    STEADY_MOTION,
+    STEADY_SPANS,
+    PlaneWindow,
+    motion_steady,
+)
+
+SPAN = 30  # windows in a span
+
+
+def _windows(values, planes=1):
+    window = PlaneWindow("rattling", 0, 1.0, 50.0, 0.0, 1800.0, 1790.0, 0.0, 0.0, (1.0, 1.0, 0.0))
+    return [[window._replace(orbit_speed_sq=float(v))] * planes for v in values]
+
+
+def _noisy(mean, n, rng, scatter=0.3):
+    return mean * (1.0 + scatter * rng.standard_normal(n)).clip(0.05)
+
+
+def test_a_steady_rattle_is_steady():
+    rng = np.random.default_rng(1)
+    assert motion_steady(_windows(_noisy(4.7e-4, STEADY_SPANS * SPAN, rng)), SPAN)
+
+
+def test_too_few_windows_are_never_steady():
+    assert not motion_steady(_windows([4.7e-4] * (STEADY_SPANS * SPAN - 1)), SPAN)
+    assert not motion_steady(_windows([4.7e-4] * 10), 0)
+
+
+def test_a_swing_building_up_is_not_steady():
+    values = np.concatenate([np.full(SPAN, 1.5e-4), np.full(SPAN, 2.5e-4), np.full(SPAN, 4.7e-4)])
+    assert not motion_steady(_windows(values), SPAN)
+
+
+def test_a_bounce_dying_out_then_a_swing_building_up_is_not_steady_where_they_meet():
+    """Two spans either side of the trough agree (1.2e-4 each); the third shows the change."""
+    values = np.concatenate([np.full(SPAN, 4.0e-4), np.linspace(2.0e-4, 0.4e-4, SPAN),
+                             np.linspace(0.4e-4, 2.0e-4, SPAN)])
+    halves = [values[SPAN:2 * SPAN].mean(), values[2 * SPAN:].mean()]
+    assert abs(halves[0] - halves[1]) <= STEADY_MOTION * max(halves)  # two spans alone would pass
+    assert not motion_steady(_windows(values), SPAN)
+
+
+def test_every_plane_must_be_steady():
+    steady = [[w[0], w[0]._replace(orbit_speed_sq=v)] for w, v in
+              zip(_windows([4.7e-4] * (3 * SPAN)), np.linspace(1e-4, 4e-4, 3 * SPAN), strict=True)]
+    assert not motion_steady(steady, SPAN)
+
+
+def test_a_journal_at_rest_in_its_bore_is_steady():
+    values = np.linspace(0.0, 0.5 * QUIET_ORBIT, STEADY_SPANS * SPAN)
+    assert motion_steady(_windows(values, planes=2), SPAN)
