@@ -544,9 +544,10 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             overrolling[k].append((revs, w.load))
         verdict, reason = limits.update(temps, session.t)
         record(0)
-        if any(p.state not in REDUCIBLE for p in windows) or (motion and not same_families(motion[-1], windows)):
+        reducible = all(p.state in REDUCIBLE for p in windows)
+        if not reducible or (motion and not same_families(motion[-1], windows)):
             motion, steady = [], False
-        if all(p.state in REDUCIBLE for p in windows):
+        if reducible:
             span = math.ceil(STEADY_SPAN / length - 1e-9)
             motion.append(windows)
             del motion[:-STEADY_SPANS * span]

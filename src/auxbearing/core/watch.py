@@ -52,10 +52,9 @@ STOP_NAMES = {JOURNAL_PRESSURE: "journal_contact_overstress", BALL_STRESS: "ball
 #: peak stress (sigma ~ C(alpha) Q^(1/3) and C varies by far less than 1 - 0.7^(1/3) over the loaded
 #: contact angles), so the stresses are evaluated only on the others.
 STRESS_CANDIDATE_LOAD = 0.7
-#: Columns of a whirl-window record.
-#: ``orbit_speed_sq`` is the mean square of the journal centre's speed in its bore [m^2/s^2]: how much the
-#: journal moves (rattle, swing, whirl), which a coast-down's reduced stretch freezes
-#: (:func:`auxbearing.analysis.coastdown_phases.motion_steady`).
+#: Columns of a whirl-window record. ``orbit_speed_sq`` is the mean square of the journal centre's speed in its
+#: bore [m^2/s^2]: how much the journal moves (rattle, swing, whirl), which a coast-down's reduced stretch
+#: freezes (:func:`auxbearing.analysis.coastdown_phases.motion_steady`).
 WHIRL_FIELDS = ("whirl_speed", "mean_radius", "contact_fraction", "spin_speed", "race_speed", "duration",
                 "mean_normal_force", "mean_axial_force", "orbit_speed_sq")
 _FORCE, _STRESS, _AXIAL = range(3)
