@@ -192,14 +192,10 @@ def motion_steady(windows: list[list[PlaneWindow]], count: int) -> bool:
     """
     if count < 1 or len(windows) < STEADY_SPANS * count:
         return False
-    for k in range(len(windows[-1])):
-        means = [float(np.mean([w[k].orbit_speed_sq for w in windows[len(windows) - (j + 1) * count:
-                                                                     len(windows) - j * count]]))
-                 for j in range(STEADY_SPANS)]
-        top = max(means)
-        if top > QUIET_ORBIT and top - min(means) > STEADY_MOTION * top:
-            return False
-    return True
+    speeds = np.array([[p.orbit_speed_sq for p in w] for w in windows[-STEADY_SPANS * count:]])
+    means = speeds.reshape(STEADY_SPANS, count, -1).mean(axis=1)  # (span, plane)
+    top = means.max(axis=0)
+    return bool(np.all((top <= QUIET_ORBIT) | (top - means.min(axis=0) <= STEADY_MOTION * top)))
 
 
 def mean_equivalent_load(loads) -> float:
