@@ -11,6 +11,7 @@ from auxbearing.analysis.coastdown_phases import (
     QUIET_ORBIT,
     STEADY_MOTION,
     STEADY_SPANS,
+    STEADY_TREND,
     PlaneWindow,
     motion_steady,
 )
@@ -49,6 +50,33 @@ def test_a_bounce_dying_out_then_a_swing_building_up_is_not_steady_where_they_me
     halves = [values[SPAN:2 * SPAN].mean(), values[2 * SPAN:].mean()]
     assert abs(halves[0] - halves[1]) <= STEADY_MOTION * max(halves)  # two spans alone would pass
     assert not motion_steady(_windows(values), SPAN)
+
+
+def test_a_transient_dying_out_slowly_is_not_steady():
+    """The compressor's coupling end after its drop: the orbit speed falls by about 7 % a span for seconds.
+
+    Every span is within STEADY_MOTION of the largest; the first and last differ by more than STEADY_TREND.
+    """
+    values = np.concatenate([np.full(SPAN, 2.07e-4 * 0.93**j) for j in range(STEADY_SPANS)])
+    means = values.reshape(STEADY_SPANS, SPAN).mean(axis=1)
+    assert means.max() - means.min() <= STEADY_MOTION * means.max()
+    assert means[0] - means[-1] > STEADY_TREND * means.max()
+    assert not motion_steady(_windows(values), SPAN)
+
+
+def test_a_steady_rattle_with_span_to_span_scatter_is_steady():
+    """Scatter without a trend (a middle span off by 15 %) passes: only a drift from first to last fails."""
+    values = np.concatenate([np.full(SPAN, 4.7e-4), np.full(SPAN, 4.7e-4 * 0.85), np.full(SPAN, 4.7e-4 * 0.97)])
+    assert motion_steady(_windows(values), SPAN)
+
+
+def test_a_drift_the_slowing_rotor_explains_is_steady():
+    """A rotor losing 9 % of its speed over the spans: a motion locked to it loses 17 % of its mean square speed."""
+    omega = np.linspace(1800.0, 1800.0 * 0.91, STEADY_SPANS * SPAN)
+    values = 4.7e-4 * (omega / omega[0]) ** 2
+    windows = [[w[0]._replace(rotor_speed=float(o))] for w, o in zip(_windows(values), omega, strict=True)]
+    assert motion_steady(windows, SPAN)
+    assert not motion_steady(_windows(values), SPAN)  # the same drift at a steady speed is a transient
 
 
 def test_every_plane_must_be_steady():
