@@ -4,7 +4,7 @@ The reduced model (auxbearing.core.spin, states chosen by auxbearing.analysis.co
 dynamics where it runs: over the same simulated time, the rotor's speed within 2 % (of the speed lost) and
 every part's peak temperature within 2 K, the smallest clearances within 2 % of their change, the damage per
 drop within 2 %. Full dynamics costs 5-10 s of computing per simulated second on these machines, so the
-comparison runs the first seconds here: 4 s, of which the reduced model carries 2.0-2.9 s once the journals'
+comparison runs the first seconds here: 4 s, of which the reduced model carries 1.2-2.9 s once the journals'
 motion after the drop has stopped changing (coastdown_phases.motion_steady); the closing note of the coast-down
 issue gives the same table to 30 s, made by this module's `compare`.
 """
@@ -51,13 +51,15 @@ CASES = ["paper_rig", "paper_rig_two_planes", "blower", "blower:7208", "blower:6
 #: standstill time lies within 1-4 % of full dynamics', which itself moves by 3 % with where the drop window
 #: ends). Every other example holds 2 %.
 SPEED_TOLERANCE = {"paper_rig": 0.05, "paper_rig_two_planes": 0.05}
-#: Damage per drop over the first 4 s of the two non-drive ends, loaded at a third of their drive ends and
-#: rattling: the few windows after the handover set the load of most of the reduced revolutions. Measured: blower
-#: -3.7 %, compressor +3.0 % (their drive ends +0.4 and +1.8 %); every other plane within 2 % (the DB pair
-#: -0.1 / +1.1 %, the hybrid -0.0 / +0.5 %). A rattle is chaotic
-#: (the last bits of the arithmetic move it), so these hold the first seconds to what they are; over 30 s the
-#: same planes are +0.5 and +3.4 %.
-DAMAGE_TOLERANCE = {("blower", 1): 0.05, ("compressor", 1): 0.04}
+#: Damage per drop over the first 4 s where the few windows after the handover set the load of most of the
+#: reduced revolutions (1.2-1.7 s of them) and a rattle's windows scatter: measured with the stretches charged by
+#: the trapezoidal rule and the first stretch waiting for a motion without drift, the blower's non-drive end
+#: (loaded at 0.4 of its drive end) +3.8 %, the 7208 DB pair's non-drive end +2.3 %, the 7208's drive end
+#: -2.0 %; every other plane within 1.9 %. A rattle is chaotic (the last bits of the arithmetic move it), so
+#: these hold the first seconds to what they are with room for another processor; over 30 s the same planes are
+#: +0.1, -5.1 and +0.1 % (the DB pair's rattle is unstable and grows from 5 s in full dynamics: the closing note
+#: of the coast-down issue).
+DAMAGE_TOLERANCE = {("blower", 1): 0.05, ("blower:7208 DB light", 1): 0.04, ("blower:7208", 0): 0.03}
 
 
 @pytest.mark.slow
