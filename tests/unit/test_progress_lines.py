@@ -31,10 +31,11 @@ def test_quiet_prints_nothing(capsys):
     assert capsys.readouterr().err == ""
 
 
-def test_a_reporter_of_stages_gives_no_time_left(capsys):
+def test_a_reporter_of_stages_gives_no_time_left_and_no_percentage(capsys):
     reporter = ProgressReporter("verify demo", time_left=False)
     reporter.every = 0.0
     with reporter:
-        reporter(0.5, "coast-down")
+        reporter(0.99, "convergence of the governing case")
     lines = [ln for ln in capsys.readouterr().err.splitlines() if ln]
-    assert lines and all("left" not in ln for ln in lines), lines
+    assert lines and all(ln.startswith("verify demo: convergence of the governing case (") for ln in lines), lines
+    assert all("left" not in ln and "%" not in ln for ln in lines), lines

@@ -150,7 +150,9 @@ class ProgressReporter:
 
         self.label = label
         self.quiet = quiet
-        #: whether the fraction is a share of the work (the time left follows from it) or only of stages
+        #: whether the fraction is a share of the work (its percentage and the time left follow from it) or only
+        #: counts stages, whose work differs a hundredfold: then neither is shown (a verification sat at "99 %"
+        #: for its last 100 s), only what is being done and the time since the start
         self.time_left = time_left
         self.tty = sys.stderr.isatty()
         self._clock = time.monotonic
@@ -168,11 +170,13 @@ class ProgressReporter:
             from rich.console import Console
             from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 
-            columns = [TextColumn("{task.description}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
-                       TimeElapsedColumn()] + ([TimeRemainingColumn()] if self.time_left else [])
+            columns = ([TextColumn("{task.description}"), BarColumn()]
+                       + ([TextColumn("{task.percentage:>3.0f}%")] if self.time_left else [])
+                       + [TimeElapsedColumn()] + ([TimeRemainingColumn()] if self.time_left else []))
             self._bar = Progress(*columns, console=Console(stderr=True), transient=True)
             self._bar.__enter__()
-            self._task = self._bar.add_task(self.label, total=1.0)
+            # a total of None makes the bar pulse: stages counted are not a share of the work
+            self._task = self._bar.add_task(self.label, total=1.0 if self.time_left else None)
         else:
             import threading
 
@@ -185,7 +189,9 @@ class ProgressReporter:
         if self.quiet:
             return
         if self._bar is not None:
-            self._bar.update(self._task, completed=fraction, description=f"{self.label} {status}".strip())
+            if self.time_left:
+                self._bar.update(self._task, completed=fraction)
+            self._bar.update(self._task, description=f"{self.label} {status}".strip())
             return
         with self._lock:
             self._state = (fraction, status)
@@ -196,9 +202,9 @@ class ProgressReporter:
         fraction, status = self._state
         self._last = self._clock()
         elapsed = self._last - self._start
+        done = f"{100.0 * fraction:.0f} % " if self.time_left else ""
         left = _time_left(fraction, elapsed) if self.time_left else ""
-        click.echo(f"{self.label}: {100.0 * fraction:.0f} % {status} ({elapsed:.0f} s{left})".replace("  ", " "),
-                   err=True)
+        click.echo(f"{self.label}: {done}{status} ({elapsed:.0f} s{left})".replace("  ", " "), err=True)
 
     def _heartbeat(self) -> None:
         while not self._stop.wait(self.every / 5.0):

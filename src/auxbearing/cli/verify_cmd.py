@@ -66,7 +66,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         if not all(specs):
             raise InputError.for_field("--candidates", candidates, "a comma-separated list of bearings, no empty item")
     with atomic_output_dir(out_dir) as tmp:
-        # its fraction counts stages, whose work differs a hundredfold: a time left from it would mislead
+        # its fraction counts stages, whose work differs a hundredfold: a percentage or time left would mislead
         with ProgressReporter(f"verify {machine_spec}", quiet, time_left=False) as progress:
             steps = {"n": 0}
 
