@@ -231,9 +231,10 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
     its whirl tendency; its verdict cannot change, and its whirl criterion says how few drops it rests on.
 
     The drops and coast-downs of the design and of every candidate go to the cluster at once. Then, side by
-    side (:func:`_side_by_side`): the design's campaign, after which the design is judged and its governing
-    case runs again tighter; each candidate's campaign once its own cases are in; the geometry search, then
-    the recommended geometry's own verification. Their batches queue behind the first runs, so no worker idles.
+    side (:func:`_side_by_side`): the design's governing case again tighter as soon as it is known (a criterion
+    its drops or coast-down fail, else once its campaign is in), and its campaign; each candidate's campaign
+    once its own cases are in; the geometry search, then the recommended geometry's own verification. Their
+    batches queue behind the first runs, so no worker idles.
     """
     n = campaign_size(settings, quick, samples)
     designs = [("design", data, name, out_dir / "campaign.zarr")]
@@ -262,13 +263,21 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
                         criteria["max_backward_whirl_probability"], client=executor.client)
 
     def design() -> tuple[dict, Callable]:
-        # once the design is judged, its governing case runs again tighter, beside whatever still runs
-        campaign("design")
+        # the design's governing case runs again tighter, beside whatever still runs, as soon as it is known: the
+        # campaign's criterion is judged last, so a criterion its own drops or coast-down fail governs whatever
+        # the campaign shows (the blower: its re-run no longer waits for the campaign and ends the verification)
         cases, futures, *_ = planned["design"]
         collect_cases(cases, futures)
+        converging, before_campaign = None, judge(cases, criteria)
+        if any(c.passed is False for c in before_campaign):
+            say("convergence of the governing case")
+            converging = convergence_started(cases, before_campaign, executor.ahead())
+        campaign("design")
         judged = _design(cases, criteria)
-        say("convergence of the governing case")
-        return judged, convergence_started(judged["cases"], judged["criteria"], executor.ahead())
+        if converging is None:
+            say("convergence of the governing case")
+            converging = convergence_started(judged["cases"], judged["criteria"], executor.ahead())
+        return judged, converging
 
     def search() -> dict | None:
         # a chain of steps that wait on each other: its tasks go ahead of the campaigns' batches
