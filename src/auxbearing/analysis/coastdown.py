@@ -25,8 +25,8 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   within 1 %, at 2.5 times the cost). A stretch's revolutions are charged at the load measured before it and
   the load the first windows after it measure, by the trapezoidal rule on the damage per revolution
   (:func:`auxbearing.analysis.coastdown_phases.stretch_load`). With the default of no settling and the first
-  stretch waiting for a steady motion, the damage per drop over 30 s lies within 2 % of full dynamics on 13
-  of the examples' and candidates' 17 planes and within 5.2 % on all.
+  stretch waiting for a steady motion without drift, the damage per drop over 30 s lies within 2 % of full
+  dynamics on 14 of the examples' and candidates' 17 planes and within 5.2 % on all.
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
 (:func:`spent_tail`): the spin energy left could warm the smallest part by less than
@@ -466,7 +466,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     checked: list = []  # each full window's planes since the last stretch
     motion: list = []  # the last full windows in one family of reducible states, for motion_steady
     steady = False  # the motion has been found steady since it last changed state
-    ending = None  # the last stretch, until the windows after it have measured the load at its end
+    ending = None  # the last stretch (its states, its over-rolling rows, the windows since) until its end is measured
     settling = 0
     stopped_at = None
 
@@ -548,17 +548,18 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         for k, w in enumerate(windows):
             revs = abs(w.race_speed) * length / (2.0 * math.pi)
             overrolling[k].append((revs, w.load))
-        if ending is not None:  # the windows after a stretch give the load its end had
-            if same_families(windows, ending[0]):
-                ending[2].append(windows)
-                if len(ending[2]) == MIN_WINDOWS:
-                    for k, at in enumerate(ending[1]):
-                        revs, before = overrolling[k][at]
-                        after = mean_equivalent_load([w[k].load for w in ending[2]])
-                        overrolling[k][at] = (revs, stretch_load(before, after))
+        if ending is not None:  # the windows after a stretch measure the load its end had
+            states, rows, after = ending
+            if not same_families(windows, states):
+                ending = None  # the state changed somewhere in the stretch: it keeps the load it started with
+            else:
+                after.append(windows)
+                if len(after) == MIN_WINDOWS:
+                    for k, row in enumerate(rows):
+                        revs, before = overrolling[k][row]
+                        end = mean_equivalent_load([w[k].load for w in after])
+                        overrolling[k][row] = (revs, stretch_load(before, end))
                     ending = None
-            else:  # the state changed somewhere in the stretch: it keeps the load it started with
-                ending = None
         verdict, reason = limits.update(temps, session.t)
         record(0)
         reducible = all(p.state in REDUCIBLE for p in windows)

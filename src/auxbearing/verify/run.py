@@ -265,7 +265,7 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
     def design() -> tuple[dict, Callable]:
         # the design's governing case runs again tighter, beside whatever still runs, as soon as it is known: the
         # campaign's criterion is judged last, so a criterion its own drops or coast-down fail governs whatever
-        # the campaign shows (the blower: its re-run no longer waits for the campaign and ends the verification)
+        # the campaign shows (the blower's peak temperature)
         cases, futures, *_ = planned["design"]
         collect_cases(cases, futures)
         converging, before_campaign = None, judge(cases, criteria)
