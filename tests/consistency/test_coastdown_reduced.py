@@ -99,8 +99,8 @@ def _blower_with_drop(duration: str):
 
 @pytest.mark.slow
 def test_time_to_standstill_does_not_depend_on_the_drop_window():
-    """The drop window's length only moves where full dynamics hands over. Measured here: 79.399 s with 0.1 s and
-    79.396 s with 0.3 s; the shipped blower to 1 rpm 223.43 s (0.1 s) and 223.32 s (0.4 s), to 200 rpm 212.16 s and
+    """The drop window's length only moves where full dynamics hands over. Measured here: 79.413 s with 0.1 s and
+    79.428 s with 0.3 s; the shipped blower to 1 rpm 223.43 s (0.1 s) and 223.32 s (0.4 s), to 200 rpm 212.16 s and
     212.03 s. Before the reduced model waited for the races to roll, a machine braked by rolling resistance
     alone moved its standstill time by a factor of 2.4 between windows of 0.1 s and 0.5 s."""
     short = run_coastdown(_blower_with_drop("0.1 s")).summary

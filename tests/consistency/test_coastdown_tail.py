@@ -4,7 +4,8 @@ Leaving out the tail must not move a result: every part's peak temperature withi
 (coastdown.tail_temperature_rise), the damage per drop within the 0.1 % the rule allows, the extrapolated time
 to standstill within 1 % of the simulated one, and the internal clearance within 10 nm (see the test). The
 blower runs here from 3000 rpm with a seal drag of 0.2 N m and reduced stretches of up to 30 % of the speed,
-so that both runs reach standstill in seconds; the closing note of the coast-down issue gives the same
+so that both runs reach standstill in seconds (18.8 s, of which 10.5 s in reduced stretches once the swings
+have died out below coastdown_phases.QUIET_LOAD); the closing note of the coast-down issue gives the same
 comparison on the blower from its full speed (standstill 223.25 s simulated, 222.60 s with the tail left
 out; 93.6 against 43.9 s of computing).
 """

@@ -8,12 +8,14 @@ check, not a published number.
 import numpy as np
 
 from auxbearing.analysis.coastdown_phases import (
+    QUIET_LOAD,
     QUIET_ORBIT,
     STEADY_MOTION,
     STEADY_SPANS,
     STEADY_TREND,
     PlaneWindow,
     motion_steady,
+    quiet_orbits,
 )
 
 SPAN = 30  # windows in a span
@@ -88,3 +90,16 @@ def test_every_plane_must_be_steady():
 def test_a_journal_at_rest_in_its_bore_is_steady():
     values = np.linspace(0.0, 0.5 * QUIET_ORBIT, STEADY_SPANS * SPAN)
     assert motion_steady(_windows(values, planes=2), SPAN)
+
+
+def test_a_swing_dying_out_below_the_quiet_level_is_steady():
+    """The blower at low speed: its swing halves every 0.5 s while the journals roll; a load of 130 N, 0.2 mm."""
+    from types import SimpleNamespace
+
+    machine = SimpleNamespace(rotor=SimpleNamespace(mass=20.0), planes=[SimpleNamespace(radial_clearance=2e-4)])
+    quiet = quiet_orbits(machine, _windows([0.0])[0][:1])[0]  # the window's mean force is 50 N
+    assert quiet == QUIET_LOAD * 50.0 * 2e-4 / 20.0
+    dying = quiet * 0.9 * 0.5 ** np.linspace(0.0, 2.0, STEADY_SPANS * SPAN)
+    assert not motion_steady(_windows(dying), SPAN)  # a trend the range and drift tests refuse
+    assert motion_steady(_windows(dying), SPAN, [quiet])
+    assert not motion_steady(_windows(dying * 2.0), SPAN, [quiet])  # above it, the motion still matters

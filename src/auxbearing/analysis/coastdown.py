@@ -70,6 +70,7 @@ from auxbearing.analysis.coastdown_phases import (
     mean_equivalent_load,
     motion_steady,
     plane_window,
+    quiet_orbits,
     same_families,
     settled,
     spin_model,
@@ -569,7 +570,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             span = math.ceil(STEADY_SPAN / length - 1e-9)
             motion.append(windows)
             del motion[:-STEADY_SPANS * span]
-            steady = steady or motion_steady(motion, span)
+            steady = steady or motion_steady(motion, span, quiet_orbits(machine, windows))
         if progress is not None:
             rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
             progress(done(), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
