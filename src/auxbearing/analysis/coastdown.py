@@ -62,19 +62,17 @@ from auxbearing import __version__
 from auxbearing.analysis.coastdown_life import plane_life
 from auxbearing.analysis.coastdown_phases import (
     MAX_WINDOWS,
-    MIN_WINDOWS,
     REDUCIBLE,
     STEADY_SPAN,
     STEADY_SPANS,
+    StretchEnd,
     integrate_stretch,
-    mean_equivalent_load,
     motion_steady,
     plane_window,
     quiet_orbits,
     same_families,
     settled,
     spin_model,
-    stretch_load,
 )
 from auxbearing.analysis.drop import (
     MachineRun,
@@ -467,7 +465,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     checked: list = []  # each full window's planes since the last stretch
     motion: list = []  # the last full windows in one family of reducible states, for motion_steady
     steady = False  # the motion has been found steady since it last changed state
-    ending = None  # the last stretch (its states, its over-rolling rows, the windows since) until its end is measured
+    ending = None  # the last stretch until the windows after it have measured the load at its end
     settling = 0
     stopped_at = None
 
@@ -549,18 +547,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         for k, w in enumerate(windows):
             revs = abs(w.race_speed) * length / (2.0 * math.pi)
             overrolling[k].append((revs, w.load))
-        if ending is not None:  # the windows after a stretch measure the load its end had
-            states, rows, after = ending
-            if not same_families(windows, states):
-                ending = None  # the state changed somewhere in the stretch: it keeps the load it started with
-            else:
-                after.append(windows)
-                if len(after) == MIN_WINDOWS:
-                    for k, row in enumerate(rows):
-                        revs, before = overrolling[k][row]
-                        end = mean_equivalent_load([w[k].load for w in after])
-                        overrolling[k][row] = (revs, stretch_load(before, end))
-                    ending = None
+        if ending is not None and ending.measure(windows, overrolling):
+            ending = None
         verdict, reason = limits.update(temps, session.t)
         record(0)
         reducible = all(p.state in REDUCIBLE for p in windows)
@@ -593,7 +581,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             for j in range(3):
                 session.y[session.layout.heat(k, j)] += stretch.heat[k][j]
             overrolling[k].append((stretch.race_revolutions[k], loads[k]))
-        ending = (carried, [len(o) - 1 for o in overrolling], [])
+        ending = StretchEnd(carried, [len(o) - 1 for o in overrolling])
         session.y[session.layout.drag_loss] += stretch.drag_loss
         session.y[session.layout.work_in] += stretch.work
         session.t += stretch.duration

@@ -260,6 +260,30 @@ def stretch_load(before: float, after: float) -> float:
     return mean_equivalent_load((before, after))  # two equal shares of the revolutions: the same mean
 
 
+class StretchEnd:
+    """A stretch waiting for the load at its end: the first :data:`MIN_WINDOWS` windows after it measure it.
+
+    ``rows`` are the stretch's entries in each plane's over-rolling list of (revolutions, load); once measured,
+    each is charged at :func:`stretch_load`. Windows in another family of states than the stretch carried end
+    the wait with the stretch at its starting load: where in the stretch the state changed is not known.
+    """
+
+    def __init__(self, carried: list[PlaneWindow], rows: list[int]) -> None:
+        self.carried, self.rows, self.after = carried, rows, []
+
+    def measure(self, windows: list[PlaneWindow], overrolling: list[list[tuple[float, float]]]) -> bool:
+        """Take one more window after the stretch; True once the wait is over (charged or given up)."""
+        if not same_families(windows, self.carried):
+            return True
+        self.after.append(windows)
+        if len(self.after) < MIN_WINDOWS:
+            return False
+        for k, row in enumerate(self.rows):
+            revs, before = overrolling[k][row]
+            overrolling[k][row] = (revs, stretch_load(before, mean_equivalent_load([w[k].load for w in self.after])))
+        return True
+
+
 def _viscous(plane, speed: float) -> float:
     if plane.viscous_factor <= 0.0 or plane.lubricant_viscosity <= 0.0:
         return 0.0
