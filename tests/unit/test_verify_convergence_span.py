@@ -1,0 +1,75 @@
+"""How far the convergence re-run of a coast-down goes when the verdict rests on an extreme over time.
+
+The peak temperature is reached long before standstill (the blower's hottest part at 153 s of 215 s), so the
+tighter run goes to a little past that time, not to standstill; when its own extreme is still coming there,
+the whole run is made after all. The runs here are stand-ins: what is checked is what gets submitted.
+"""
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from auxbearing.machine.files import read_machine
+from auxbearing.verify.cases import Cases
+from auxbearing.verify.convergence import EXTREME_MARGIN, convergence_started
+from auxbearing.verify.criteria import Criterion
+
+HOTTEST = "peak bearing temperature"
+
+
+def _run(peak_at: float, end: float, peak: float = 121.5, until_stop: bool = True):
+    """A coast-down stand-in whose hottest part peaks at ``peak_at`` [s] on a run of ``end`` seconds."""
+    time = np.linspace(0.0, end, 401)
+    rise = (peak - 20.0) * np.exp(-(((time - peak_at) / (0.3 * end)) ** 2))
+    temperature = np.stack([20.0 + rise, 20.0 + 0.5 * rise], axis=1)[:, :, None] * np.ones((1, 1, 3))
+    history = xr.Dataset({"temperature": (("time", "plane", "node"), temperature)}, coords={"time": time})
+    planes = [{"max_temperature_C": {"race": float(temperature[:, k].max())}} for k in range(2)]
+    return SimpleNamespace(history=history, summary={"planes": planes, "until_stop": until_stop,
+                                                     "simulated_s": end, "verdict": "ok"})
+
+
+class Recorder:
+    """An executor that answers each submission with the next prepared run and keeps what it was asked."""
+
+    def __init__(self, *answers):
+        self.answers = list(answers)
+        self.asked = []
+
+    def submit(self, fn, *args):
+        self.asked.append(args[1:])
+        answer = self.answers.pop(0)
+        return SimpleNamespace(result=lambda: answer)
+
+
+def _failing_hottest() -> list:
+    return [Criterion(HOTTEST, 120.0, 121.5, -0.01, False, "degC", "upper", "given", "coast-down, drive end")]
+
+
+def test_the_tighter_run_stops_a_little_past_the_first_runs_peak():
+    machine = read_machine("blower").for_batch()
+    cases = Cases(machine=machine, coastdown=_run(peak_at=150.0, end=215.0))
+    executor = Recorder(_run(peak_at=151.0, end=165.0, peak=121.6))
+    found = convergence_started(cases, _failing_hottest(), executor)()
+    span = 150.0 * (1.0 + EXTREME_MARGIN)
+    assert executor.asked == [(False, pytest.approx(span, abs=0.6))]  # not to standstill
+    assert f"past the first run's extreme at {150.0:.1f} s" in found["case"]
+    ambient = machine.coastdown.ambient_temperature - 273.15
+    assert found["change"] == pytest.approx((121.6 - 121.5) / (121.5 - ambient), rel=1e-3)
+
+
+def test_an_extreme_still_coming_at_the_end_of_the_tighter_run_asks_for_the_whole_run():
+    cases = Cases(machine=read_machine("blower").for_batch(), coastdown=_run(peak_at=150.0, end=215.0))
+    executor = Recorder(_run(peak_at=165.0, end=165.0), _run(peak_at=170.0, end=215.0, peak=121.7))
+    found = convergence_started(cases, _failing_hottest(), executor)()
+    assert executor.asked[1] == (True, None)  # the whole tighter coast-down, to standstill as the first ran
+    assert found["case"] == "the coast-down (speed step halved too)"
+    assert found["tightened"] > found["as_run"]
+
+
+def test_a_peak_near_the_end_of_the_first_run_runs_the_whole_coastdown_at_once():
+    cases = Cases(machine=read_machine("blower").for_batch(), coastdown=_run(peak_at=210.0, end=215.0))
+    executor = Recorder(_run(peak_at=210.0, end=215.0))
+    convergence_started(cases, _failing_hottest(), executor)()
+    assert executor.asked == [(True, None)]
