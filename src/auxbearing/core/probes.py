@@ -7,10 +7,12 @@ only when they are reached as module attributes, not as plain global names.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit
 
-from auxbearing.core.ballset import pair, pair_semi_major, pair_stress
+from auxbearing.core.ballset import STRESS_INNER, pair, pair_semi_major, pair_stress
 from auxbearing.core.machine import (
     D_FA,
     D_FN,
@@ -28,6 +30,10 @@ from auxbearing.core.machine import (
     rotor_kinematics,
     row_displacement,
 )
+
+#: :func:`limits_out_of_reach` answers True only when both of its bounds stay below this share of their limit
+#: (the bounds are exact; the share leaves room for the rounding of the two ways of evaluating the same state).
+LIMIT_REACH = 0.99
 
 
 @njit(cache=True)
@@ -72,6 +78,58 @@ def ball_extremes(y, m, k):
                 use = max(use, (x + a_i / lim.groove_radius_inner[k]) / lim.shoulder_angle_inner[k],
                           (x + a_o / lim.groove_radius_outer[k]) / lim.shoulder_angle_outer[k])
     return worst, use
+
+
+@njit(cache=True)
+def table_bound(bs, row):
+    """An upper bound of table ``row`` of a ball set over every contact angle (:func:`~auxbearing.core.ballset.table`).
+
+    On a node interval the cubic Hermite interpolant is y0 h00 + y1 h01 + m0 h10 + m1 h11 with h00, h01 >= 0
+    summing to 1 and |h10|, |h11| <= 4/27 (Burden & Faires, *Numerical Analysis*, Sec. 3.4), so it stays below
+    max(y0, y1) + 4/27 (|m0| + |m1|); beyond the last node the table is constant.
+    """
+    values = bs.tables[row, 0]
+    slopes = bs.tables[row, 1]
+    h = bs.table_step
+    bound = values[values.size - 1]
+    for i in range(values.size - 1):
+        bound = max(bound, max(values[i], values[i + 1]) + 4.0 / 27.0 * h * (abs(slopes[i]) + abs(slopes[i + 1])))
+    return bound
+
+
+@njit(cache=True)
+def limits_out_of_reach(y, m, k, qmax, bounds):
+    """True when no ball contact of plane k can reach the ball-stress limit or run over a groove shoulder.
+
+    Upper bounds of what :func:`ball_extremes` evaluates contact by contact, from the largest pair load ``qmax``
+    alone: sigma = C(alpha) Q^(1/3) <= C_max qmax^(1/3), and (|alpha| + c_a(alpha) Q^(1/3) / R) / psi with
+    |alpha| = atan(|a| / r) at most atan((A sin(alpha0) + |delta_a|) / (A cos(alpha0) - Pd/2 - |d|)) for the
+    ring's axial and radial displacement delta_a, d (the pair geometry of :func:`auxbearing.core.ballset.pair`).
+    ``bounds`` holds the table bounds (:func:`table_bound`: inner and outer stress, inner and outer
+    semi-major axis), filled here when negative. Both bounds must stay below :data:`LIMIT_REACH` of their limit.
+    """
+    bs = m.ballsets[k]
+    if bounds[0] < 0.0:
+        for i in range(4):
+            bounds[i] = table_bound(bs, STRESS_INNER + i)
+    if qmax <= 0.0:
+        return True
+    lim = m.limits
+    cube = qmax ** (1.0 / 3.0)
+    if max(bounds[0], bounds[1]) * cube >= LIMIT_REACH * lim.ball_stress:
+        return False
+    b = N_ROTOR + k * N_PLANE
+    big_a = bs.curvature_distance
+    worst = 0.0
+    for row in range(2 if m.planes.rows[k] > 1.0 else 1):
+        zr, dx, dy = row_displacement(m, k, row, y[b + RZ], y[b + RX] - y[b + OX], y[b + RY] - y[b + OY])
+        r_min = big_a * bs.cos_free_angle - 0.5 * m.ballset_clearance[k] - math.hypot(dx, dy)
+        if r_min <= 0.0:
+            return False
+        worst = max(worst, math.atan((big_a * bs.sin_free_angle + abs(zr)) / r_min))
+    use = max((worst + bounds[2] * cube / lim.groove_radius_inner[k]) / lim.shoulder_angle_inner[k],
+              (worst + bounds[3] * cube / lim.groove_radius_outer[k]) / lim.shoulder_angle_outer[k])
+    return use < LIMIT_REACH
 
 
 @njit(cache=True)
