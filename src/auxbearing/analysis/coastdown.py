@@ -33,8 +33,8 @@ A run to standstill leaves out its last, slowest part once nothing in it can mov
 ``coastdown.tail_temperature_rise`` and its revolutions add less than 0.1 % to any damage; the time left to
 standstill is extrapolated at the last deceleration. On the blower this is the last 142 rpm of 18 000: 22 % of
 the computing of the run (26.7 s against 34.2 s of CPU; half of it before the windows stopped refining peaks
-they do not report), for a standstill time 0.38 % early (222.53 s against 223.39 s) and damage 0.04 % low against simulating down to
-``coastdown.stop_speed``, temperatures and clearances unchanged.
+they do not report), for a standstill time 0.38 % early (222.53 s against 223.39 s) and damage 0.04 % low
+against simulating down to ``coastdown.stop_speed``, temperatures and clearances unchanged.
 
 Heat goes into one lumped network per plane (:mod:`auxbearing.analysis.thermal`; journal, inner race, balls,
 outer race, housing, ambient): contact heat split between journal and race by Charron's partition,
