@@ -14,21 +14,10 @@ import pytest
 from auxbearing.analysis.drop import integrate_machine
 from auxbearing.core.machine import D_QMAX
 from auxbearing.core.probes import ball_extremes, limits_out_of_reach, plane_diagnostics
-from auxbearing.machine.files import machine_table, read_machine
-from auxbearing.machine.judging import candidate_tables
-from auxbearing.machine.model import machine_from_mapping
+from tests.consistency.test_coastdown_reduced import _machine
 
 #: Each limit at this multiple of what the state reaches: 1 at the limit, below 1 past it.
 SCALES = (0.5, 0.9, 0.99, 1.0, 1.01, 1.05, 1.2, 2.0, 5.0)
-
-
-def _machine(case: str):
-    spec, _, candidate = case.partition(":")
-    if not candidate:
-        return read_machine(spec)
-    data, name, base = machine_table(spec)
-    (label, tables), = candidate_tables(data, [candidate])
-    return machine_from_mapping(tables, f"{name} with {label}", base)
 
 
 @pytest.mark.parametrize("case", ["blower", "blower:7208 DB light", "heavy_fast_rotor"])
