@@ -2,8 +2,9 @@
 
 In one process, after a short drop that compiles or loads the kernels:
 
-1. one 0.2 s drop of the blower (``run_machine``), best of three: the unit the target is counted in (the
-   verification within 150 of these drops' wall time);
+1. one 0.2 s drop of the blower (``run_machine``), best of three, before and after each verification: the
+   mean of the two is the unit the target is counted in (the verification within 150 of these drops' wall
+   time; the machine's speed drifts by 20-30 % over minutes);
 2. ``verify("blower")`` on a local cluster of ``--workers`` (default 2, then 1: the cases side by side
    against one after another on the same code), each with its wall time, the CPU time of this process and
    of its worker processes, the wall time between consecutive progress messages, and the workers' time split
@@ -119,9 +120,15 @@ def main() -> None:
     runs = {}
     for workers in args.workers or [2, 1]:
         run = runs[workers] = one_verification(args.machine, workers, args.quick)
-        print(f"\nverify --machine {args.machine}{' --quick' if args.quick else ''} on {workers} worker(s): "
-              f"{run['wall']:.1f} s wall = {run['wall'] / drop:.0f} drops (target: 150), CPU {run['cpu']:.1f} s "
+        # this machine's speed drifts by 20-30 % over minutes: the unit is the drop measured before and after
+        after = one_drop(args.machine)
+        unit = 0.5 * (drop + after)
+        print(f"\none 0.2 s {args.machine} drop after it: {after:.3f} s wall (best of 3); the unit below is "
+              f"their mean, {unit:.3f} s")
+        print(f"verify --machine {args.machine}{' --quick' if args.quick else ''} on {workers} worker(s): "
+              f"{run['wall']:.1f} s wall = {run['wall'] / unit:.0f} drops (target: 150), CPU {run['cpu']:.1f} s "
               f"here + {run['workers_cpu']:.1f} s in the workers; {run['verdict'].upper()}: {run['reason']}")
+        drop = after
         for text, seconds in run["split"]:
             print(f"  {seconds:8.1f} s  {text}")
         busy = sum(seconds for _, seconds in run["cases"].values())
