@@ -230,16 +230,16 @@ class _Session:
 
         Each window has its own onsets and whirl records; the largest ball load carries over (the observer
         evaluates the ball stresses, which its range limits judge, on the steps that come near it). The windows'
-        peaks are not reported (the drop's are), so their running peaks are infinite: no step end is then a
-        candidate for the observer's refinement of a peak (:mod:`auxbearing.core.watch`), which in a steady
-        rolling at low speed ran a search on one step in four and made each step six times as dear.
+        peaks are not reported (the drop's are), so the observer tracks none (:mod:`auxbearing.core.watch`,
+        ``track_peaks``): its refinement of a peak, in a steady rolling at low speed, ran a search on one step in
+        four and made each step six times as dear.
         """
         ledger = self.y[self.layout.ledger_at:].copy()
         watch = cw.new_watch(self.y.size, self.layout.planes, self.window, math.ceil(length / self.window) + 1,
                              self.e0)
         for name in ("peak_load", "shoulder_use"):
             getattr(watch, name)[...] = getattr(self.watch, name)
-        watch.peak[...] = np.inf
+        watch.track_peaks[0] = 0.0
         self.watch = watch
         for k in range(len(self.machine.planes)):
             watch.in_contact[k] = 1.0 if _penetration(self.y, self.core, k) > 0.0 else 0.0

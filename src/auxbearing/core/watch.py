@@ -85,6 +85,9 @@ class Watch(NamedTuple):
     tmp: np.ndarray  #: (n,) working state for the dense-output searches
     diags: np.ndarray  #: (planes, len(DIAG_FIELDS)) each plane's diagnostics at the step's end
     reach: np.ndarray  #: (planes, 4) bounds of the stress and semi-major-axis tables, -1 until needed
+    #: (1,) 1: track and refine the peaks (a drop reports them); 0: do not (a coast-down's windows, which report
+    #: none), and evaluate the ball contacts only when a range limit is within reach (:func:`observe`)
+    track_peaks: np.ndarray
 
 
 def new_watch(n_states: int, n_planes: int, window: float, n_windows: int, energy0: float) -> Watch:
@@ -95,7 +98,8 @@ def new_watch(n_states: int, n_planes: int, window: float, n_windows: int, energ
                  np.zeros((5, n_states)), np.zeros(1), np.zeros(two), np.zeros(two), np.full(two, -1.0),
                  np.zeros(4), np.full(1, energy0), np.zeros(2), np.full(1, window), np.zeros(1, np.int64),
                  np.full(1, window), np.zeros((two, n_fields)), np.zeros((max(n_windows, 1), two, n_fields)),
-                 np.zeros(2, np.int64), np.zeros(n_states), np.zeros((two, len(DIAG_FIELDS))), np.full((two, 4), -1.0))
+                 np.zeros(2, np.int64), np.zeros(n_states), np.zeros((two, len(DIAG_FIELDS))), np.full((two, 4), -1.0),
+                 np.ones(1))
 
 
 @njit(cache=True, inline="always")
@@ -203,19 +207,22 @@ def observe(t, h, y0, y1, coeff, m, w):
                 w.searches[1] += 1
                 w.first_contact[k] = t + ig.dense_root(probes.gap, coeff, m, tmp, k) * h
         w.in_contact[k] = 1.0 if diag[D_PEN] > 0.0 else 0.0
-        _track_peak(w, _FORCE, k, diag[D_FN], t, h, coeff, m, tmp)
+        peaks = w.track_peaks[0] > 0.0
+        if peaks:
+            _track_peak(w, _FORCE, k, diag[D_FN], t, h, coeff, m, tmp)
         stress = 0.0
-        # where no peak is wanted (a coast-down's windows: infinite running peaks) the contacts are evaluated only
-        # when the largest ball load could bring a range limit within reach
-        if diag[D_QMAX] >= STRESS_CANDIDATE_LOAD * w.peak_load[k] and not (
-                w.peak[_STRESS, k] == math.inf and probes.limits_out_of_reach(y1, m, k, diag[D_QMAX], w.reach[k])):
+        # without peaks to track the contacts are evaluated only when the largest ball load could bring a range
+        # limit within reach
+        if diag[D_QMAX] >= STRESS_CANDIDATE_LOAD * w.peak_load[k] and (
+                peaks or not probes.limits_out_of_reach(y1, m, k, diag[D_QMAX], w.reach[k])):
             stress, use = ball_extremes(y1, m, k)
             w.shoulder_use[k] = max(w.shoulder_use[k], use)
             if use > 1.0 and code == 0:
                 code = _stop(w, SHOULDER, k, t + h, use)
         w.peak_load[k] = max(w.peak_load[k], diag[D_QMAX])
-        _track_peak(w, _STRESS, k, stress, t, h, coeff, m, tmp)
-        _track_peak(w, _AXIAL, k, abs(diag[D_FA]), t, h, coeff, m, tmp)
+        if peaks:
+            _track_peak(w, _STRESS, k, stress, t, h, coeff, m, tmp)
+            _track_peak(w, _AXIAL, k, abs(diag[D_FA]), t, h, coeff, m, tmp)
         if code == 0:
             if diag[D_FN] > lim.journal_force[k]:
                 code = _stop(w, JOURNAL_PRESSURE, k, t + h, diag[D_FN])
