@@ -48,7 +48,7 @@ study: $(KERNELS_STAMP)
 kernels: $(KERNELS_STAMP)
 
 $(KERNELS_STAMP): $(STAMP) $(CORE_SOURCES)
-	@echo "Compiling the kernels: once after an install or a change to src/auxbearing/core, about 1.5 minutes"
+	@echo "Compiling the kernels: once after an install or a change to src/auxbearing/core, about two minutes"
 	@d=$$(mktemp -d); A=$(CURDIR)/$(BIN)/auxbearing; cd $$d || exit 1; \
 	  { $$A drop --duration '0.1 ms' --quiet >/dev/null && $$A coastdown --machine paper_rig --duration 0.01 --quiet \
 	    >/dev/null && $$A drop --machine blower --scenario surge --duration '0.1 ms' --quiet >/dev/null; } & first=$$!; \
