@@ -1,5 +1,7 @@
 import os
 
+from xdist.scheduler import LoadFileScheduling
+
 os.environ.setdefault("MPLBACKEND", "Agg")
 
 from hypothesis import settings
@@ -9,3 +11,26 @@ from hypothesis import settings
 settings.register_profile("repeatable", derandomize=True)
 settings.register_profile("explore", derandomize=False)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "repeatable"))
+
+
+#: Files of long, independent tests that `make test` hands to its workers one test at a time; every other file runs
+#: whole on one worker, as pytest-xdist's --dist loadfile does, so a module fixture is computed once. The
+#: reduced/full coast-down comparisons are ten tests of 25-60 s: run as one file, they kept one worker busy for
+#: about 330 s of the suite's 560 s.
+SPREAD = {"tests/consistency/test_coastdown_reduced.py", "tests/consistency/test_coastdown_tail.py",
+          "tests/cli/test_campaign_cli.py", "tests/consistency/test_elastic_rotor.py"}
+
+
+class _FileOrTestScheduling(LoadFileScheduling):
+    """--dist loadfile, but a file in :data:`SPREAD` is split into its tests (pytest-xdist's scheduler hook;
+    its own --dist loadgroup marks cannot do it under pytest 9.2, whose test ids no longer take xdist's suffix)."""
+
+    def _split_scope(self, nodeid: str) -> str:
+        path = nodeid.split("::", 1)[0]
+        return nodeid if path in SPREAD else path
+
+
+def pytest_xdist_make_scheduler(config, log):
+    if config.getvalue("dist") == "loadfile":
+        return _FileOrTestScheduling(config, log)
+    return None
