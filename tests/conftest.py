@@ -34,3 +34,10 @@ def pytest_xdist_make_scheduler(config, log):
     if config.getvalue("dist") == "loadfile":
         return _FileOrTestScheduling(config, log)
     return None
+
+
+def pytest_collection_modifyitems(config, items):
+    """Files holding slow tests first, in their own order (a stable sort): the workers then start on the long
+    tests and the short ones fill in at the end, instead of one worker finishing a long file alone."""
+    slow_files = {item.nodeid.split("::", 1)[0] for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: item.nodeid.split("::", 1)[0] not in slow_files)
