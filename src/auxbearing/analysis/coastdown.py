@@ -460,6 +460,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     run = integrate_machine(machine, drop_length, None, None)
     drop_ds = machine_dataset(machine, run.model, run.grid, run.output_step)
     drop = MachineRun(drop_ds, machine_summary(machine, run, drop_ds, drop_length))
+    drop_ds.attrs["summary"] = _json(drop.summary)  # as run_machine's: the drop stands as a run of its own
     networks = [plane_network(machine, k, _static_share(machine, k) / max(p.bearing.ball_count, 1))
                 for k, p in enumerate(machine.planes)]
     session = _Session(machine, run)

@@ -34,6 +34,8 @@ from auxbearing.machine.judging import (
 from auxbearing.machine.model import Machine, machine_from_mapping
 from auxbearing.machine.scenario import SCENARIO_CASE
 
+#: The first case: its run is the coast-down's own drop (:func:`submit_cases`).
+MAX_SPEED = "drop at the maximum speed"
 #: A drop at low speed runs at this fraction of the maximum (ours: the bottom of a typical operating range).
 LOW_SPEED_FRACTION = 0.25
 #: ``--quick``: the drops last at most this long [s], the coast-down is run for this long [s] and the
@@ -113,7 +115,7 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
     cases = Cases(variant(data, name, base, drop=drop), tables=tuple(data))
     speed = machine.rotor.speed
     low = settings["low_speed"] if settings["low_speed"] is not None else LOW_SPEED_FRACTION * abs(speed)
-    cases.machines["drop at the maximum speed"] = cases.machine
+    cases.machines[MAX_SPEED] = cases.machine
     cases.machines["drop at low speed"] = variant(
         data, name, base, rotor={"speed": f"{float(math.copysign(low, speed))!r} rad/s"}, drop=drop)
     if machine.rotor.axial_force != 0.0:
@@ -139,20 +141,23 @@ def _coastdown_task(machine: Machine, quick: bool) -> CoastdownRun:
 def submit_cases(cases: Cases, executor) -> dict:
     """Hand the drops and the coast-down of a planned design to ``executor`` (``submit(fn, *args)``): futures.
 
-    The coast-down starts at once, beside the drops: it integrates its own drop at the maximum speed, and its
-    result is set aside when that drop leaves the model's range (:func:`collect_cases`).
+    The coast-down starts at once, beside the drops. It integrates its own drop at the maximum speed first, the
+    same run as :func:`auxbearing.analysis.drop.run_machine` of the same machine, so that case is not run again:
+    :func:`collect_cases` takes it from the coast-down, and sets the rest of the coast-down aside when that drop
+    leaves the model's range.
     """
-    futures = {case: executor.submit(run_machine, machine) for case, machine in cases.machines.items()}
+    futures = {case: executor.submit(run_machine, machine) for case, machine in cases.machines.items()
+               if case != MAX_SPEED}
     futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick)
     return futures
 
 
 def collect_cases(cases: Cases, futures: dict) -> Cases:
     """The runs of :func:`submit_cases` into ``cases``, with the notes they call for."""
-    for case in cases.machines:
-        cases.drops[case] = futures[case].result()
     coastdown = futures["coast-down"].result()
-    first = cases.drops["drop at the maximum speed"].summary
+    for case in cases.machines:
+        cases.drops[case] = coastdown.drop if case == MAX_SPEED else futures[case].result()
+    first = cases.drops[MAX_SPEED].summary
     if first["verdict"] != "ok":
         cases.notes.append("the coast-down was not run: the drop at the maximum speed it starts from already left "
                            f"the model's range ({first['reason']})")

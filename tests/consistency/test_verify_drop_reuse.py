@@ -1,0 +1,52 @@
+"""The verification takes its drop at the maximum speed from the coast-down (auxbearing.verify.cases.submit_cases):
+the coast-down's drop must be the run run_machine makes of the same machine, to the last digit (its timings aside)."""
+
+import json
+
+import numpy as np
+import xarray as xr
+
+from auxbearing.analysis.coastdown import run_coastdown
+from auxbearing.analysis.drop import run_machine
+from auxbearing.machine.files import machine_table
+from auxbearing.verify.cases import MAX_SPEED, Immediate, collect_cases, plan_cases, submit_cases
+
+#: What a run measures of the computer, not of the machine.
+TIMINGS = ("wall_time_s", "compile_or_cache_load_s")
+
+
+def _physics(summary: dict) -> str:
+    return json.dumps({k: v for k, v in summary.items() if k not in TIMINGS}, sort_keys=True, default=str)
+
+
+def test_the_coastdowns_drop_is_the_drop_at_the_maximum_speed():
+    data, name, base = machine_table("blower")
+    machine = plan_cases(data, name, base, quick=True).machines[MAX_SPEED]
+    alone = run_machine(machine)
+    within = run_coastdown(machine, until_stop=False, duration=machine.simulation.duration).drop
+    assert _physics(within.summary) == _physics(alone.summary)
+    assert _physics(json.loads(within.dataset.attrs["summary"])) == _physics(alone.summary)
+    xr.testing.assert_identical(within.dataset.drop_attrs(), alone.dataset.drop_attrs())
+
+
+class _Counting(Immediate):
+    def __init__(self):
+        self.calls = []
+
+    def submit(self, fn, *args, **kwargs):
+        self.calls.append(fn.__name__)
+        return super().submit(fn, *args, **kwargs)
+
+
+def test_a_verification_runs_the_drop_at_the_maximum_speed_once(monkeypatch):
+    import auxbearing.verify.cases as vc
+
+    data, name, base = machine_table("paper_rig")
+    cases = plan_cases(data, name, base, quick=True)
+    monkeypatch.setattr(vc, "QUICK_COASTDOWN", float(cases.machine.simulation.duration))
+    executor = _Counting()
+    collected = collect_cases(cases, submit_cases(cases, executor))
+    assert executor.calls.count("run_machine") == len(cases.machines) - 1
+    assert list(collected.drops) == list(cases.machines)
+    assert collected.drops[MAX_SPEED] is collected.coastdown.drop
+    assert np.isfinite(collected.drops[MAX_SPEED].summary["planes"][0]["peak_contact_force_N"])
