@@ -1,6 +1,7 @@
 """The verification takes its drop at the maximum speed from the coast-down (auxbearing.verify.cases.submit_cases):
 the coast-down's drop must be the run run_machine makes of the same machine, to the last digit (its timings aside)."""
 
+import copy
 import json
 
 import numpy as np
@@ -50,3 +51,15 @@ def test_a_verification_runs_the_drop_at_the_maximum_speed_once(monkeypatch):
     assert list(collected.drops) == list(cases.machines)
     assert collected.drops[MAX_SPEED] is collected.coastdown.drop
     assert np.isfinite(collected.drops[MAX_SPEED].summary["planes"][0]["peak_contact_force_N"])
+
+
+def test_a_coastdown_shorter_than_the_drop_leaves_the_drop_its_own_run():
+    data, name, base = machine_table("paper_rig")
+    data = copy.deepcopy(data)
+    data.setdefault("coastdown", {})["max_time"] = "1 ms"
+    cases = plan_cases(data, name, base, quick=True)
+    executor = _Counting()
+    collected = collect_cases(cases, submit_cases(cases, executor))
+    assert executor.calls.count("run_machine") == len(cases.machines)
+    assert collected.drops[MAX_SPEED] is not collected.coastdown.drop
+    assert collected.drops[MAX_SPEED].summary["duration_s"] == cases.machine.simulation.duration

@@ -147,16 +147,24 @@ def submit_cases(cases: Cases, executor) -> dict:
     leaves the model's range.
     """
     futures = {case: executor.submit(run_machine, machine) for case, machine in cases.machines.items()
-               if case != MAX_SPEED}
+               if case != MAX_SPEED or not _coastdown_holds_the_drop(cases)}
     futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick)
     return futures
+
+
+def _coastdown_holds_the_drop(cases: Cases) -> bool:
+    """Whether the coast-down runs at least the drop's duration (a ``coastdown.max_time`` shorter would cut it)."""
+    horizon = cases.machine.coastdown.max_time
+    if cases.quick:
+        horizon = min(QUICK_COASTDOWN, horizon)
+    return horizon >= cases.machine.simulation.duration
 
 
 def collect_cases(cases: Cases, futures: dict) -> Cases:
     """The runs of :func:`submit_cases` into ``cases``, with the notes they call for."""
     coastdown = futures["coast-down"].result()
     for case in cases.machines:
-        cases.drops[case] = coastdown.drop if case == MAX_SPEED else futures[case].result()
+        cases.drops[case] = futures[case].result() if case in futures else coastdown.drop
     first = cases.drops[MAX_SPEED].summary
     if first["verdict"] != "ok":
         cases.notes.append("the coast-down was not run: the drop at the maximum speed it starts from already left "
