@@ -60,11 +60,11 @@ $(KERNELS_STAMP): $(STAMP) $(CORE_SOURCES)
 
 test: $(STAMP) $(ROSS_STAMP) $(KERNELS_STAMP)
 	$(BIN)/ruff check src tests benchmarks
-	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadfile --no-loadscope-reorder --durations=15
+	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadfile --durations=15
 
 quick: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks
-	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadfile --no-loadscope-reorder -m "not slow"
+	$(TEST_ENV) $(BIN)/python -m pytest -n logical --dist loadfile -m "not slow"
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py

@@ -38,8 +38,6 @@ def pytest_xdist_make_scheduler(config, log):
 
 def pytest_collection_modifyitems(config, items):
     """Files holding slow tests first, in their own order (a stable sort): the workers then start on the long
-    tests and the short ones fill in at the end, instead of one worker finishing a long file alone. pytest-xdist
-    keeps this order only with --no-loadscope-reorder (the Makefile's); by default it sends the files with the
-    most tests first, which put each spread test, a unit of one, last: the CI's last 4 % of tests took 3 minutes."""
+    tests and the short ones fill in at the end, instead of one worker finishing a long file alone."""
     slow_files = {item.nodeid.split("::", 1)[0] for item in items if item.get_closest_marker("slow")}
     items.sort(key=lambda item: item.nodeid.split("::", 1)[0] not in slow_files)
