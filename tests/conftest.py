@@ -21,12 +21,16 @@ SPREAD = {"tests/consistency/test_coastdown_reduced.py", "tests/consistency/test
           "tests/cli/test_campaign_cli.py", "tests/consistency/test_elastic_rotor.py"}
 
 
+def _file_of(nodeid: str) -> str:
+    return nodeid.split("::", 1)[0]
+
+
 class _FileOrTestScheduling(LoadFileScheduling):
     """--dist loadfile, but a file in :data:`SPREAD` is split into its tests (pytest-xdist's scheduler hook;
     its own --dist loadgroup marks cannot do it under pytest 9.2, whose test ids no longer take xdist's suffix)."""
 
     def _split_scope(self, nodeid: str) -> str:
-        path = nodeid.split("::", 1)[0]
+        path = _file_of(nodeid)
         return nodeid if path in SPREAD else path
 
 
@@ -42,5 +46,5 @@ def pytest_collection_modifyitems(config, items):
     each, come last, the long ones among them first. (Kept in this order throughout, --no-loadscope-reorder,
     the CI took 809 s; in xdist's order 743 s, and 807 s later the same evening: the machine's drift, not the
     order.)"""
-    slow_files = {item.nodeid.split("::", 1)[0] for item in items if item.get_closest_marker("slow")}
-    items.sort(key=lambda item: item.nodeid.split("::", 1)[0] not in slow_files)
+    slow_files = {_file_of(item.nodeid) for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: _file_of(item.nodeid) not in slow_files)

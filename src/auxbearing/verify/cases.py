@@ -132,9 +132,14 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
     return cases
 
 
+def _coastdown_horizon(machine: Machine, quick: bool) -> float:
+    """Simulated time a case's coast-down may run [s]: ``coastdown.max_time``, or the quick look's first seconds."""
+    return min(QUICK_COASTDOWN, machine.coastdown.max_time) if quick else machine.coastdown.max_time
+
+
 def _coastdown_task(machine: Machine, quick: bool) -> CoastdownRun:
     if quick:
-        return run_coastdown(machine, until_stop=False, duration=min(QUICK_COASTDOWN, machine.coastdown.max_time))
+        return run_coastdown(machine, until_stop=False, duration=_coastdown_horizon(machine, quick))
     return run_coastdown(machine)
 
 
@@ -142,22 +147,14 @@ def submit_cases(cases: Cases, executor) -> dict:
     """Hand the drops and the coast-down of a planned design to ``executor`` (``submit(fn, *args)``): futures.
 
     The coast-down starts at once, beside the drops. It integrates its own drop at the maximum speed first, the
-    same run as :func:`auxbearing.analysis.drop.run_machine` of the same machine, so that case is not run again:
-    :func:`collect_cases` takes it from the coast-down, and sets the rest of the coast-down aside when that drop
-    leaves the model's range.
+    same run as :func:`auxbearing.analysis.drop.run_machine` of the same machine, so that case is not run again
+    (unless a ``coastdown.max_time`` shorter than the drop would cut it): :func:`collect_cases` takes it from the
+    coast-down, and sets the rest of the coast-down aside when that drop leaves the model's range.
     """
     futures = {case: executor.submit(run_machine, machine) for case, machine in cases.machines.items()
-               if case != MAX_SPEED or not _coastdown_holds_the_drop(cases)}
+               if case != MAX_SPEED or _coastdown_horizon(cases.machine, cases.quick) < machine.simulation.duration}
     futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick)
     return futures
-
-
-def _coastdown_holds_the_drop(cases: Cases) -> bool:
-    """Whether the coast-down runs at least the drop's duration (a ``coastdown.max_time`` shorter would cut it)."""
-    horizon = cases.machine.coastdown.max_time
-    if cases.quick:
-        horizon = min(QUICK_COASTDOWN, horizon)
-    return horizon >= cases.machine.simulation.duration
 
 
 def collect_cases(cases: Cases, futures: dict) -> Cases:
