@@ -29,7 +29,7 @@ def test_out_of_reach_only_when_no_contact_reaches_a_limit(case):
     for y in run.grid[:: max(1, run.grid.shape[0] // 60)]:
         for k in range(len(machine.planes)):
             qmax = plane_diagnostics(y, m, k)[D_QMAX]
-            stress, use = ball_extremes(y, m, k)
+            stress, use = ball_extremes(y, m, k, np.empty(0))
             if qmax <= 0.0:
                 continue
             for scale in SCALES:
@@ -38,7 +38,7 @@ def test_out_of_reach_only_when_no_contact_reaches_a_limit(case):
                     shoulder_angle_inner=tuple(scale * use * a for a in m.limits.shoulder_angle_inner),
                     shoulder_angle_outer=tuple(scale * use * a for a in m.limits.shoulder_angle_outer))
                 scaled = m._replace(limits=limits)
-                reached_stress, reached_use = ball_extremes(y, scaled, k)
+                reached_stress, reached_use = ball_extremes(y, scaled, k, np.empty(0))
                 checked += 1
                 if limits_out_of_reach(y, scaled, k, qmax, np.full(4, -1.0)):
                     out_of_reach += 1

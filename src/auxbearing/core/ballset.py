@@ -166,6 +166,53 @@ def pair(sign, axial, radial, bs, pd, need_angle):
 
 
 @njit(cache=True, inline="always")
+def hermite_weights(bs, x):
+    """Node interval i and the cubic Hermite weights of :func:`table` at |alpha| = ``x`` [rad].
+
+    The weights depend on the angle only, so the rows read at one angle share them (:func:`pair_extents`).
+    i = n - 1 marks an angle beyond the last node, where every row is constant.
+    """
+    n = bs.tables.shape[2]
+    h = bs.table_step
+    if x <= 0.0:
+        x = 0.0
+    if x >= (n - 1) * h:
+        return n - 1, 1.0, 0.0, 0.0, 0.0
+    i = min(int(x / h), n - 2)
+    t = (x - i * h) / h
+    t2 = t * t
+    t3 = t2 * t
+    return i, 2.0 * t3 - 3.0 * t2 + 1.0, t3 - 2.0 * t2 + t, 3.0 * t2 - 2.0 * t3, t3 - t2
+
+
+@njit(cache=True, inline="always")
+def table_value(bs, row, weights):
+    """Value of table ``row`` with the weights of :func:`hermite_weights` (the same number :func:`table` gives)."""
+    i, w0, w1, w2, w3 = weights
+    values = bs.tables[row, 0]
+    if i == values.size - 1:
+        return values[i]
+    h = bs.table_step
+    slopes = bs.tables[row, 1]
+    return w0 * values[i] + w1 * (slopes[i] * h) + w2 * values[i + 1] + w3 * (slopes[i + 1] * h)
+
+
+@njit(cache=True, inline="always")
+def pair_extents(q, alpha, bs):
+    """Hertz max stress and semi-major axis at the inner and outer raceway of a loaded pair [Pa, Pa, m, m].
+
+    Eq. 4-8 (sigma_max = C(alpha) Q^(1/3), a = c_a(alpha) Q^(1/3)) with one cube root and one set of table
+    weights for the four coefficients: the numbers of :func:`pair_stress` and :func:`pair_semi_major`.
+    """
+    if q <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    cube = q ** (1.0 / 3.0)
+    weights = hermite_weights(bs, abs(alpha))
+    return (table_value(bs, STRESS_INNER, weights) * cube, table_value(bs, STRESS_OUTER, weights) * cube,
+            table_value(bs, AXIS_INNER, weights) * cube, table_value(bs, AXIS_OUTER, weights) * cube)
+
+
+@njit(cache=True, inline="always")
 def pair_stress(q, alpha, bs):
     """Hertz max stress at the inner and outer raceway of a loaded pair [Pa] (Eq. 4-8, sigma ~ Q^(1/3)).
 
@@ -180,8 +227,8 @@ def pair_stress(q, alpha, bs):
     if q <= 0.0:
         return 0.0, 0.0
     cube = q ** (1.0 / 3.0)
-    x = abs(alpha)
-    return table(bs, STRESS_INNER, x)[0] * cube, table(bs, STRESS_OUTER, x)[0] * cube
+    weights = hermite_weights(bs, abs(alpha))
+    return table_value(bs, STRESS_INNER, weights) * cube, table_value(bs, STRESS_OUTER, weights) * cube
 
 
 @njit(cache=True, inline="always")
@@ -190,8 +237,8 @@ def pair_semi_major(q, alpha, bs):
     if q <= 0.0:
         return 0.0, 0.0
     cube = q ** (1.0 / 3.0)
-    x = abs(alpha)
-    return table(bs, AXIS_INNER, x)[0] * cube, table(bs, AXIS_OUTER, x)[0] * cube
+    weights = hermite_weights(bs, abs(alpha))
+    return table_value(bs, AXIS_INNER, weights) * cube, table_value(bs, AXIS_OUTER, weights) * cube
 
 
 @njit(cache=True, inline="always")

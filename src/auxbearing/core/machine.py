@@ -62,6 +62,7 @@ from numba import njit
 from auxbearing.core import amb, linear_support, load
 from auxbearing.core.ballset import accumulate
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
+from auxbearing.core.uncounted import uncounted
 
 #: Plane blocks a packed machine has at least: machines of one and two planes share one compiled kernel.
 MIN_PLANES = 2
@@ -470,7 +471,7 @@ def stations_ledger(m):
     return ledger_of(m) + L_HEAT + 3 * len(m.planes.active) + (1 if m.extra_at[E_NM] > 0 else 0)
 
 
-@njit(cache=True)
+@uncounted
 def _stations(t, y, m, kin, q, out):
     """Forces of every station beside the touchdown planes on the rotor, and their ledger rates.
 
@@ -587,7 +588,7 @@ def row_displacement(m, k, j, dz, dx, dy):
     return s * dz + p.row_push[k], dx, s * dy
 
 
-@njit(cache=True)
+@uncounted
 def _pair_reaction(k, dz, dx, dy, m, disp, force):
     """Axial and radial force of both rows of a matched pair on the race [N], and their largest ball load.
 
@@ -803,7 +804,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
         out[b + OVY] = ring_fy / p.ring_mass[k] + g.gravity_y + m.scratch[_BASE + 1]
 
 
-@njit(cache=True)
+@uncounted
 def plane_forces_once(k, y, m, kin, q, out, diag):
     """:func:`plane_forces` compiled once as a function of its own, for the observer and the outputs.
 
@@ -814,7 +815,7 @@ def plane_forces_once(k, y, m, kin, q, out, diag):
 
 
 # ----------------------------------------------------------------------------- the machine
-@njit(cache=True)
+@uncounted
 def _modal_rates(y, m, kin, om, spin_acc, q, out, n_planes, nm, ledger):
     """The elastic modes' rates (module docstring), their damping's heat, and their gyroscopic moment on the tilts.
 
@@ -851,7 +852,7 @@ def _modal_rates(y, m, kin, om, spin_acc, q, out, n_planes, nm, ledger):
     out[ledger + L_WORK_IN] += unbalance_work
 
 
-@njit(cache=True)
+@uncounted
 def rhs(t, y, m, out):
     """dy/dt of the machine (module docstring); ledger rates included.
 

@@ -8,11 +8,12 @@ only when they are reached as module attributes, not as plain global names.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
 
-from auxbearing.core.ballset import STRESS_INNER, pair, pair_semi_major, pair_stress
+from auxbearing.core.ballset import STRESS_INNER, pair, pair_extents
 from auxbearing.core.machine import (
     D_FA,
     D_FN,
@@ -25,11 +26,13 @@ from auxbearing.core.machine import (
     RX,
     RY,
     RZ,
+    Machine,
     journal_point,
     plane_forces_once,
     rotor_kinematics,
     row_displacement,
 )
+from auxbearing.core.uncounted import uncounted
 
 #: :func:`limits_out_of_reach` answers True only when both of its bounds stay below this share of their limit
 #: (the bounds are exact; the share leaves room for the rounding of the two ways of evaluating the same state).
@@ -54,15 +57,39 @@ def _diagnostics_into(y, m, k, out, q, diag):
     plane_forces_once(k, y, m, rotor_kinematics(y, m.rotor), q, out, diag)
 
 
-@njit(cache=True)
-def ball_extremes(y, m, k):
-    """Largest Hertz stress of plane k's ball contacts [Pa] and the largest shoulder use (alpha + a/r)/shoulder."""
+#: Bounds of the coefficient tables are inflated by this factor where they decide that a contact can be skipped
+#: (:func:`ball_extremes`), so that the rounding of the two ways of evaluating a contact never skips the largest.
+BOUND_SLACK = 1.0 + 1e-9
+
+
+@njit(cache=True, inline="always")
+def _may_reach(q, x, target, radius, axis_bound):
+    """Whether a pair of load q at |alpha| = x can reach (x + a / radius) >= ``target`` with a <= axis_bound q^(1/3)."""
+    room = (target - x) * radius / (axis_bound * BOUND_SLACK)
+    return room <= 0.0 or q >= room * room * room
+
+
+@uncounted
+def ball_extremes(y, m, k, bounds):
+    """Largest Hertz stress of plane k's ball contacts [Pa] and the largest shoulder use (alpha + a/r)/shoulder.
+
+    ``bounds`` (4,) holds the bounds of the stress and semi-major-axis tables (:func:`table_bound`, filled here
+    when negative, as :func:`limits_out_of_reach` keeps them); with them a contact whose load cannot beat the
+    largest stress and shoulder use found so far (sigma <= C_max Q^(1/3), a <= c_max Q^(1/3)) is not evaluated,
+    which leaves both maxima as they are. An empty ``bounds`` evaluates every contact.
+    """
     b = N_ROTOR + k * N_PLANE
     bs = m.ballsets[k]
     pd = m.ballset_clearance[k]
     lim = m.limits
+    prune = bounds.size == 4
+    if prune:
+        fill_bounds(bs, bounds)
+    r_in, r_out = lim.groove_radius_inner[k], lim.groove_radius_outer[k]
+    psi_in, psi_out = lim.shoulder_angle_inner[k], lim.shoulder_angle_outer[k]
     worst = 0.0
     use = 0.0
+    beaten = 0.0  # a pair at or below this load cannot beat ``worst``: C_max q^(1/3) <= worst
     for row in range(2 if m.planes.rows[k] > 1.0 else 1):
         zr, dx, dy = row_displacement(m, k, row, y[b + RZ], y[b + RX] - y[b + OX], y[b + RY] - y[b + OY])
         for j in range(bs.cos_azimuth.size):
@@ -71,16 +98,21 @@ def ball_extremes(y, m, k):
                 q, alpha, _, _, _, _, _, _ = pair(bs.signs[i], zr, radial, bs, pd, False)
                 if q <= 0.0:
                     continue
-                s_i, s_o = pair_stress(q, alpha, bs)
-                worst = max(worst, s_i, s_o)
-                a_i, a_o = pair_semi_major(q, alpha, bs)
                 x = abs(alpha)
-                use = max(use, (x + a_i / lim.groove_radius_inner[k]) / lim.shoulder_angle_inner[k],
-                          (x + a_o / lim.groove_radius_outer[k]) / lim.shoulder_angle_outer[k])
+                if prune and q <= beaten and not (_may_reach(q, x, use * psi_in, r_in, bounds[2])
+                                                  or _may_reach(q, x, use * psi_out, r_out, bounds[3])):
+                    continue
+                s_i, s_o, a_i, a_o = pair_extents(q, alpha, bs)
+                if max(s_i, s_o) > worst:
+                    worst = max(s_i, s_o)
+                    if prune:
+                        top = worst / (max(bounds[0], bounds[1]) * BOUND_SLACK)
+                        beaten = top * top * top
+                use = max(use, (x + a_i / r_in) / psi_in, (x + a_o / r_out) / psi_out)
     return worst, use
 
 
-@njit(cache=True)
+@uncounted
 def table_bound(bs, row):
     """An upper bound of table ``row`` of a ball set over every contact angle (:func:`~auxbearing.core.ballset.table`).
 
@@ -97,7 +129,15 @@ def table_bound(bs, row):
     return bound
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
+def fill_bounds(bs, bounds):
+    """Fill ``bounds`` (4,) with :func:`table_bound` of the inner and outer stress and semi-major-axis rows, once."""
+    if bounds[0] < 0.0:
+        for i in range(4):
+            bounds[i] = table_bound(bs, STRESS_INNER + i)
+
+
+@uncounted
 def limits_out_of_reach(y, m, k, qmax, bounds):
     """True when no ball contact of plane k can reach the ball-stress limit or run over a groove shoulder.
 
@@ -109,9 +149,7 @@ def limits_out_of_reach(y, m, k, qmax, bounds):
     semi-major axis), filled here when negative. Both bounds must stay below :data:`LIMIT_REACH` of their limit.
     """
     bs = m.ballsets[k]
-    if bounds[0] < 0.0:
-        for i in range(4):
-            bounds[i] = table_bound(bs, STRESS_INNER + i)
+    fill_bounds(bs, bounds)
     if qmax <= 0.0:
         return True
     lim = m.limits
@@ -132,21 +170,36 @@ def limits_out_of_reach(y, m, k, qmax, bounds):
     return use < LIMIT_REACH
 
 
-@njit(cache=True)
-def refine_target(y, m, arg):
+class Probe(NamedTuple):
+    """What the observer's dense-output searches evaluate a state with: the machine and working memory.
+
+    The searches run inside the observer, which counts no references (:mod:`auxbearing.core.uncounted`), so
+    nothing below it may allocate: the working arrays come from the observer's memory.
+    """
+
+    machine: Machine
+    out: np.ndarray  #: (n,) the derivative's slots the plane's forces write
+    q: np.ndarray  #: (6,) the rotor's generalised forces
+    diag: np.ndarray  #: (len(DIAG_FIELDS),) the plane's diagnostics
+    bounds: np.ndarray  #: (planes, 4) bounds of the coefficient tables (:func:`fill_bounds`)
+
+
+@uncounted
+def refine_target(y, probe, arg):
     """What the observer refines a peak of: arg = 3 k + what (0 line force, 1 ball stress, 2 |axial force|)."""
     k = arg // 3
     what = arg % 3
     if what == 1:
-        return ball_extremes(y, m, k)[0]
-    diag = plane_diagnostics(y, m, k)
-    return diag[D_FN] if what == 0 else abs(diag[D_FA])
+        return ball_extremes(y, probe.machine, k, probe.bounds[k])[0]
+    _diagnostics_into(y, probe.machine, k, probe.out, probe.q, probe.diag)
+    return probe.diag[D_FN] if what == 0 else abs(probe.diag[D_FA])
 
 
-@njit(cache=True)
-def gap(y, m, k):
+@uncounted
+def gap(y, probe, k):
     """Journal/race penetration of plane k [m] (negative: open): the observer's contact-onset function."""
-    return plane_diagnostics(y, m, k)[D_PEN]
+    _diagnostics_into(y, probe.machine, k, probe.out, probe.q, probe.diag)
+    return probe.diag[D_PEN]
 
 
 @njit(cache=True, inline="always")
@@ -169,6 +222,7 @@ def series(grid, m, with_stress):
     work = np.zeros(grid.shape[1])
     q = np.zeros(6)
     diag = np.zeros(len(DIAG_FIELDS))
+    bounds = np.full((n_planes, 4), -1.0)
     for i in range(n):
         for k in range(n_planes):
             if m.planes.active[k] <= 0.0:
@@ -176,5 +230,5 @@ def series(grid, m, with_stress):
             _diagnostics_into(grid[i], m, k, work, q, diag)
             out[i, k, :len(DIAG_FIELDS)] = diag
             if with_stress:
-                out[i, k, len(DIAG_FIELDS)] = ball_extremes(grid[i], m, k)[0]
+                out[i, k, len(DIAG_FIELDS)] = ball_extremes(grid[i], m, k, bounds[k])[0]
     return out

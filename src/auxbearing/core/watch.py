@@ -42,6 +42,7 @@ from auxbearing.core.machine import (
     energy_balance,
 )
 from auxbearing.core.probes import ball_extremes, orbit
+from auxbearing.core.uncounted import uncounted
 
 #: Stop codes of :func:`observe` (0: none).
 JOURNAL_PRESSURE, BALL_STRESS, SHOULDER, MOUNT_TRAVEL, AXIAL_RUNAWAY, ENERGY_GAIN = range(1, 7)
@@ -88,6 +89,9 @@ class Watch(NamedTuple):
     #: (1,) 1: track and refine the peaks (a drop reports them); 0: do not (a coast-down's windows, which report
     #: none), and evaluate the ball contacts only when a range limit is within reach (:func:`observe`)
     track_peaks: np.ndarray
+    work: np.ndarray  #: (n,) working memory of the searches' plane forces (:class:`~auxbearing.core.probes.Probe`)
+    work_q: np.ndarray  #: (6,) and of their generalised forces
+    work_diag: np.ndarray  #: (len(DIAG_FIELDS),) and of their diagnostics
 
 
 def new_watch(n_states: int, n_planes: int, window: float, n_windows: int, energy0: float) -> Watch:
@@ -99,22 +103,22 @@ def new_watch(n_states: int, n_planes: int, window: float, n_windows: int, energ
                  np.zeros(4), np.full(1, energy0), np.zeros(2), np.full(1, window), np.zeros(1, np.int64),
                  np.full(1, window), np.zeros((two, n_fields)), np.zeros((max(n_windows, 1), two, n_fields)),
                  np.zeros(2, np.int64), np.zeros(n_states), np.zeros((two, len(DIAG_FIELDS))), np.full((two, 4), -1.0),
-                 np.ones(1))
+                 np.ones(1), np.zeros(n_states), np.zeros(6), np.zeros(len(DIAG_FIELDS)))
 
 
 @njit(cache=True, inline="always")
-def _track_peak(w, what, k, value, t, h, coeff, m, tmp):
+def _track_peak(w, what, k, value, t, h, coeff, probe, tmp):
     """Exact peak of one quantity: refine when the step-end sequence turned down (module docstring)."""
     last = w.history[what, k, 1]
     before = w.history[what, k, 0]
     if last > 0.0 and last >= value and last > before and last > 0.9 * w.peak[what, k]:
         arg = 3 * k + what
         w.searches[0] += 1
-        th, v = ig.dense_max(probes.refine_target, coeff, m, tmp, arg)
+        th, v = ig.dense_max(probes.refine_target, coeff, probe, tmp, arg)
         if v > w.peak[what, k]:
             w.peak[what, k] = v
             w.peak_time[what, k] = t + th * h
-        th, v = ig.dense_max(probes.refine_target, w.prev_coeff, m, tmp, arg)
+        th, v = ig.dense_max(probes.refine_target, w.prev_coeff, probe, tmp, arg)
         if v > w.peak[what, k]:
             w.peak[what, k] = v
             w.peak_time[what, k] = t - w.prev_h[0] + th * w.prev_h[0]
@@ -182,7 +186,7 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
         w.window_end[0] += w.window[0]
 
 
-@njit(cache=True)
+@uncounted
 def observe(t, h, y0, y1, coeff, m, w):
     """After each accepted step from t to t + h: peaks, onsets, whirl windows, range (module docstring).
 
@@ -192,6 +196,7 @@ def observe(t, h, y0, y1, coeff, m, w):
     tmp = w.tmp
     lim = m.limits
     diags = w.diags
+    probe = probes.Probe(m, w.work, w.work_q, w.work_diag, w.reach)
     n_planes = len(m.planes.active)
     for k in range(n_planes):
         for i in range(diags.shape[1]):
@@ -205,24 +210,24 @@ def observe(t, h, y0, y1, coeff, m, w):
             w.onsets[k] += 1.0
             if w.first_contact[k] < 0.0:
                 w.searches[1] += 1
-                w.first_contact[k] = t + ig.dense_root(probes.gap, coeff, m, tmp, k) * h
+                w.first_contact[k] = t + ig.dense_root(probes.gap, coeff, probe, tmp, k) * h
         w.in_contact[k] = 1.0 if diag[D_PEN] > 0.0 else 0.0
         peaks = w.track_peaks[0] > 0.0
         if peaks:
-            _track_peak(w, _FORCE, k, diag[D_FN], t, h, coeff, m, tmp)
+            _track_peak(w, _FORCE, k, diag[D_FN], t, h, coeff, probe, tmp)
         stress = 0.0
         # without peaks to track the contacts are evaluated only when the largest ball load could bring a range
         # limit within reach
         if diag[D_QMAX] >= STRESS_CANDIDATE_LOAD * w.peak_load[k] and (
                 peaks or not probes.limits_out_of_reach(y1, m, k, diag[D_QMAX], w.reach[k])):
-            stress, use = ball_extremes(y1, m, k)
+            stress, use = ball_extremes(y1, m, k, w.reach[k])
             w.shoulder_use[k] = max(w.shoulder_use[k], use)
             if use > 1.0 and code == 0:
                 code = _stop(w, SHOULDER, k, t + h, use)
         w.peak_load[k] = max(w.peak_load[k], diag[D_QMAX])
         if peaks:
-            _track_peak(w, _STRESS, k, stress, t, h, coeff, m, tmp)
-            _track_peak(w, _AXIAL, k, abs(diag[D_FA]), t, h, coeff, m, tmp)
+            _track_peak(w, _STRESS, k, stress, t, h, coeff, probe, tmp)
+            _track_peak(w, _AXIAL, k, abs(diag[D_FA]), t, h, coeff, probe, tmp)
         if code == 0:
             if diag[D_FN] > lim.journal_force[k]:
                 code = _stop(w, JOURNAL_PRESSURE, k, t + h, diag[D_FN])
