@@ -30,7 +30,7 @@ M2S_TO_MM2S, RADS_TO_RPM, M_TO_MM, NMM_TO_NM = 1e6, 30.0 / math.pi, 1e3, 1e-3
 
 
 def hermite(tables: np.ndarray, step: float, row: int, x: np.ndarray) -> np.ndarray:
-    """Cubic Hermite value of table ``row`` at |alpha| = x [rad] (constant beyond the last node)."""
+    """Cubic Hermite value of table ``row`` at x (constant beyond the last node and below 0)."""
     values, slopes = tables[row, 0], tables[row, 1]
     n = values.size
     x = np.maximum(x, 0.0)
@@ -55,8 +55,7 @@ def ballset_force(bs, pd: float, axial: float, dx: float, dy: float) -> tuple[fl
     r = r0 + radial
     s_len = np.sqrt(a * a + r * r)
     delta = excess / (s_len + big_a)
-    sigma = np.where(signs != 0.0, signs, 1.0)
-    k_b = hermite(bs.tables, bs.table_step, 0, np.abs(np.arctan2(sigma * a, r)))
+    k_b = hermite(bs.constant_table[None], bs.constant_step, 0, r / s_len)  # K_b on cos(alpha), as the kernel
     q = np.where((excess > 0.0) & (delta > 0.0), k_b * np.maximum(delta, 0.0) ** 1.5, 0.0)
     fz = -q * a / s_len
     fr = -q * r / s_len

@@ -24,7 +24,7 @@ from auxbearing.analysis.statics import load_distribution
 ds = load_distribution(get_bearing("QJ202"), radial=1000.0)
 print(repr(float(ds.radial_displacement[0])))
 """
-ORIGINAL = "    k, dk = table(bs, K_B, abs(alpha))\n"
+ORIGINAL = "    k, dk = ball_constant(bs, r / s_len)\n"
 EDITED = ORIGINAL + "    k, dk = 2.0 * k, 2.0 * dk\n"
 
 

@@ -45,6 +45,20 @@ def test_hermite_tables_match_exact_hertz_between_nodes(bearing):
         assert np.max(np.abs(value / exact - 1.0)) < 1e-9
 
 
+@pytest.mark.parametrize("bearing", [QJ202, B209])
+def test_ball_constant_on_cosines_matches_exact_hertz_between_nodes(bearing):
+    """The load's K_b table on cos(alpha): interpolation error at the mid-points (measured ~3e-14)."""
+    p = bs.ballset_params(bearing)
+    nodes = np.linspace(0.0, 1.0, bs.TABLE_POINTS)
+    mid = 0.5 * (nodes[1:] + nodes[:-1])
+    exact = bs._exact_rows(bearing, np.arccos(mid))[cb.K_B]
+    value = np.array([cb.ball_constant(p, c)[0] for c in mid])
+    assert np.max(np.abs(value / exact - 1.0)) < 1e-9
+    # and it is the angle table's K_b, read at the same contact angles
+    on_angles = np.array([cb.table(p, cb.K_B, a)[0] for a in np.arccos(mid)])
+    assert np.max(np.abs(value / on_angles - 1.0)) < 1e-12
+
+
 def test_ball_constant_at_free_angle_is_eq15():
     p = bs.ballset_params(QJ202)
     k_i = raceway_contact(QJ202, 0.0, "inner").stiffness

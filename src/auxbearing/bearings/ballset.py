@@ -24,7 +24,8 @@ TABLE_POINTS = 721
 _TABLE_MAX = 0.5 * math.pi
 _FD_STEP = 1e-5  # [rad] central-difference step for the node slopes (error ~ h^2 ~ 1e-10)
 
-__all__ = ["TABLE_POINTS", "BallSet", "BallSetState", "ballset_params", "ballset_state", "hertz_tables"]
+__all__ = ["TABLE_POINTS", "BallSet", "BallSetState", "ball_constant_table", "ballset_params", "ballset_state",
+           "hertz_tables"]
 
 
 def _exact_rows(bearing: BearingGeometry, alpha: np.ndarray) -> list[np.ndarray]:
@@ -71,12 +72,43 @@ def hertz_tables(bearing: BearingGeometry) -> tuple[np.ndarray, np.ndarray]:
     return alpha, tables
 
 
+def ball_constant_table(bearing: BearingGeometry) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes in cos(alpha) and the kernel's K_b table on them (:func:`auxbearing.core.ballset.ball_constant`).
+
+    Returns
+    -------
+    cosines : ndarray, shape (n,)
+        cos(alpha) of the nodes, evenly spaced over [0, 1].
+    table : ndarray, shape (2, n)
+        K_b [N/m^1.5] (source paper Eq. 15) and its slope d/d cos(alpha): central differences, one-sided
+        (second order) at cos(alpha) = 1, the end of the range.
+
+    Examples
+    --------
+    >>> from auxbearing import get_bearing
+    >>> cosines, tab = ball_constant_table(get_bearing("QJ202"))
+    >>> f"{np.interp(np.cos(np.radians(35.0)), cosines, tab[0]):.4e}"
+    '8.0514e+09'
+    """
+    cosines = np.linspace(0.0, 1.0, TABLE_POINTS)
+    def k_b(c):
+        return _exact_rows(bearing, np.arccos(c))[kernel.K_B]
+    value = k_b(cosines)
+    h = _FD_STEP
+    slope = (k_b(np.minimum(cosines + h, 1.0)) - k_b(cosines - h)) / (np.minimum(cosines + h, 1.0) - (cosines - h))
+    slope[-1] = (3.0 * value[-1] - 4.0 * k_b(np.array([1.0 - h]))[0] + k_b(np.array([1.0 - 2.0 * h]))[0]) / (2.0 * h)
+    return cosines, np.stack([value, slope])
+
+
 @lru_cache(maxsize=64)
 def _cached(bearing: BearingGeometry, ball_constant: float | None) -> BallSet:
     _, tables = hertz_tables(bearing)
+    _, constant = ball_constant_table(bearing)
     if ball_constant is not None:  # a user's K_b holds at every angle; stresses stay Hertz
         tables[kernel.K_B, 0] = ball_constant
         tables[kernel.K_B, 1] = 0.0
+        constant[0] = ball_constant
+        constant[1] = 0.0
     z = bearing.ball_count
     azimuths = 2.0 * np.pi * np.arange(z) / z
     return BallSet(
@@ -91,6 +123,8 @@ def _cached(bearing: BearingGeometry, ball_constant: float | None) -> BallSet:
         moment_arm=float(bearing.inner_curvature_centre_radius),
         table_step=_TABLE_MAX / (TABLE_POINTS - 1),
         tables=tables,
+        constant_step=1.0 / (TABLE_POINTS - 1),
+        constant_table=constant,
     )
 
 

@@ -27,8 +27,11 @@ K_b(alpha) (Eq. 15 from the Hertz K_i, K_o of :mod:`auxbearing.core.hertz`), the
 coefficients with sigma_max = C(alpha) Q^(1/3) (Eq. 4-8) and the semi-major-axis coefficients with
 a = c_a(alpha) Q^(1/3) (Eq. 4) depend on the loaded contact angle. They are tabulated on |alpha| in
 [0, 90] deg with their slopes and read by cubic Hermite interpolation (:func:`table`), so the
-Newton Jacobian is continuous. The tables are built outside the core
-(:func:`auxbearing.bearings.ballset.ballset_params`).
+Newton Jacobian is continuous. They depend on the angle through cos(alpha) alone (the rolling-plane
+curvature of each raceway through gamma = D cos(alpha) / d_m, Harris & Kotzalas Eq. 2.27-2.33), so the
+load, which needs K_b only, reads it from a second table on cos(alpha) = r/S in [0, 1]
+(:func:`ball_constant`) and needs no arc tangent: the right-hand side of a drop evaluates some 10^6
+loaded pairs. The tables are built outside the core (:func:`auxbearing.bearings.ballset.ballset_params`).
 """
 
 from __future__ import annotations
@@ -62,28 +65,17 @@ class BallSet(NamedTuple):
     moment_arm: float  #: r_ic [m]
     table_step: float  #: node spacing of the tables [rad]
     tables: np.ndarray  #: (5, 2, n): value and slope d/d|alpha| of each table row on its nodes
+    constant_step: float  #: node spacing of the K_b table on cos(alpha) [-]
+    constant_table: np.ndarray  #: (2, n): K_b [N/m^1.5] and its slope d/d cos(alpha) on nodes 0, step, ..., 1
 
 
 @njit(cache=True, inline="always")
-def table(bs, row, x):
-    """Cubic Hermite value and slope of table ``row`` at |alpha| = ``x`` [rad].
+def _hermite(values, slopes, h, x):
+    """Cubic Hermite value and slope on nodes 0, h, 2h, ... at ``x``; constant beyond the last node and below 0.
 
-    Hermite basis on the node interval (Burden & Faires, *Numerical Analysis*, Sec. 3.4);
-    constant beyond the last node.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> nodes = np.linspace(0.0, 1.0, 3)
-    >>> tab = np.zeros((5, 2, 3)); tab[0, 0] = nodes ** 2; tab[0, 1] = 2.0 * nodes
-    >>> bs = BallSet(np.ones(1), np.ones(3), np.zeros(3), 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.5, tab)
-    >>> [round(v, 12) for v in table(bs, 0, 0.3)]  # x^2 is reproduced exactly
-    [0.09, 0.6]
+    Hermite basis on the node interval (Burden & Faires, *Numerical Analysis*, Sec. 3.4).
     """
-    values = bs.tables[row, 0]
-    slopes = bs.tables[row, 1]
     n = values.size
-    h = bs.table_step
     if x <= 0.0:
         x = 0.0
     if x >= (n - 1) * h:
@@ -101,7 +93,32 @@ def table(bs, row, x):
 
 
 @njit(cache=True, inline="always")
-def pair(sign, axial, radial, bs, pd, need_angle):
+def table(bs, row, x):
+    """Cubic Hermite value and slope of table ``row`` at |alpha| = ``x`` [rad]; constant beyond the last node.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> nodes = np.linspace(0.0, 1.0, 3)
+    >>> tab = np.zeros((5, 2, 3)); tab[0, 0] = nodes ** 2; tab[0, 1] = 2.0 * nodes
+    >>> bs = BallSet(np.ones(1), np.ones(3), np.zeros(3), 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.5, tab, 0.5, tab[0])
+    >>> [round(v, 12) for v in table(bs, 0, 0.3)]  # x^2 is reproduced exactly
+    [0.09, 0.6]
+    """
+    return _hermite(bs.tables[row, 0], bs.tables[row, 1], bs.table_step, x)
+
+
+@njit(cache=True, inline="always")
+def ball_constant(bs, c):
+    """K_b [N/m^1.5] and dK_b/d cos(alpha) at cos(alpha) = ``c`` (source paper Eq. 15; module docstring).
+
+    A contact angle beyond 90 deg (c < 0) reads the value at 90 deg, as :func:`table` does.
+    """
+    return _hermite(bs.constant_table[0], bs.constant_table[1], bs.constant_step, c)
+
+
+@njit(cache=True, inline="always")
+def pair(sign, axial, radial, bs, pd, need_angle, with_angle):
     """THE contact-pair kernel: load and its derivatives for one ball's pair (Eq. 10-16).
 
     Parameters
@@ -116,13 +133,18 @@ def pair(sign, axial, radial, bs, pd, need_angle):
     need_angle : bool
         Also return the geometry of an open pair (arrays of contact angles); when False an open
         pair returns at once, before any square root.
+    with_angle : bool
+        Compute the contact angle of a loaded pair; the load and its derivatives do not need it, and a
+        right-hand side that only sums forces saves the arc tangent (alpha is then 0). ``need_angle``
+        implies it.
 
     Returns
     -------
     q : float
         Pair load Q = K_b(alpha) delta^1.5 [N], 0 when open.
     alpha : float
-        Loaded contact angle [rad] (0 for an open pair when ``need_angle`` is False).
+        Loaded contact angle [rad] (0 for an open pair when ``need_angle`` is False, and whenever neither
+        ``need_angle`` nor ``with_angle`` is set).
     dq_da, dq_dr : float
         dQ/d(axial), dQ/d(radial) [N/m].
     a, r, s_len, delta : float
@@ -133,7 +155,7 @@ def pair(sign, axial, radial, bs, pd, need_angle):
     >>> from auxbearing import get_bearing
     >>> from auxbearing.bearings.ballset import ballset_params
     >>> bs = ballset_params(get_bearing("QJ202"))
-    >>> q, alpha, *_ = pair(1.0, 0.0, 5e-6, bs, 0.0, False)
+    >>> q, alpha, *_ = pair(1.0, 0.0, 5e-6, bs, 0.0, False, True)
     >>> round(q, 3), round(math.degrees(alpha), 3)
     (67.147, 34.327)
     """
@@ -149,19 +171,19 @@ def pair(sign, axial, radial, bs, pd, need_angle):
     r = r0 + radial
     s_len = math.sqrt(a * a + r * r)
     delta = excess / (s_len + big_a)
-    sigma = sign if sign != 0.0 else 1.0
-    alpha = math.atan2(sigma * a, r)
+    alpha = 0.0
+    if need_angle or with_angle:
+        alpha = math.atan2((sign if sign != 0.0 else 1.0) * a, r)
     if delta <= 0.0:
         return 0.0, alpha, 0.0, 0.0, a, r, s_len, delta
-    k, dk = table(bs, K_B, abs(alpha))
-    if alpha < 0.0:
-        dk = -dk
+    k, dk = ball_constant(bs, r / s_len)
     root = math.sqrt(delta)
     q = k * delta * root
-    inv2 = 1.0 / (s_len * s_len)
-    # Q depends on (a, r) through delta (d delta/da = a/S) and through K_b(alpha)
-    dq_da = dk * sigma * r * inv2 * delta * root + 1.5 * k * root * a / s_len
-    dq_dr = -dk * sigma * a * inv2 * delta * root + 1.5 * k * root * r / s_len
+    inv3 = 1.0 / (s_len * s_len * s_len)
+    # Q depends on (a, r) through delta (d delta/da = a/S) and through K_b(cos alpha), cos alpha = r/S with
+    # d(r/S)/da = -a r / S^3 and d(r/S)/dr = a^2 / S^3
+    dq_da = -dk * a * r * inv3 * delta * root + 1.5 * k * root * a / s_len
+    dq_dr = dk * a * a * inv3 * delta * root + 1.5 * k * root * r / s_len
     return q, alpha, dq_da, dq_dr, a, r, s_len, delta
 
 
@@ -279,7 +301,7 @@ def accumulate(disp, bs, pd, force, jac, with_jac, with_stress):
         axial = disp[0] + ga3 * disp[3] + ga4 * disp[4]
         radial = disp[1] * cphi + disp[2] * sphi
         for k in range(bs.signs.size):
-            q, alpha, dq_da, dq_dr, a, r, s_len, _ = pair(bs.signs[k], axial, radial, bs, pd, False)
+            q, alpha, dq_da, dq_dr, a, r, s_len, _ = pair(bs.signs[k], axial, radial, bs, pd, False, with_stress)
             if q <= 0.0:
                 continue
             sn = a / s_len
@@ -327,7 +349,7 @@ def pair_states(disp, bs, pd, load, angle, compression, distance, stress_inner, 
             axial = u[0] + ric * (bs.sin_azimuth[j] * u[3] - bs.cos_azimuth[j] * u[4])
             radial = u[1] * bs.cos_azimuth[j] + u[2] * bs.sin_azimuth[j]
             for k in range(bs.signs.size):
-                q, alpha, _, _, _, _, s_len, delta = pair(bs.signs[k], axial, radial, bs, pd, True)
+                q, alpha, _, _, _, _, s_len, delta = pair(bs.signs[k], axial, radial, bs, pd, True, True)
                 load[i, j, k] = q
                 angle[i, j, k] = alpha
                 compression[i, j, k] = delta

@@ -196,6 +196,10 @@ def layout_of(m) -> Layout:
 #: Points on the face's mean circle over which face friction is averaged (a regular polygon of 8
 #: integrates the first harmonics of the slip field exactly).
 FACE_POINTS = 8
+#: Their directions (cos, sin of 2 pi i / FACE_POINTS), constants of the compiled code rather than libm calls at
+#: every evaluation (a collar that carries a thrust touches its race face all the time).
+FACE_COS = tuple(math.cos(2.0 * math.pi * i / FACE_POINTS) for i in range(FACE_POINTS))
+FACE_SIN = tuple(math.sin(2.0 * math.pi * i / FACE_POINTS) for i in range(FACE_POINTS))
 #: Per-plane quantities of :func:`plane_forces` (diagnostics for the observer and the outputs).
 DIAG_FIELDS = ("penetration", "normal_force", "friction_force", "slip_velocity", "ball_force_x", "ball_force_y",
                "ball_force_axial", "max_ball_load", "axial_force", "axial_penetration", "mount_deflection",
@@ -704,8 +708,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
         rf = p.face_radius[k]
         torque = 0.0
         for i in range(FACE_POINTS):
-            beta = 2.0 * math.pi * i / FACE_POINTS
-            ox, oy = rf * math.cos(beta), rf * math.sin(beta)
+            ox, oy = rf * FACE_COS[i], rf * FACE_SIN[i]
             vax, vay, _ = _point_velocity(y, kin, a, rho_cx + ox, rho_cy + oy)
             slip_x = vax + evx - (rvx - rw * oy)
             slip_y = vay + evy - (rvy + rw * ox)

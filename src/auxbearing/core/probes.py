@@ -95,7 +95,7 @@ def ball_extremes(y, m, k, bounds):
         for j in range(bs.cos_azimuth.size):
             radial = dx * bs.cos_azimuth[j] + dy * bs.sin_azimuth[j]
             for i in range(bs.signs.size):
-                q, alpha, _, _, _, _, _, _ = pair(bs.signs[i], zr, radial, bs, pd, False)
+                q, alpha, _, _, _, _, _, _ = pair(bs.signs[i], zr, radial, bs, pd, False, True)
                 if q <= 0.0:
                     continue
                 x = abs(alpha)
