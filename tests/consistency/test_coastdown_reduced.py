@@ -3,10 +3,12 @@
 The reduced model (auxbearing.core.spin, states chosen by auxbearing.analysis.coastdown_phases) must reproduce full
 dynamics where it runs: over the same simulated time, the rotor's speed within 2 % (of the speed lost) and
 every part's peak temperature within 2 K, the smallest clearances within 2 % of their change, the damage per
-drop within 2 %. Full dynamics costs 5-10 s of computing per simulated second on these machines, so the
-comparison runs the first seconds here: 4 s, of which the reduced model carries 1.2-2.9 s once the journals'
-motion after the drop has stopped changing (coastdown_phases.motion_steady); the closing note of the coast-down
-issue gives the same table to 30 s, made by this module's `compare`.
+drop within 2 % (over these 4 s the rattling non-drive ends of the blower and its candidates within 6 %, the
+scatter of their chaotic rattle: :data:`DAMAGE_TOLERANCE`). Full dynamics costs 1-3 s of computing per
+simulated second on these machines, so the comparison runs the first seconds here: 4 s, of which the reduced
+model carries 1.2-2.9 s once the journals' motion after the drop has stopped changing
+(coastdown_phases.motion_steady); the closing note of the coast-down issue gives the same table to 30 s, made
+by this module's `compare`.
 """
 
 import copy
@@ -52,19 +54,23 @@ CASES = ["paper_rig", "paper_rig_two_planes", "blower", "blower:7208", "blower:6
 #: ends). Every other example holds 2 %.
 SPEED_TOLERANCE = {"paper_rig": 0.05, "paper_rig_two_planes": 0.05}
 #: Damage per drop over the first 4 s where the few windows after the handover set the load of most of the
-#: reduced revolutions (1.2-1.7 s of them) and a rattle's windows scatter: measured with the stretches charged by
-#: the trapezoidal rule and the first stretch waiting for a motion without drift, the blower's non-drive end
-#: (loaded at 0.4 of its drive end) +3.8 %, the 7208 DB pair's non-drive end +2.3 %, the 7208's drive end
-#: -2.0 %; every other plane within 1.9 %. A rattle is chaotic (the last bits of the arithmetic move it), so
-#: these hold the first seconds to what they are with room for another processor; over 30 s the same planes are
-#: +0.1, -5.1 and +0.1 %. The DB pair's journals have two rattles at these speeds, a small one (mean square orbit
+#: reduced revolutions (1.2-1.7 s of them) and a rattle's windows scatter. A rattle is chaotic: the last bits of
+#: the arithmetic move it. Measured over five runs of each blower case whose unbalance phase differed by 0 to
+#: 4e-9 rad, auto against full dynamics: the drive ends within 1.6 % in every run; the non-drive ends, loaded at
+#: 0.4 of their drive ends and rattling, by run the blower +1.2 / -1.5 / +0.6 / -2.4 / +1.8 %, the 6208 -1.9 /
+#: +0.5 / -3.0 / -3.8 / -1.9 %, the 7208 -4.6 / +2.4 / -5.1 / -0.3 / -0.9 % (full dynamics alone moved by 5 %),
+#: the hybrid +2.4 / -2.7 / +0.7 / +1.6 / -1.5 %, the 7208 DB pair +1.9 to +2.3 %. So the suite holds these
+#: planes, over 4 s, to 6 %; the 2 % over 30 s, where the rattle averages out, is the comparison this module's
+#: `compare` makes for the closing notes (and, from an earlier version, 7208's drive end -2.0 % here).
+#: The DB pair's journals have two rattles at these speeds, a small one (mean square orbit
 #: speed about 4e-5 m^2/s^2) and a large one (1.5e-4 at the drive end, 2.7e-4 at the non-drive end, 2-4 % more
 #: load). Between about 17 000 and 15 000 rpm the small one is unstable: full dynamics leaves it 4-8 s after the
 #: failure (the time moves with the window length) and keeps the large one until about 16 s; started from the
 #: reduced run's state at 8 s, full dynamics grew to the large rattle within 5 s, from its state at 18 s it did
 #: not. The reduced run stays on the small rattle, whose windows (30 ms of motion per stretch) grow too slowly to
 #: leave it: -2.6 / -5.1 % over 30 s.
-DAMAGE_TOLERANCE = {("blower", 1): 0.05, ("blower:7208 DB light", 1): 0.04, ("blower:7208", 0): 0.03}
+DAMAGE_TOLERANCE = {**{(case, 1): 0.06 for case in ("blower", "blower:7208", "blower:6208", "blower:7208 DB light",
+                                                      "blower:QJ208 hybrid")}, ("blower:7208", 0): 0.03}
 
 
 @pytest.mark.slow
