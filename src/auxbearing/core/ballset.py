@@ -70,18 +70,29 @@ class BallSet(NamedTuple):
 
 
 @njit(cache=True, inline="always")
+def _interval(n, h, x):
+    """Node interval i of ``x`` on the nodes 0, h, ..., (n - 1) h and its place t in [0, 1) there.
+
+    Below 0, ``x`` reads the first node; at or beyond the last node, i = n - 1 (the tables are constant there).
+    """
+    if x <= 0.0:
+        x = 0.0
+    if x >= (n - 1) * h:
+        return n - 1, 0.0
+    i = min(int(x / h), n - 2)
+    return i, (x - i * h) / h
+
+
+@njit(cache=True, inline="always")
 def _hermite(values, slopes, h, x):
     """Cubic Hermite value and slope on nodes 0, h, 2h, ... at ``x``; constant beyond the last node and below 0.
 
     Hermite basis on the node interval (Burden & Faires, *Numerical Analysis*, Sec. 3.4).
     """
     n = values.size
-    if x <= 0.0:
-        x = 0.0
-    if x >= (n - 1) * h:
+    i, t = _interval(n, h, x)
+    if i == n - 1:
         return values[n - 1], 0.0
-    i = min(int(x / h), n - 2)
-    t = (x - i * h) / h
     y0, y1 = values[i], values[i + 1]
     m0, m1 = slopes[i] * h, slopes[i + 1] * h
     t2 = t * t
@@ -195,13 +206,9 @@ def hermite_weights(bs, x):
     i = n - 1 marks an angle beyond the last node, where every row is constant.
     """
     n = bs.tables.shape[2]
-    h = bs.table_step
-    if x <= 0.0:
-        x = 0.0
-    if x >= (n - 1) * h:
-        return n - 1, 1.0, 0.0, 0.0, 0.0
-    i = min(int(x / h), n - 2)
-    t = (x - i * h) / h
+    i, t = _interval(n, bs.table_step, x)
+    if i == n - 1:
+        return i, 1.0, 0.0, 0.0, 0.0
     t2 = t * t
     t3 = t2 * t
     return i, 2.0 * t3 - 3.0 * t2 + 1.0, t3 - 2.0 * t2 + t, 3.0 * t2 - 2.0 * t3, t3 - t2
@@ -224,7 +231,7 @@ def pair_extents(q, alpha, bs):
     """Hertz max stress and semi-major axis at the inner and outer raceway of a loaded pair [Pa, Pa, m, m].
 
     Eq. 4-8 (sigma_max = C(alpha) Q^(1/3), a = c_a(alpha) Q^(1/3)) with one cube root and one set of table
-    weights for the four coefficients: the numbers of :func:`pair_stress` and :func:`pair_semi_major`.
+    weights for the four coefficients.
     """
     if q <= 0.0:
         return 0.0, 0.0, 0.0, 0.0
@@ -246,21 +253,8 @@ def pair_stress(q, alpha, bs):
     >>> round(s_i / 1e6, 1), round(s_o / 1e6, 1)
     (2610.2, 2186.2)
     """
-    if q <= 0.0:
-        return 0.0, 0.0
-    cube = q ** (1.0 / 3.0)
-    weights = hermite_weights(bs, abs(alpha))
-    return table_value(bs, STRESS_INNER, weights) * cube, table_value(bs, STRESS_OUTER, weights) * cube
-
-
-@njit(cache=True, inline="always")
-def pair_semi_major(q, alpha, bs):
-    """Semi-major axis of the contact ellipse at the inner and outer raceway [m] (Eq. 4, a ~ Q^(1/3))."""
-    if q <= 0.0:
-        return 0.0, 0.0
-    cube = q ** (1.0 / 3.0)
-    weights = hermite_weights(bs, abs(alpha))
-    return table_value(bs, AXIS_INNER, weights) * cube, table_value(bs, AXIS_OUTER, weights) * cube
+    s_i, s_o, _, _ = pair_extents(q, alpha, bs)
+    return s_i, s_o
 
 
 @njit(cache=True, inline="always")
