@@ -149,10 +149,17 @@ def reading(path: str | Path, what: str = "its data") -> Iterator[None]:
 #: byte 12 (c-blosc, README_HEADER.rst). A chunk file shorter than that size was cut short; blosc would decode
 #: it from memory past the file's end without a word.
 BLOSC_HEADER, BLOSC_CBYTES_AT = 16, 12
+#: zarr writes a chunk to ``<key>.<random hex>.partial`` and renames it (zarr.storage's atomic write); a process
+#: killed in between leaves that file behind. It is no chunk: zarr reads the key alone, and the batch it belonged
+#: to was never marked complete, so a resume writes it again.
+ZARR_PARTIAL = ".partial"
 
 
 def check_chunks(path: str | Path) -> None:
-    """Refuse a store with a blosc chunk file cut short (a full disk, a copy that did not finish)."""
+    """Refuse a store with a blosc chunk file cut short (a full disk, a copy that did not finish).
+
+    A write that a killed process left unfinished (:data:`ZARR_PARTIAL`) is not a chunk and is passed over.
+    """
     path = Path(path)
     for meta in sorted(path.glob("*/.zarray")):
         name = meta.parent.name
@@ -161,7 +168,7 @@ def check_chunks(path: str | Path) -> None:
             if (spec.get("compressor") or {}).get("id") != "blosc":
                 continue
             for chunk in sorted(meta.parent.iterdir()):
-                if chunk.name.startswith("."):
+                if chunk.name.startswith(".") or chunk.name.endswith(ZARR_PARTIAL):
                     continue
                 with chunk.open("rb") as handle:
                     head = handle.read(BLOSC_HEADER)
