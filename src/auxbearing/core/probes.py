@@ -216,19 +216,22 @@ def series(grid, m, with_stress):
 
     Without ``with_stress`` the stress column is left at zero (a summary that needs no time series of it).
     """
-    n = grid.shape[0]
     n_planes = len(m.planes.active)
-    out = np.zeros((n, n_planes, len(DIAG_FIELDS) + 1))
-    work = np.zeros(grid.shape[1])
-    q = np.zeros(6)
-    diag = np.zeros(len(DIAG_FIELDS))
-    bounds = np.full((n_planes, 4), -1.0)
-    for i in range(n):
-        for k in range(n_planes):
+    out = np.zeros((grid.shape[0], n_planes, len(DIAG_FIELDS) + 1))
+    _series_into(grid, m, with_stress, out, np.zeros(grid.shape[1]), np.zeros(6), np.zeros(len(DIAG_FIELDS)),
+                 np.full((n_planes, 4), -1.0))
+    return out
+
+
+@uncounted
+def _series_into(grid, m, with_stress, out, work, q, diag, bounds):
+    """:func:`series` into ``out``, with its working memory given (a row's plane forces count no references)."""
+    for i in range(grid.shape[0]):
+        for k in range(len(m.planes.active)):
             if m.planes.active[k] <= 0.0:
                 continue
             _diagnostics_into(grid[i], m, k, work, q, diag)
-            out[i, k, :len(DIAG_FIELDS)] = diag
+            for j in range(diag.size):
+                out[i, k, j] = diag[j]
             if with_stress:
-                out[i, k, len(DIAG_FIELDS)] = ball_extremes(grid[i], m, k, bounds[k])[0]
-    return out
+                out[i, k, diag.size] = ball_extremes(grid[i], m, k, bounds[k])[0]
