@@ -23,10 +23,12 @@ Views (slices, rows of a 2-D array) need no counting: the arrays they view outli
 from __future__ import annotations
 
 from numba import njit
+from numba.core.cpu import CPUTargetOptions
 
-#: The numba option that compiles a function without the reference counting (numba's ``_nrt`` target option,
-#: present since numba 0.50; the flag its own test suite compiles allocation-free functions with).
-OPTION = {"_nrt": False}
+#: The numba option that compiles a function without the reference counting: numba's ``_nrt`` target option, a
+#: private one (its leading underscore). A numba without it compiles these kernels with the counting: slower,
+#: the same numbers.
+OPTION = {"_nrt": False} if hasattr(CPUTargetOptions, "_nrt") else {}
 
 
 def uncounted(function=None, **options):
