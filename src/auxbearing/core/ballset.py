@@ -84,11 +84,26 @@ def _interval(n, h, x):
 
 
 @njit(cache=True, inline="always")
-def _hermite(values, slopes, h, x):
-    """Cubic Hermite value and slope on nodes 0, h, 2h, ... at ``x``; constant beyond the last node and below 0.
+def _basis(t):
+    """The cubic Hermite basis h00, h10, h01, h11 at the place t in [0, 1] of a node interval.
 
-    Hermite basis on the node interval (Burden & Faires, *Numerical Analysis*, Sec. 3.4).
+    Burden & Faires, *Numerical Analysis*, Sec. 3.4: p(t) = h00 y0 + h10 h m0 + h01 y1 + h11 h m1.
     """
+    t2 = t * t
+    t3 = t2 * t
+    return 2.0 * t3 - 3.0 * t2 + 1.0, t3 - 2.0 * t2 + t, 3.0 * t2 - 2.0 * t3, t3 - t2
+
+
+@njit(cache=True, inline="always")
+def _combine(values, slopes, h, i, weights):
+    """The Hermite interpolant on node interval i with the basis ``weights`` (:func:`_basis`)."""
+    w0, w1, w2, w3 = weights
+    return w0 * values[i] + w1 * (slopes[i] * h) + w2 * values[i + 1] + w3 * (slopes[i + 1] * h)
+
+
+@njit(cache=True, inline="always")
+def _hermite(values, slopes, h, x):
+    """Cubic Hermite value and slope on nodes 0, h, 2h, ... at ``x``; constant beyond the last node and below 0."""
     n = values.size
     i, t = _interval(n, h, x)
     if i == n - 1:
@@ -96,11 +111,9 @@ def _hermite(values, slopes, h, x):
     y0, y1 = values[i], values[i + 1]
     m0, m1 = slopes[i] * h, slopes[i + 1] * h
     t2 = t * t
-    t3 = t2 * t
-    value = (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * m0 + (3.0 * t2 - 2.0 * t3) * y1 + (t3 - t2) * m1
     slope = ((6.0 * t2 - 6.0 * t) * y0 + (3.0 * t2 - 4.0 * t + 1.0) * m0 + (6.0 * t - 6.0 * t2) * y1
              + (3.0 * t2 - 2.0 * t) * m1) / h
-    return value, slope
+    return _combine(values, slopes, h, i, _basis(t)), slope
 
 
 @njit(cache=True, inline="always")
@@ -200,7 +213,7 @@ def pair(sign, axial, radial, bs, pd, need_angle, with_angle):
 
 @njit(cache=True, inline="always")
 def hermite_weights(bs, x):
-    """Node interval i and the cubic Hermite weights of :func:`table` at |alpha| = ``x`` [rad].
+    """Node interval i and the cubic Hermite basis (:func:`_basis`) of :func:`table` at |alpha| = ``x`` [rad].
 
     The weights depend on the angle only, so the rows read at one angle share them (:func:`pair_extents`).
     i = n - 1 marks an angle beyond the last node, where every row is constant.
@@ -208,22 +221,18 @@ def hermite_weights(bs, x):
     n = bs.tables.shape[2]
     i, t = _interval(n, bs.table_step, x)
     if i == n - 1:
-        return i, 1.0, 0.0, 0.0, 0.0
-    t2 = t * t
-    t3 = t2 * t
-    return i, 2.0 * t3 - 3.0 * t2 + 1.0, t3 - 2.0 * t2 + t, 3.0 * t2 - 2.0 * t3, t3 - t2
+        return i, (1.0, 0.0, 0.0, 0.0)
+    return i, _basis(t)
 
 
 @njit(cache=True, inline="always")
 def table_value(bs, row, weights):
     """Value of table ``row`` with the weights of :func:`hermite_weights` (the same number :func:`table` gives)."""
-    i, w0, w1, w2, w3 = weights
+    i, basis = weights
     values = bs.tables[row, 0]
     if i == values.size - 1:
         return values[i]
-    h = bs.table_step
-    slopes = bs.tables[row, 1]
-    return w0 * values[i] + w1 * (slopes[i] * h) + w2 * values[i + 1] + w3 * (slopes[i + 1] * h)
+    return _combine(values, bs.tables[row, 1], bs.table_step, i, basis)
 
 
 @njit(cache=True, inline="always")
