@@ -48,8 +48,12 @@ def test_symmetric_two_plane_rotor_is_the_planar_drop_at_each_plane():
     one = run_machine(read_machine("paper_rig")).summary["planes"][0]
     two = run_machine(read_machine("paper_rig_two_planes")).summary["planes"]
     for plane in two:
-        for key in ("peak_contact_force_N", "peak_ball_stress_MPa", "first_impact_ms", "final_contact_force_N"):
+        for key in ("peak_contact_force_N", "peak_ball_stress_MPa", "first_impact_ms"):
             assert plane[key] == pytest.approx(one[key], rel=1e-4), key
+        # the force at the end is one instant of the race ringing on its contacts, whose velocity the integration
+        # holds to pack.RACE_VELOCITY_SCALE times the rotor's scale: the two runs (different step sequences) end
+        # 3.4e-4 apart (11.3698 and 11.3736 N) about the value tolerances ten times tighter give both (11.3707 N)
+        assert plane["final_contact_force_N"] == pytest.approx(one["final_contact_force_N"], rel=1e-3)
 
 
 def test_free_rotor_nutates_at_jp_omega_over_jt_and_keeps_energy_and_momentum():
