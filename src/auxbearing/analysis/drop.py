@@ -214,7 +214,8 @@ def run_machine(machine: Machine | str, duration: float | str | None = None,
     progress : callable, optional
         Called with (fraction done, a short status line) after every slice of 20 000 steps.
     lean : bool
-        Keep only what the summary needs: no per-ball arrays and no stress time series (campaigns).
+        Keep only what the summary needs (campaigns): no per-ball arrays, no stress time series and of the contact
+        diagnostics only the penetration and the mount's travel over time (:func:`machine_dataset`).
 
     Returns
     -------
@@ -308,8 +309,28 @@ def axis_at(model, grid: np.ndarray, position: float, shape_x, shape_y) -> tuple
     return x, y, vx, vy
 
 
+#: The contact diagnostics a lean run keeps over time (:func:`auxbearing.core.probes.contact_series`), and those it
+#: keeps at the last instant only, as ``<name>_at_end`` (the summary's final forces).
+LEAN_SERIES = ("penetration", "mount_deflection")
+LEAN_AT_END = ("normal_force", "axial_force")
+
+
+def _needs_force_series(machine: Machine) -> bool:
+    """Whether the summary reads the contact force over time: a scenario from levitation finds its touchdowns so."""
+    return bool(of_kind(machine.stations, "amb")) and machine.active_scenario().levitated
+
+
+def _at_end(sel: xr.Dataset, name: str) -> float:
+    """A contact diagnostic of one plane at the end of the run, from its series or a lean run's last instant."""
+    return float(sel[name].values[-1] if name in sel else sel[f"{name}_at_end"].values)
+
+
 def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: bool = False) -> xr.Dataset:
-    """The time series of a run on its output grid (units in attrs)."""
+    """The time series of a run on its output grid (units in attrs).
+
+    ``lean``: no per-ball arrays, no stress series and, unless a scenario from levitation needs the contact force
+    over time, of the contact diagnostics only :data:`LEAN_SERIES` over time and :data:`LEAN_AT_END` at the end.
+    """
     n = grid.shape[0]
     n_planes = len(machine.planes)
     t = np.arange(n) * out_step
@@ -351,10 +372,23 @@ def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, 
             disp[:, 0], disp[:, 1], disp[:, 2] = cm.row_displacement.py_func(model.machine, k, row, *race)
             rows.append(ballset_state(disp, bs, model.machine.ballset_clearance[k], resultant=False))
         states[k] = rows[0] if len(rows) == 1 else _stack_rows(rows)
-    diag = probes.series(grid, model.machine, not lean and len(states) < n_planes)[:, :n_planes]
-    for i, name in enumerate(cm.DIAG_FIELDS):
-        unit, long_name = _DIAG_SERIES[name]
-        data[name] = (("time", "plane"), diag[:, :, i], {"units": unit, "long_name": long_name})
+    if lean and not _needs_force_series(machine):
+        # the summary reads the contact's geometry over time and the forces at the end only
+        geometry = probes.contact_series(grid, model.machine)[:, :n_planes]
+        last = probes.series(grid[-1:], model.machine, False)[0, :n_planes]
+        for i, name in enumerate(LEAN_SERIES):
+            unit, long_name = _DIAG_SERIES[name]
+            data[name] = (("time", "plane"), geometry[:, :, i], {"units": unit, "long_name": long_name})
+        for name in LEAN_AT_END:
+            unit, long_name = _DIAG_SERIES[name]
+            data[f"{name}_at_end"] = ("plane", last[:, cm.DIAG_FIELDS.index(name)].copy(),
+                                      {"units": unit, "long_name": f"{long_name}, at the end of the run"})
+        diag = None
+    else:
+        diag = probes.series(grid, model.machine, not lean and len(states) < n_planes)[:, :n_planes]
+        for i, name in enumerate(cm.DIAG_FIELDS):
+            unit, long_name = _DIAG_SERIES[name]
+            data[name] = (("time", "plane"), diag[:, :, i], {"units": unit, "long_name": long_name})
     if not lean:
         stress = diag[:, :, len(cm.DIAG_FIELDS)].copy()
         for k, st in states.items():
@@ -470,9 +504,9 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
             "s0": static_safety_factor(peak_stress) if seen else None,
             "peak_journal_pressure_MPa": pressure / 1e6 if seen else None,
             "journal_contact_half_angle_deg": math.degrees(angle) if seen else None,
-            "final_contact_force_N": float(sel.normal_force.values[-1]),
+            "final_contact_force_N": _at_end(sel, "normal_force"),
             "peak_axial_force_N": float(watch.peak[2, k]) if seen else None,
-            "final_axial_force_N": float(sel.axial_force.values[-1]),
+            "final_axial_force_N": _at_end(sel, "axial_force"),
             "whirl": whirl["whirl"], "backward_whirl_onset_ms": whirl["backward_whirl_onset_ms"],
             "backward_whirl_at_end": whirl["backward_at_end"], "whirl_frequency_Hz": whirl["whirl_frequency_Hz"],
             "whirl_timeline": whirl["classes"], "whirl_window_ms": whirl_window(machine) * 1e3,

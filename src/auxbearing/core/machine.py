@@ -621,6 +621,22 @@ def _pair_reaction(k, dz, dx, dy, m, disp, force):
 
 
 @njit(cache=True, inline="always")
+def journal_gap(jx, jy, rx, ry, s):
+    """Journal centre less race centre (dx, dy), their distance and its excess over the clearance s [m]."""
+    dx = jx - rx
+    dy = jy - ry
+    dist = math.sqrt(dx * dx + dy * dy)
+    return dx, dy, dist, dist - s
+
+
+@njit(cache=True, inline="always")
+def ring_travel(ox, oy, p, k):
+    """Outer ring of plane k off its mount's centre (x, y) and its distance from it [m]."""
+    ux, uy = ox - p.centre_x[k], oy - p.centre_y[k]
+    return ux, uy, math.sqrt(ux * ux + uy * uy)
+
+
+@njit(cache=True, inline="always")
 def plane_forces(k, y, m, kin, q, out, diag):
     """Forces of touchdown plane k (module docstring).
 
@@ -645,10 +661,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
     for i in range(len(DIAG_FIELDS)):
         diag[i] = 0.0
     # --- journal/race line contact (Eq. 17, 19-21, corrected)
-    dx = jx - rx
-    dy = jy - ry
-    dist = math.sqrt(dx * dx + dy * dy)
-    delta = dist - s
+    dx, dy, dist, delta = journal_gap(jx, jy, rx, ry, s)
     diag[D_PEN] = delta
     if delta > 0.0:
         nx = dx / dist
@@ -784,8 +797,7 @@ def plane_forces(k, y, m, kin, q, out, diag):
         out[b + RVZ] = fz_r / mr + g.gravity_z
     # --- outer ring in its mount
     if p.ring_free[k] > 0.0:
-        ux_, uy_ = ox_ - p.centre_x[k], oy_ - p.centre_y[k]
-        travel = math.sqrt(ux_ * ux_ + uy_ * uy_)
+        ux_, uy_, travel = ring_travel(ox_, oy_, p, k)
         diag[D_MOUNT] = travel
         spring = p.mount_stiffness[k] * max(0.0, travel - p.mount_deadband[k])
         stop = 0.0

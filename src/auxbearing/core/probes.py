@@ -27,8 +27,10 @@ from auxbearing.core.machine import (
     RY,
     RZ,
     Machine,
+    journal_gap,
     journal_point,
     plane_forces_once,
+    ring_travel,
     rotor_kinematics,
     row_displacement,
 )
@@ -235,3 +237,28 @@ def _series_into(grid, m, with_stress, out, work, q, diag, bounds):
                 out[i, k, j] = diag[j]
             if with_stress:
                 out[i, k, diag.size] = ball_extremes(grid[i], m, k, bounds[k])[0]
+
+
+@njit(cache=True)
+def contact_series(grid, m):
+    """Per output instant and plane block: journal/race penetration and the ring's mount travel, (n, planes, 2) [m].
+
+    What a lean run's summary reads over time (contact fraction, largest bounce, mount travel), by the arithmetic of
+    :func:`auxbearing.core.machine.plane_forces` (:func:`~auxbearing.core.machine.journal_gap`,
+    :func:`~auxbearing.core.machine.ring_travel`) without its forces: equal to :func:`series`' columns to the bit,
+    at a tenth of its cost.
+    """
+    p = m.planes
+    n_planes = len(p.active)
+    out = np.zeros((grid.shape[0], n_planes, 2))
+    for i in range(grid.shape[0]):
+        y = grid[i]
+        for k in range(n_planes):
+            if p.active[k] <= 0.0:
+                continue
+            b = N_ROTOR + k * N_PLANE
+            jx, jy, _, _ = journal_point(y, m, k)
+            out[i, k, 0] = journal_gap(jx, jy, y[b + RX], y[b + RY], p.clearance[k])[3]
+            if p.ring_free[k] > 0.0:
+                out[i, k, 1] = ring_travel(y[b + OX], y[b + OY], p, k)[2]
+    return out
