@@ -77,7 +77,7 @@ def convert(field: str, value: object, dimension: str, default_unit: str | None 
     100.0
     """
     if isinstance(value, (str, int, float)) and not isinstance(value, bool):
-        return _convert_text(field, value, dimension, default_unit)
+        return _convert_plain(field, value, dimension, default_unit)
     return _convert(field, value, dimension, default_unit)
 
 
@@ -89,7 +89,7 @@ _CONVERSIONS_REMEMBERED = 8192
 
 
 @functools.lru_cache(maxsize=_CONVERSIONS_REMEMBERED)
-def _convert_text(field: str, value, dimension: str, default_unit: str | None) -> float:
+def _convert_plain(field: str, value, dimension: str, default_unit: str | None) -> float:
     return _convert(field, value, dimension, default_unit)
 
 
