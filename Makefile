@@ -54,7 +54,8 @@ $(KERNELS_STAMP): $(STAMP) $(CORE_SOURCES)
 	    >/dev/null && $$A drop --machine blower --scenario surge --duration '0.1 ms' --quiet >/dev/null; } & first=$$!; \
 	  $$A static --radial 1000 >/dev/null && $$A contact >/dev/null && (cd $(CURDIR) && $(BIN)/python -c \
 	    "from auxbearing.analysis.coastdown import run_coastdown; from tests.consistency.test_open_machine import \
-	    FAR_PLANE, _blower; run_coastdown(_blower(FAR_PLANE, duration='0.1 ms'), until_stop=False, duration=0.01)"); \
+	    FAR_PLANE, _blower; run_coastdown(_blower(FAR_PLANE, duration='0.1 ms'), until_stop=False, duration=0.01); \
+	    from auxbearing.analysis.drop import run_machine; run_machine('paper_rig', duration='0.1 ms', lean=True)"); \
 	  second=$$?; wait $$first; s=$$?; cd / && rm -rf $$d; test $$s -eq 0 -a $$second -eq 0
 	@touch $(KERNELS_STAMP)
 
