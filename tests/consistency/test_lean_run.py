@@ -25,6 +25,16 @@ def test_the_lean_summary_is_the_full_one(name):
         assert variable not in lean.dataset  # no series that is not one
 
 
+@pytest.mark.parametrize("scenario", ["supply dip", "surge"])
+def test_a_scenario_from_levitation_summarises_lean_as_in_full(scenario):
+    """A verification's candidates run their scenarios lean (auxbearing.verify.cases.submit_cases): the outcome
+    (touchdown, re-levitation), the magnetic bearings' currents and the drop's peaks are the full run's."""
+    machine = read_machine("blower").with_scenario(scenario).with_simulation(duration=0.06)
+    full, lean = run_machine(machine), run_machine(machine, lean=True)
+    assert "outcome" in full.summary["scenario"]
+    assert _without_timing(lean.summary) == _without_timing(full.summary)
+
+
 def test_the_contact_geometry_series_equals_the_diagnostics_to_the_bit():
     machine = read_machine("paper_rig_two_planes").with_simulation(duration=0.02)
     run = integrate_machine(machine, 0.02, None, None)

@@ -63,3 +63,26 @@ def test_a_coastdown_shorter_than_the_drop_leaves_the_drop_its_own_run():
     assert executor.calls.count("run_machine") == len(cases.machines)
     assert collected.drops[MAX_SPEED] is not collected.coastdown.drop
     assert collected.drops[MAX_SPEED].summary["duration_s"] == cases.machine.simulation.duration
+
+
+def test_lean_cases_are_judged_as_the_full_ones(monkeypatch):
+    """A candidate's and the recommended geometry's cases come back lean (summaries, no drop time series): the
+    judged criteria, the drop and coast-down tables are those of the full runs."""
+    import auxbearing.verify.cases as vc
+    from auxbearing.machine.judging import read_criteria
+    from auxbearing.verify.run import _design
+
+    data, name, base = machine_table("paper_rig")
+    monkeypatch.setattr(vc, "QUICK_COASTDOWN", 0.2)
+    criteria = read_criteria(data.get("criteria"))
+    judged = {}
+    for lean in (False, True):
+        cases = plan_cases(data, name, base, quick=True)
+        judged[lean] = _design(collect_cases(cases, submit_cases(cases, Immediate(), lean=lean)), criteria)
+    full, lean = judged[False], judged[True]
+    assert [c.as_json() for c in lean["criteria"]] == [c.as_json() for c in full["criteria"]]
+    for rows in ("drop_rows", "coastdown_rows", "scenario_rows"):
+        assert lean[rows] == full[rows]
+    for case, run in lean["cases"].drops.items():
+        assert "ball" not in run.dataset.dims
+        assert run.dataset.nbytes < 0.25 * full["cases"].drops[case].dataset.nbytes  # 0.92 of 4.0 MB here

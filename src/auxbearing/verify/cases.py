@@ -23,6 +23,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import xarray as xr
+
 from auxbearing.analysis.coastdown import CoastdownRun, run_coastdown, tail_note
 from auxbearing.analysis.drop import MachineRun, run_machine
 from auxbearing.common.errors import InputError
@@ -137,23 +139,31 @@ def _coastdown_horizon(machine: Machine, quick: bool) -> float:
     return min(QUICK_COASTDOWN, machine.coastdown.max_time) if quick else machine.coastdown.max_time
 
 
-def _coastdown_task(machine: Machine, quick: bool) -> CoastdownRun:
+def _coastdown_task(machine: Machine, quick: bool, lean: bool = False) -> CoastdownRun:
     if quick:
-        return run_coastdown(machine, until_stop=False, duration=_coastdown_horizon(machine, quick))
-    return run_coastdown(machine)
+        run = run_coastdown(machine, until_stop=False, duration=_coastdown_horizon(machine, quick))
+    else:
+        run = run_coastdown(machine)
+    if lean:  # its drop's time series (38 MB on the blower) stay on the worker: the summary is what is judged
+        run = run._replace(drop=MachineRun(xr.Dataset(attrs=run.drop.dataset.attrs), run.drop.summary))
+    return run
 
 
-def submit_cases(cases: Cases, executor) -> dict:
+def submit_cases(cases: Cases, executor, lean: bool = False) -> dict:
     """Hand the drops and the coast-down of a planned design to ``executor`` (``submit(fn, *args)``): futures.
 
     The coast-down starts at once, beside the drops. It integrates its own drop at the maximum speed first, the
     same run as :func:`auxbearing.analysis.drop.run_machine` of the same machine, so that case is not run again
     (unless a ``coastdown.max_time`` shorter than the drop would cut it): :func:`collect_cases` takes it from the
     coast-down, and sets the rest of the coast-down aside when that drop leaves the model's range.
+
+    ``lean``: the runs come back with their summaries and the coast-down's history only, no drop time series
+    (a candidate's or the recommended geometry's cases, which are judged and tabled but not drawn or saved:
+    the blower's seven drops would otherwise bring 250 MB per design into this process).
     """
-    futures = {case: executor.submit(run_machine, machine) for case, machine in cases.machines.items()
+    futures = {case: executor.submit(run_machine, machine, None, None, lean) for case, machine in cases.machines.items()
                if case != MAX_SPEED or _coastdown_horizon(cases.machine, cases.quick) < machine.simulation.duration}
-    futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick)
+    futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick, lean)
     return futures
 
 

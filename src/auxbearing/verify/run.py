@@ -244,7 +244,7 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
     for label, tables, title, store in designs:
         cases = plan_cases(tables, title, base, quick)
         say(f"{label}: drops and coast-down")
-        planned[label] = (cases, submit_cases(cases, executor), tables, title, store)
+        planned[label] = (cases, submit_cases(cases, executor, lean=label != "design"), tables, title, store)
     collected, short = set(), {}
 
     def campaign(label: str) -> None:
@@ -308,7 +308,7 @@ def _verify_recommendation(rec: dict, data, name, base, criteria, quick, n, out_
     tables = recommended_tables(data, name, base, rec)
     title = f"{name}, recommended geometry"
     cases = plan_cases(tables, title, base, quick)
-    futures = submit_cases(cases, executor)
+    futures = submit_cases(cases, executor, lean=True)
     say(f"recommended geometry: drops, coast-down and a campaign of {n} drops")
     run_campaign_of(cases, tables, title, base, n, out_dir / "campaign_recommended.zarr", None, address,
                     criteria["min_s0"], criteria["max_backward_whirl_probability"], executor.priority,
