@@ -21,6 +21,15 @@ def test_a_verification_reads_as_a_dict_a_table_a_page_and_files(tmp_path):
     saved = json.loads((folder / "verify.json").read_text())
     assert saved["verdict"] == "incomplete" and "design" not in saved
     assert (folder / "report.html").read_text().count("<h2>") > 3
+    # the design's figures, drawn on the verification's cluster, are those this process draws from the same runs
+    from auxbearing.report.verify_figures import DESIGN_SECTIONS, build_figures
+
+    drawn = result["figures"]
+    assert set(drawn) == {"machine", "modes", "criteria", "drops", "coastdown"} <= set(DESIGN_SECTIONS)
+    here = build_figures({**result, "figures": None})
+    assert {key: [caption for _, caption in here[key]] for key in drawn} == {
+        key: [caption for _, caption in figures] for key, figures in drawn.items()}
+    assert here["machine"] == drawn["machine"]  # the same PNG, to the byte
 
 
 def test_the_drivers_table_names_inputs_in_words_and_leaves_out_what_did_not_vary():

@@ -46,7 +46,9 @@ def _margin(value) -> str:
 
 
 def _figure(fig, caption: str) -> str:
-    return (f"<figure><img alt='{_e(caption)}' src='data:image/png;base64,{figure_png_base64(fig)}'>"
+    """A figure (or its PNG as base64 text, drawn already) with its caption."""
+    png = fig if isinstance(fig, str) else figure_png_base64(fig)
+    return (f"<figure><img alt='{_e(caption)}' src='data:image/png;base64,{png}'>"
             f"<figcaption>{_e(caption)}</figcaption></figure>")
 
 
@@ -81,7 +83,7 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     """HTML text of the report from the result of :func:`auxbearing.verify.run.verify` and its figures.
 
     ``figures`` maps a section key (machine, drops, coastdown, campaign, candidates, recommendation) to a
-    list of (matplotlib Figure, caption).
+    list of (matplotlib Figure or its PNG as base64 text, caption).
     """
     main = result["design"]
     verdict = result["verdict"]

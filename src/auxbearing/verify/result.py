@@ -11,7 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 #: The keys of ``verify.json`` (the rest are objects for the report: runs, datasets, rows).
-PUBLIC_KEYS_LEFT_OUT = ("design", "candidate_rows", "recommendation_rows")
+PUBLIC_KEYS_LEFT_OUT = ("design", "candidate_rows", "recommendation_rows", "figures")
 
 
 class Verification(dict):

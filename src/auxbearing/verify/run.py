@@ -22,6 +22,7 @@ from auxbearing.machine.judging import candidate_tables, read_criteria, verify_s
 from auxbearing.machine.model import machine_from_mapping
 from auxbearing.machine.scenario import SCENARIO_CASE
 from auxbearing.verify.cases import (
+    MAX_SPEED,
     Cases,
     campaign_size,
     collect_cases,
@@ -142,7 +143,8 @@ def _design(cases: Cases, criteria: dict) -> dict:
 
 def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quick: bool = False,
            samples: int | None = None, workers: int | None = None, scheduler: str | None = None,
-           with_recommendation: bool = True, progress: Callable[[str], None] | None = None) -> Verification:
+           with_recommendation: bool = True, progress: Callable[[str], None] | None = None,
+           report_figures: bool = True) -> Verification:
     """Verify a machine's touchdown bearings (module docstring): a :class:`~auxbearing.verify.result.Verification`.
 
     Parameters
@@ -157,6 +159,9 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         A first look: short drops, a few seconds of coast-down, a small campaign, a coarse recommendation.
     samples : int, optional
         Campaign size (0: no campaign); default ``verify.campaign_samples``.
+    report_figures : bool
+        Draw the design's report figures on the cluster at the end of the runs, side by side (False:
+        :meth:`Verification.to_html` draws them all in this process when the report is written).
     """
     start = time.perf_counter()
     data, name, base = machine_table(spec)
@@ -187,8 +192,9 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
             progress(text)
 
     with verification_cluster(scheduler, workers) as (executor, address):
-        design, others, rec, converged = _run_all(data, name, base, criteria, settings, candidate_list, quick,
-                                                  samples, out_dir, executor, address, with_recommendation, say)
+        design, others, rec, converged, figures = _run_all(data, name, base, criteria, settings, candidate_list,
+                                                           quick, samples, out_dir, executor, address,
+                                                           with_recommendation, say, report_figures)
     machine = design["cases"].machine
     result = {
         "machine": machine.name, "verdict": design["verdict"], "design": design, "quick": quick,
@@ -196,6 +202,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         "candidates": [{"bearing": label, "verdict": d["verdict"], "worst_margin": d["worst_margin"],
                         "criteria": [c.as_json() for c in d["criteria"]]} for label, d in others],
         "recommendation": rec, "settings": settings, "wall_time_s": 0.0, "convergence": converged,
+        "figures": figures,
         "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
                    "candidates": [label for label, _ in candidate_list], "quick": quick},
     }
@@ -223,7 +230,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
 
 
 def _run_all(data, name, base, criteria, settings, candidate_list, quick, samples, out_dir, executor, address,
-             with_recommendation, say):
+             with_recommendation, say, figures=True):
     """Every case of the verification on one cluster, independent ones side by side (module docstring).
 
     A candidate that already fails on a criterion no campaign decides (a drop leaving the model's range, a
@@ -300,7 +307,48 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
             judged["criteria"] = [c._replace(evidence=f"{c.evidence} ({short[label]})")
                                   if c.name == WHIRL_PROBABILITY else c for c in judged["criteria"]]
         others.append((label, judged))
-    return design_judged, others, rec, converging()
+    drawing = {}
+    if figures:
+        cases, futures, *_ = planned["design"]
+        drawing = _draw_design_figures(cases, futures, design_judged["criteria"], criteria, executor)
+    return design_judged, others, rec, converging(), _drawn(drawing)
+
+
+def _draw_design_figures(cases: Cases, futures: dict, judged: list, criteria: dict, executor) -> dict:
+    """The design's report figures drawn on the cluster once its runs are in: section -> [futures].
+
+    They are queued when every run but the convergence re-run is in. Drawn in this process after the cluster
+    closed, the blower's 36 figures took 14 s of one core while the other idled; here the workers draw them
+    side by side, one beside the convergence re-run if it still goes. Drawn as soon as the design was judged,
+    they only displaced runs (the workers are busy to the end) and the verification took as long. Each task
+    reads the runs it draws where they were computed (their futures), so no dataset crosses to this process
+    and back. Without a cluster nothing is drawn here: the
+    report draws every figure when it is written.
+    """
+    from auxbearing.report.verify_figures import design_figure_tasks
+
+    if executor.client is None:
+        return {}
+    runs = dict(futures)
+    runs.setdefault(MAX_SPEED, futures["coast-down"])  # that drop is the coast-down's own
+    drawing: dict[str, list] = {}
+    for key, task, args in design_figure_tasks(cases, judged, {"criteria": criteria}, runs):
+        drawing.setdefault(key, []).append(executor.submit(task, *args))
+    return drawing
+
+
+def _drawn(drawing: dict) -> dict:
+    """Section -> [(PNG as base64 text, caption)] of the figures drawn on the cluster.
+
+    A section whose drawing failed is left out, for the report to draw (and raise the error) when it is written.
+    """
+    out = {}
+    for key, futures in drawing.items():
+        try:
+            out[key] = [figure for future in futures for figure in future.result()]
+        except Exception:  # the report draws the section again and raises there, with its traceback
+            continue
+    return out
 
 
 def _verify_recommendation(rec: dict, data, name, base, criteria, quick, n, out_dir, executor, address, say) -> None:
