@@ -9,8 +9,9 @@ In one process, after a short drop that compiles or loads the kernels:
    against one after another on the same code), each with its wall time, the CPU time of this process and
    of its worker processes, the wall time between consecutive progress messages, and the workers' time split
    by case from the cluster's task stream: each coast-down, the convergence re-run, each campaign (named by
-   its store), the drops, the geometry search's points and the kernel loading, with how busy the workers
-   were over the run. The verdict is printed too: it must not change with the number of workers.
+   its store), the drops, the geometry search's points, the kernel loading and the design's report figures
+   (drawn on the cluster at the end of the runs, so the wall time is what the command line waits for but
+   the writing of the files), with how busy the workers were over the run. The verdict is printed too: it must not change with the number of workers.
 
     python benchmarks/bench_verify.py [--quick] [--workers 2 --workers 1] [--machine blower]
 
@@ -59,6 +60,8 @@ def _case_of(key: str, stores: dict) -> str:
     if key.startswith("campaign-"):
         return f"campaign {stores.get(key.split('-')[1], key.split('-')[1])}"
     kind = key.split("-")[0]
+    if kind.endswith("_figures"):  # the design's report figures, drawn on the cluster at the end of the runs
+        return "report figures"
     return {"_coastdown_task": "coast-downs (design, candidates, recommended geometry)",
             "run_coastdown": "convergence re-run (coast-down)", "run_machine": "drops (cases, scenarios)",
             "_point_summary": "geometry search", "warm_up": "kernel loading", "_load_kernels": "kernel loading",
