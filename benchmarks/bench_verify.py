@@ -11,7 +11,8 @@ In one process, after a short drop that compiles or loads the kernels:
    by case from the cluster's task stream: each coast-down, the convergence re-run, each campaign (named by
    its store), the drops, the geometry search's points, the kernel loading and the design's report figures
    (drawn on the cluster at the end of the runs, so the wall time is what the command line waits for but
-   the writing of the files), with how busy the workers were over the run. The verdict is printed too: it must not change with the number of workers.
+   the writing of the files), with how busy the workers were over the run. The verdict is printed too: it
+   must not change with the number of workers.
 
     python benchmarks/bench_verify.py [--quick] [--workers 2 --workers 1] [--machine blower]
 
