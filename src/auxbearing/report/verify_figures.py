@@ -34,7 +34,7 @@ def build_figures(result: dict) -> dict[str, list[tuple[str, str]]]:
 
 
 def rendered(figures: list[tuple[Figure, str]]) -> list[tuple[str, str]]:
-    """[(figure, caption)] as [(PNG as base64 text, caption)], each figure released once drawn."""
+    """[(figure, caption)] as [(PNG as base64 text, caption)]."""
     from auxbearing.report.html import figure_png_base64
 
     return [(figure_png_base64(fig), caption) for fig, caption in figures]

@@ -322,8 +322,7 @@ def _draw_design_figures(cases: Cases, futures: dict, judged: list, criteria: di
     side by side, one beside the convergence re-run if it still goes. Drawn as soon as the design was judged,
     they only displaced runs (the workers are busy to the end) and the verification took as long. Each task
     reads the runs it draws where they were computed (their futures), so no dataset crosses to this process
-    and back. Without a cluster nothing is drawn here: the
-    report draws every figure when it is written.
+    and back. Without a cluster nothing is drawn here: the report draws every figure when it is written.
     """
     from auxbearing.report.verify_figures import design_figure_tasks
 
