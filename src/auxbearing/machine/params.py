@@ -213,8 +213,9 @@ COASTDOWN: tuple[Param, ...] = (
           "stretch resumes the motion as it was, which then follows the new speed and clearances only in the "
           "windows, and where it changes slowly the load the first windows measure lags full dynamics'",
           "ours, measured over 30 s against full dynamics with 0 ms: damage per drop within 2 % on the blower, "
-          "its 7208, 6208 and hybrid candidates, the compressor and the vertical machine, -2.6 / -5.1 % on the "
-          "7208 DB pair (its rolling turns unstable 5 s in, which a stretch freezes); 150 ms brought the blower "
+          "its 7208, 6208 and hybrid candidates, the compressor and the vertical machine, -3.3 / -5.6 % on the "
+          "7208 DB pair against full dynamics converged in its tolerances (its small rattle turns unstable over "
+          "seconds, which a stretch freezes; settling does not change it); 150 ms brought the blower "
           "family and the vertical machine within 1 % at 2.5 times the computing before stretches were charged "
           "by the trapezoidal rule"),
 )
