@@ -309,6 +309,7 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
         others.append((label, judged))
     drawing = {}
     if figures:
+        say("drawing the report's figures")
         cases, futures, *_ = planned["design"]
         drawing = _draw_design_figures(cases, futures, design_judged["criteria"], criteria, executor)
     return design_judged, others, rec, converging(), _drawn(drawing)
