@@ -116,11 +116,11 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
                   f"({summary['full_dynamics_s']:.2f} s of full dynamics); energy balance error "
                   f"{summary['energy_balance_error']:.1e}; required drops {summary['required_drops']:g} "
                   f"(an assumption unless your file sets life.required_drops)", highlight=False)
-    if summary.get("tail"):
-        from auxbearing.analysis.coastdown import tail_note
+    from auxbearing.analysis.coastdown import rattle_note, tail_note
 
-        note = tail_note(summary["tail"])
-        console.print(note[0].upper() + note[1:] + ".", highlight=False)
+    for note in (tail_note(summary.get("tail")), rattle_note(summary)):
+        if note:
+            console.print(note[0].upper() + note[1:] + ".", highlight=False)
     if summary["reason"]:
         console.print(f"[bold]{summary['reason']}[/bold]")
     if out_dir is not None:

@@ -25,7 +25,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from auxbearing.analysis.coastdown import CoastdownRun, run_coastdown, tail_note
+from auxbearing.analysis.coastdown import CoastdownRun, rattle_note, run_coastdown, tail_note
 from auxbearing.analysis.drop import MachineRun, run_machine
 from auxbearing.common.errors import InputError
 from auxbearing.machine.judging import (
@@ -187,6 +187,8 @@ def collect_cases(cases: Cases, futures: dict) -> Cases:
         cases.partial_coastdown = f"the coast-down reached a budget ({coastdown.summary['reason']})"
     if coastdown.summary.get("tail"):
         cases.notes.append(tail_note(coastdown.summary["tail"]))
+    if rattle_note(coastdown.summary):
+        cases.notes.append(rattle_note(coastdown.summary))
     return cases
 
 
