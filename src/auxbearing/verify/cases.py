@@ -187,8 +187,9 @@ def collect_cases(cases: Cases, futures: dict) -> Cases:
         cases.partial_coastdown = f"the coast-down reached a budget ({coastdown.summary['reason']})"
     if coastdown.summary.get("tail"):
         cases.notes.append(tail_note(coastdown.summary["tail"]))
-    if rattle_note(coastdown.summary):
-        cases.notes.append(rattle_note(coastdown.summary))
+    rattle = rattle_note(coastdown.summary)
+    if rattle:
+        cases.notes.append(rattle)
     return cases
 
 
