@@ -83,8 +83,8 @@ def _criteria_figures(criteria: list) -> list[tuple[str, str]]:
                       "a yes/no criterion is drawn at +-100 %, one not checked is named with no bar.")])
 
 
-def _run_of(source, case: str):
-    """The drop run of ``case`` from its run or the coast-down whose drop it is."""
+def _run_of(source):
+    """A drop run, given as itself or as the coast-down whose drop it is."""
     from auxbearing.analysis.coastdown import CoastdownRun
 
     return source.drop if isinstance(source, CoastdownRun) else source
@@ -95,7 +95,7 @@ def _drop_figures(machine, case: str, source, min_s0) -> list[tuple[str, str]]:
     from auxbearing.bearings.ratings import ISO76_BALL_STRESS
     from auxbearing.plots import drop as pd
 
-    run = _run_of(source, case)
+    run = _run_of(source)
     ds, summary = run.dataset, run.summary
     # ISO 76: s0 = (4200 MPa / sigma)^3 for a ball contact, so s0 >= min_s0 holds below 4200 / min_s0^(1/3) MPa
     stress_limit = None if not min_s0 else ISO76_BALL_STRESS / 1e6 / float(min_s0) ** (1.0 / 3.0)
@@ -118,7 +118,7 @@ def _drop_figures(machine, case: str, source, min_s0) -> list[tuple[str, str]]:
 def _scenario_figures(case: str, source) -> list[tuple[str, str]]:
     from auxbearing.plots import drop as pd
 
-    run = _run_of(source, case)
+    run = _run_of(source)
     if "amb" not in run.dataset or "outcome" not in run.summary.get("scenario", {}):
         return []
     return rendered([(pd.plot_magnetic_bearings(run.dataset, run.summary), f"{case}: the magnetic bearings' "
