@@ -73,11 +73,13 @@ def _store(damage=None, records: bool = True):
     """A writer of a campaign store of :data:`CAMPAIGN` (one batch of records), then ``damage(path)``."""
 
     def write(path: Path) -> None:
+        import atexit
         import shutil
         import tempfile
 
         if records not in _MADE:
             folder = Path(tempfile.mkdtemp(prefix="fuzz-store-"))
+            atexit.register(shutil.rmtree, folder, True)  # the template store outlives each test, not the run
             _make(folder / "s.zarr", records)
             _MADE[records] = folder / "s.zarr"
         shutil.copytree(_MADE[records], path)
