@@ -30,8 +30,16 @@ WORKER_WAIT = 60.0
 #: Batches of a campaign with a stopping rule out on the cluster at a time, per worker: enough to keep every
 #: worker busy while this process stores and judges the last one, few enough that a campaign which stops
 #: leaves little computed past its stop (all at once, the blower's recommended geometry ran 128 drops of
-#: which 88 were used).
+#: which 88 were used). They are counted from the first batch not yet in: a batch that waits (behind another
+#: case's long task) holds the rest back instead of letting the batches after it run on past the stop.
 IN_FLIGHT = 2
+#: Tasks a local worker holds at a time (Dask's ``distributed.scheduler.worker-saturation`` times its one
+#: thread): the one it runs. At Dask's default of 1.1 a single-threaded worker also takes the next task in
+#: while it runs one, and in a verification a campaign batch handed to a worker busy with a 15-20 s
+#: coast-down waited there while the other worker ran the batches after it: the blower's 7208 DB campaign,
+#: settled after 64 drops, ran 72, 104, 112 and 128 in four verifications. At 1.0 the tasks wait on the
+#: scheduler, in priority order, for the first worker free.
+WORKER_SATURATION = 1.0
 
 
 class CampaignInterrupted(KeyboardInterrupt):
@@ -73,9 +81,12 @@ def _client(scheduler: str | None, workers: int | None):
     n = workers or cores()
     # no dashboard; the scheduler's small HTTP server on a free local port, so that two campaigns (or a
     # running Dask) never fight over port 8787
-    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
-                           scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
-                           silence_logs=logging.CRITICAL)
+    import dask
+
+    with dask.config.set({"distributed.scheduler.worker-saturation": WORKER_SATURATION}):  # read at the start
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                               scheduler_kwargs={"dashboard": False, "dashboard_address": "127.0.0.1:0"},
+                               silence_logs=logging.CRITICAL)
     return Client(cluster), cluster
 
 
@@ -206,7 +217,6 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
             raise InputError(f"{where} cannot run a drop of this campaign ({type(err).__name__}: {err})") from None
         out["warm_up_s"] = max(warm.values(), default=0.0)
         out["startup_s"] = time.perf_counter() - start
-        shared = client.scatter(campaign, broadcast=True)
         first = time.perf_counter()
         tag = campaign.fingerprint()
         pending = {}
@@ -214,16 +224,24 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
 
         def submit_next(stream=None) -> None:
             a, b = queue.pop(0)
-            future = client.submit(evaluate_batch, shared, points.values[a:b], key=f"campaign-{tag}-{a}", pure=False,
+            # the campaign (4 kB) goes with each batch: a scattered copy would make every batch depend on it,
+            # and Dask holds only tasks without such dependencies on the scheduler (WORKER_SATURATION)
+            future = client.submit(evaluate_batch, campaign, points.values[a:b], key=f"campaign-{tag}-{a}", pure=False,
                                    priority=priority)
             pending[future.key] = (future, a, b)
             if stream is not None:
                 stream.add(future)
 
-        # with a stopping rule, only a few batches are out at a time (in design order): those past the stop
-        # would be computed for nothing; without one, all go at once
-        for _ in range(len(queue) if decided is None else min(len(queue), IN_FLIGHT * max(out["workers"], 1))):
-            submit_next()
+        # with a stopping rule, only a few batches past the first one not yet in go out (in design order):
+        # those past the stop would be computed for nothing; without one, all go at once
+        reach = IN_FLIGHT * max(out["workers"], 1) * campaign.batch_size
+        gone = np.zeros(runs, dtype=bool)  # samples of lost batches: not waited for
+
+        def top_up(stream=None) -> None:
+            while queue and (decided is None or queue[0][0] < _complete_run(have | gone) + reach):
+                submit_next(stream)
+
+        top_up()
         new = lost = 0
         try:
             completed = as_completed([f for f, _, _ in pending.values()])
@@ -233,9 +251,9 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
                     arrays = future.result()
                 except Exception as err:  # a worker died or the batch broke: its samples stay pending
                     lost += b - a
+                    gone[a:b] = True
                     out["lost_reason"] = out["lost_reason"] or f"{type(err).__name__}: {err}"[:200]
-                    if queue:
-                        submit_next(completed)
+                    top_up(completed)
                     continue
                 finally:
                     future.release()
@@ -252,8 +270,7 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
                     for rest, _, _ in pending.values():
                         rest.cancel()
                     break
-                if queue:  # only now: a batch sent before the stopping rule is asked may be one too many
-                    submit_next(completed)
+                top_up(completed)  # only now: a batch sent before the stopping rule is asked may be one too many
                 if progress is not None:
                     elapsed = time.perf_counter() - first
                     rate = new / elapsed if elapsed > 0 else 0.0
