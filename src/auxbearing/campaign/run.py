@@ -104,7 +104,8 @@ def on_every_worker(client, fn, *args) -> dict:
 
 def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = None, workers: int | None = None,
                  progress: Callable[[Progress], None] | None = None,
-                 decided: Callable[[Path, int], bool] | None = None, priority: int = 0, client=None) -> dict:
+                 decided: Callable[[Path, int], bool] | None = None, priority: int = 0, client=None,
+                 warm: bool = True) -> dict:
     """Run every sample of ``campaign`` not yet in ``store``; returns counts and timing.
 
     Parameters
@@ -130,6 +131,11 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         campaigns of a verification, run side by side in threads, share the verification's client (seen
         with a client each to the same scheduler: one campaign waited forever on batches the scheduler
         already held in memory).
+    warm : bool
+        Run a short drop of the campaign's machine on every worker first (kernels loaded, the machine buildable
+        there) and say in one line if it cannot run. False on a cluster whose workers the caller has already
+        loaded and ran this machine on: a verification's, where each of its five campaigns' warm-up tasks,
+        pinned to a worker, waited behind that worker's coast-down before the campaign could start.
 
     Returns
     -------
@@ -151,7 +157,7 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
             prepare_store(store, campaign, points)
             todo = pending_batches(store, campaign.runs, campaign.batch_size)
             return _run(campaign, store, points, todo, client, scheduler, workers, progress, start, decided,
-                        priority)
+                        priority, warm)
     finally:
         if own_client:
             client.close()
@@ -178,7 +184,7 @@ def _first_settled(decided, store: Path, ends: list, before: int, now: int) -> i
 
 
 def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler: str | None, workers: int | None,
-         progress, start: float, decided=None, priority: int = 0) -> dict:
+         progress, start: float, decided=None, priority: int = 0, warm: bool = True) -> dict:
     """The batches still to do, on the cluster (started here unless ``client`` is given), into the store."""
     from distributed import as_completed
 
@@ -208,14 +214,15 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
             raise InputError.for_field("--scheduler", scheduler, f"the scheduler has had no worker for {WORKER_WAIT:g} "
                                        "s; start some (dask worker ADDRESS)") from None
         out["workers"] = len(client.scheduler_info(n_workers=-1)["workers"])
-        try:
-            warm = on_every_worker(client, warm_up, campaign)
-        except InputError:
-            raise
-        except Exception as err:  # nothing can run there: say so in one line instead of failing every sample
-            where = f"the workers of {scheduler}" if scheduler else "the local workers"
-            raise InputError(f"{where} cannot run a drop of this campaign ({type(err).__name__}: {err})") from None
-        out["warm_up_s"] = max(warm.values(), default=0.0)
+        if warm:
+            try:
+                spent = on_every_worker(client, warm_up, campaign)
+            except InputError:
+                raise
+            except Exception as err:  # nothing can run there: say so in one line instead of failing every sample
+                where = f"the workers of {scheduler}" if scheduler else "the local workers"
+                raise InputError(f"{where} cannot run a drop of this campaign ({type(err).__name__}: {err})") from None
+            out["warm_up_s"] = max(spent.values(), default=0.0)
         out["startup_s"] = time.perf_counter() - start
         first = time.perf_counter()
         tag = campaign.fingerprint()

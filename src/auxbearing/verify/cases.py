@@ -347,8 +347,9 @@ def _campaign(data, name, base, machine, settings, samples, store, workers, sche
     campaign = campaign_from_mapping(campaign_tables(data, machine, settings, samples, drop), f"{name} campaign", base)
     decided = None if whirl_limit is None else (
         lambda path, n: _whirl_settled(path, n, campaign.runs, whirl_limit))
+    # on the verification's cluster the workers have loaded the kernels and run this machine's cases already
     ran = run_campaign(campaign, store, scheduler=scheduler, workers=workers, decided=decided, priority=priority,
-                       client=client)
+                       client=client, warm=client is None)
     stop = ran.get("decided_at")
     stats = campaign_statistics(_first_drops(store, campaign.runs if stop is None else stop), required_s0=required_s0)
     stats["planned"] = campaign.runs
