@@ -73,12 +73,13 @@ def test_the_polish_runs_each_round_side_by_side_and_never_a_point_twice():
 
     def judged(x, _):
         rounds.append(len(submitted))
-        point = {"x": x, "worst": -((x[0] - 0.3) ** 2) - ((x[1] - 0.9) ** 2)}
+        worst = -((x[0] - 0.3) ** 2) - ((x[1] - 0.9) ** 2)
+        point = {"x": x, "worst": worst, "margins": {"m": worst}}
         evaluated.append(point)
         return point
 
-    evaluated = [{"x": np.array([a, b, 2.0]), "worst": -((a - 0.3) ** 2) - ((b - 0.9) ** 2)}
-                 for a in (0.0, 0.5, 1.0) for b in (0.0, 0.5, 1.0)]
+    evaluated = [{"x": np.array([a, b, 2.0]), "worst": w, "margins": {"m": w}}
+                 for a in (0.0, 0.5, 1.0) for b in (0.0, 0.5, 1.0) for w in [-((a - 0.3) ** 2) - ((b - 0.9) ** 2)]]
     grid = list(evaluated)
     best = _polish(max(grid, key=lambda p: p["worst"]), bounds, 0.25, evaluated, launch, judged)
     assert len(submitted) == len(set(submitted)) <= POLISH_POINTS
@@ -87,3 +88,18 @@ def test_the_polish_runs_each_round_side_by_side_and_never_a_point_twice():
     # the first round's three points (the fourth, past the bound, is the centre) all went out before one was judged
     assert rounds[:3] == [3, 3, 3]
     assert abs(best["x"][0] - 0.3) <= 0.0625 and abs(best["x"][1] - 0.9) <= 0.0625
+
+
+def test_a_tie_on_the_smallest_margin_goes_to_the_larger_next_one():
+    from auxbearing.verify.designs import POLISH_GAIN, best_of, better
+
+    def point(*margins):
+        return {"worst": min(margins), "margins": {f"c{i}": m for i, m in enumerate(margins)}}
+
+    # the air-gap margin (0.55) depends on the clearance alone: the s0 and seal margins decide
+    first, second = point(0.55, 22.6, 0.73), point(0.55, 18.0, 0.81)
+    assert better(second, first) and not better(first, second)
+    assert best_of([first, second, point(0.55 - 0.5 * POLISH_GAIN, 30.0, 0.9)]) is not first
+    assert better(point(0.56, 1.0, 0.6), point(0.55, 20.0, 0.9))  # the smallest margin first
+    assert not better(point(0.55, 22.6, 0.73), point(0.55, 22.6, 0.73))  # equal: the earlier point stays
+    assert best_of([]) is None

@@ -15,6 +15,9 @@ clearance stays between the levitated rotor's orbit over :data:`ORBIT_ZONE` (ISO
 air-gap limit, within 60-140 % of the file's. A grid over the box, then a compass search from its best point
 (:func:`_polish`), each point a drop of the machine, each round's points run side by side. The criterion with
 the smallest margin at the optimum binds;
+geometries whose smallest margins agree (within :data:`POLISH_GAIN`) are told apart by their next smallest, and so
+on (:func:`better`): where one criterion depends on one variable alone (the clearance against the air gap), the
+others are not left to the order in which the grid was run;
 a variable at a bound of the box is said. A point that fails a criterion is never recommended; the
 recommended design is then verified in full (:func:`auxbearing.verify.run.verify`) and its verdict shown.
 """
@@ -37,7 +40,7 @@ CLEARANCE_RANGE = (0.6, 1.4)  #: ours: fraction of the file's radial clearance
 ORBIT_ZONE = 0.3
 #: Most drops the polish after the grid runs.
 POLISH_POINTS = 12
-#: Gain in the worst margin a polish point must bring to be moved to (below it, a tie).
+#: Difference in a margin below which two geometries tie on it (:func:`better`).
 POLISH_GAIN = 1e-3
 #: The polish stops when its step falls below this share of each variable's range (an eighth of the 3-level
 #: grid's spacing after three rounds).
@@ -149,7 +152,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     pending = [launch(np.array([a, f, c])) for a in grids[0] for f in grids[1] for c in grids[2]]
     for x, future in pending:
         judged(x, future)
-    best = max(evaluated, key=lambda p: p["worst"])
+    best = best_of(evaluated)
     if not quick:
         best = _polish(best, bounds, 0.5 / (levels - 1), evaluated, launch, judged)
     x = best["x"]
@@ -181,13 +184,34 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     }
 
 
+def better(a: dict, b: dict) -> bool:
+    """Whether design point ``a`` beats ``b``: their margins from the smallest up, the first that differs by more
+    than :data:`POLISH_GAIN` decides (a maximin order, ties broken by the next smallest); all agreeing, a tie.
+    """
+    ours = sorted(a["margins"].values()) or [a["worst"]]
+    theirs = sorted(b["margins"].values()) or [b["worst"]]
+    for mine, other in zip(ours, theirs):
+        if abs(mine - other) > POLISH_GAIN:
+            return mine > other
+    return False
+
+
+def best_of(points: list) -> dict | None:
+    """The first of ``points`` that none after it is :func:`better` than, in order (None for none)."""
+    best = None
+    for point in points:
+        if best is None or better(point, best):
+            best = point
+    return best
+
+
 def _polish(best: dict, bounds: np.ndarray, step: float, evaluated: list, launch, judged) -> dict:
     """A compass search from the grid's best point; the best point found.
 
     Kolda, Lewis & Torczon, "Optimization by direct search", SIAM Review 45 (2003) 385-482, Sec. 3 (compass
     search, the coordinate directions +-e_i): each round polls the point one ``step`` (a share of each free
     variable's range) along every direction from the best point, all of them side by side; it moves to the best
-    poll point if that gains :data:`POLISH_GAIN` in the worst margin and halves the step otherwise, until the step
+    poll point if it is :func:`better` and halves the step otherwise, until the step
     falls below :data:`POLISH_STEP_MIN` or :data:`POLISH_POINTS` drops are spent. A poll point outside the box is
     taken at its bound; a point already run is not run again. (A Nelder-Mead polish from scipy started from a
     simplex 0.025 % of the box wide at a corner of the box, where the grid's best point often is, and stopped
@@ -215,8 +239,8 @@ def _polish(best: dict, bounds: np.ndarray, step: float, evaluated: list, launch
         polls = polls[:POLISH_POINTS - spent]
         points = [judged(*pending) for pending in [launch(x) for x in polls]]  # all out before the first is read
         spent += len(points)
-        top = max(points, key=lambda p: p["worst"], default=None)
-        if top is not None and top["worst"] > best["worst"] + POLISH_GAIN:
+        top = best_of(points)
+        if top is not None and better(top, best):
             best = top
         else:
             step *= 0.5
