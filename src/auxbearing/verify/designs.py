@@ -185,12 +185,14 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
 
 
 def better(a: dict, b: dict) -> bool:
-    """Whether design point ``a`` beats ``b``: their margins from the smallest up, the first that differs by more
-    than :data:`POLISH_GAIN` decides (a maximin order, ties broken by the next smallest); all agreeing, a tie.
+    """Whether design point ``a`` beats ``b`` (a maximin order, ties broken by the next smallest margin).
+
+    Their margins are compared from the smallest up; the first pair that differs by more than :data:`POLISH_GAIN`
+    decides. All agreeing, it is a tie (False).
     """
     ours = sorted(a["margins"].values()) or [a["worst"]]
     theirs = sorted(b["margins"].values()) or [b["worst"]]
-    for mine, other in zip(ours, theirs):
+    for mine, other in zip(ours, theirs, strict=False):  # a failure adds a margin
         if abs(mine - other) > POLISH_GAIN:
             return mine > other
     return False
