@@ -3,8 +3,9 @@
 By default a local cluster of one single-threaded worker process per core is started and stopped
 here; ``scheduler`` uses a running cluster instead (its workers must import the same auxbearing and
 see the same files). Each worker loads the compiled kernels once (:func:`warm_up`) before the first
-batch (unless the caller's cluster has done so: a verification's). Only this process writes the store, one batch at a time, so a batch is on disk whole or not
-flagged complete; running the same campaign again skips every complete batch.
+batch (unless the caller's cluster has done so: a verification's). Only this process writes the store, one
+batch at a time, so a batch is on disk whole or not flagged complete; running the same campaign again skips
+every complete batch.
 """
 
 from __future__ import annotations
