@@ -9,18 +9,26 @@ from __future__ import annotations
 
 import numpy as np
 import xarray as xr
+from matplotlib.collections import PolyCollection
 from matplotlib.figure import Figure
 
 from auxbearing.plots._axes import axes_for
 
 
 def _shade_reduced(ax, history: xr.Dataset) -> None:
-    """Shade the stretches the reduced model carried (mode 1 ends a stretch begun at the record before)."""
+    """Shade the stretches the reduced model carried (mode 1 ends a stretch begun at the record before).
+
+    One collection of bands the axes' full height (a span apiece, 124 on the blower in each of four panels, was
+    a third of the coast-down figures' drawing time).
+    """
     t = history.time.values
-    mode = history["mode"].values
-    for i in np.flatnonzero(mode == 1):
-        if i > 0:
-            ax.axvspan(t[i - 1], t[i], color="0.92", lw=0, zorder=0)
+    ends = np.flatnonzero(history["mode"].values == 1)
+    ends = ends[ends > 0]
+    if ends.size == 0:
+        return
+    bands = [[(t[i - 1], 0.0), (t[i], 0.0), (t[i], 1.0), (t[i - 1], 1.0)] for i in ends]
+    ax.add_collection(PolyCollection(bands, facecolors="0.92", linewidths=0, zorder=0,
+                                     transform=ax.get_xaxis_transform()), autolim=False)
 
 
 def plot_speeds(history: xr.Dataset, ax=None) -> Figure:
