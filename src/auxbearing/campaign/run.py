@@ -38,8 +38,8 @@ IN_FLIGHT = 2
 #: thread): the one it runs. At Dask's default of 1.1 a single-threaded worker also takes the next task in
 #: while it runs one, and in a verification a campaign batch handed to a worker busy with a 15-20 s
 #: coast-down waited there while the other worker ran the batches after it: the blower's 7208 DB campaign,
-#: settled after 64 drops, ran 72, 104, 112 and 128 in four verifications. At 1.0 the tasks wait on the
-#: scheduler, in priority order, for the first worker free.
+#: settled after 64 drops, ran 72 to 120 in five verifications. At 1.0 the tasks wait on the scheduler, in
+#: priority order, for the first worker free (64 in six verifications since).
 WORKER_SATURATION = 1.0
 
 

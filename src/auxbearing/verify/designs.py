@@ -14,11 +14,10 @@ verdict measures it), with leaving the model's range and sustained backward whir
 clearance stays between the levitated rotor's orbit over :data:`ORBIT_ZONE` (ISO 14839-2) and the
 air-gap limit, within 60-140 % of the file's. A grid over the box, then a compass search from its best point
 (:func:`_polish`), each point a drop of the machine, each round's points run side by side. The criterion with
-the smallest margin at the optimum binds;
-geometries whose smallest margins agree (within :data:`POLISH_GAIN`) are told apart by their next smallest, and so
-on (:func:`better`): where one criterion depends on one variable alone (the clearance against the air gap), the
-others are not left to the order in which the grid was run;
-a variable at a bound of the box is said. A point that fails a criterion is never recommended; the
+the smallest margin at the optimum binds. Geometries whose smallest margins agree (within :data:`POLISH_GAIN`)
+are told apart by their next smallest, and so on (:func:`better`): where one criterion depends on one variable
+alone (the clearance against the air gap), the others are not left to the order in which the grid was run. A
+variable at a bound of the box is said. A point that fails a criterion is never recommended; the
 recommended design is then verified in full (:func:`auxbearing.verify.run.verify`) and its verdict shown.
 """
 
