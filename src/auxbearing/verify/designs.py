@@ -198,7 +198,7 @@ def better(a: dict, b: dict) -> bool:
 
 
 def best_of(points: list) -> dict | None:
-    """The first of ``points`` that none after it is :func:`better` than, in order (None for none)."""
+    """The point a scan of ``points`` in order keeps: a later one replaces it only if :func:`better` (None for none)."""
     best = None
     for point in points:
         if best is None or better(point, best):
@@ -212,9 +212,9 @@ def _polish(best: dict, bounds: np.ndarray, step: float, evaluated: list, launch
     Kolda, Lewis & Torczon, "Optimization by direct search", SIAM Review 45 (2003) 385-482, Sec. 3 (compass
     search, the coordinate directions +-e_i): each round polls the point one ``step`` (a share of each free
     variable's range) along every direction from the best point, all of them side by side; it moves to the best
-    poll point if it is :func:`better` and halves the step otherwise, until the step
-    falls below :data:`POLISH_STEP_MIN` or :data:`POLISH_POINTS` drops are spent. A poll point outside the box is
-    taken at its bound; a point already run is not run again. (A Nelder-Mead polish from scipy started from a
+    poll point if it is :func:`better` and halves the step otherwise, until the step falls below
+    :data:`POLISH_STEP_MIN` or :data:`POLISH_POINTS` drops are spent. A poll point outside the box is taken at its
+    bound; a point already run is not run again. (A Nelder-Mead polish from scipy started from a
     simplex 0.025 % of the box wide at a corner of the box, where the grid's best point often is, and stopped
     at once: the blower's four polish drops moved the contact angle by 0.0075 deg.)
     """
