@@ -173,6 +173,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         "outer_groove_ratio": float(x[1] + offset), "radial_clearance_mm": [p.radial_clearance * x[2] * 1e3
                                                                              for p in machine.planes],
         "clearance_factor": float(x[2]), "worst_margin": best["worst"], "binding_criterion": best["binding"],
+        "tie_margin": POLISH_GAIN,
         "variables_at_bounds": at_bound, "margins": best["margins"], "evaluations": len(evaluated),
         "bounds": {"contact_angle_deg": [math.degrees(v) for v in bounds[0]], "inner_groove_ratio": list(bounds[1]),
                    "clearance_factor": list(bounds[2])},
