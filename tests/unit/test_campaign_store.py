@@ -281,6 +281,18 @@ def test_complete_run_counts_samples_from_the_first_without_a_gap():
     assert _complete_run(np.ones(3, bool)) == 3
 
 
+def test_a_batch_that_waits_holds_back_the_ones_after_it():
+    import numpy as np
+
+    from auxbearing.campaign.run import _within_reach
+
+    settled = np.zeros(64, dtype=bool)
+    settled[8:40] = True  # batches of 8: the first still out, the next four in
+    assert _within_reach(16, settled, 32) and not _within_reach(32, settled, 32) and not _within_reach(40, settled, 32)
+    settled[:8] = True  # it came in: the reach counts from the first sample not in
+    assert _within_reach(64 - 8, settled, 32)
+
+
 @pytest.mark.slow
 def test_a_decided_campaign_stops_on_its_first_complete_samples(tmp_path):
     from auxbearing.campaign.run import run_campaign

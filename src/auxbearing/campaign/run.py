@@ -170,6 +170,16 @@ def _complete_run(have: np.ndarray) -> int:
     return int(missing[0]) if missing.size else int(have.size)
 
 
+def _within_reach(start: int, settled: np.ndarray, reach: int) -> bool:
+    """Whether a batch starting at sample ``start`` may go out: within ``reach`` samples of the first one not settled.
+
+    Counted from the first sample neither in nor given up (``settled``), not from the last batch sent: a batch
+    that waits behind another task holds back the ones after it, so a campaign that stops there has little run
+    past its stop.
+    """
+    return start < _complete_run(settled) + reach
+
+
 def _first_settled(decided, store: Path, ends: list, before: int, now: int) -> int | None:
     """The first batch end in (before, now] at which ``decided`` says the campaign is settled, or None.
 
@@ -246,7 +256,7 @@ def _run(campaign: Campaign, store: Path, points, todo: list, client, scheduler:
         gone = np.zeros(runs, dtype=bool)  # samples of lost batches: not waited for
 
         def top_up(stream=None) -> None:
-            while queue and (decided is None or queue[0][0] < _complete_run(have | gone) + reach):
+            while queue and (decided is None or _within_reach(queue[0][0], have | gone, reach)):
                 submit_next(stream)
 
         top_up()
