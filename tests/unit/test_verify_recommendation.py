@@ -91,7 +91,7 @@ def test_the_polish_runs_each_round_side_by_side_and_never_a_point_twice():
 
 
 def test_a_tie_on_the_smallest_margin_goes_to_the_larger_next_one():
-    from auxbearing.verify.designs import POLISH_GAIN, best_of, better
+    from auxbearing.verify.designs import TIE_MARGIN, best_of, better
 
     def point(*margins):
         return {"worst": min(margins), "margins": {f"c{i}": m for i, m in enumerate(margins)}}
@@ -99,7 +99,7 @@ def test_a_tie_on_the_smallest_margin_goes_to_the_larger_next_one():
     # the air-gap margin (0.55) depends on the clearance alone: the s0 and seal margins decide
     first, second = point(0.55, 22.6, 0.73), point(0.55, 18.0, 0.81)
     assert better(second, first) and not better(first, second)
-    assert best_of([first, second, point(0.55 - 0.5 * POLISH_GAIN, 30.0, 0.9)]) is not first
+    assert best_of([first, second, point(0.55 - 0.5 * TIE_MARGIN, 30.0, 0.9)]) is not first
     assert better(point(0.56, 1.0, 0.6), point(0.55, 20.0, 0.9))  # the smallest margin first
     assert not better(point(0.55, 22.6, 0.73), point(0.55, 22.6, 0.73))  # equal: the earlier point stays
     assert best_of([]) is None

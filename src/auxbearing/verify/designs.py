@@ -14,7 +14,7 @@ verdict measures it), with leaving the model's range and sustained backward whir
 clearance stays between the levitated rotor's orbit over :data:`ORBIT_ZONE` (ISO 14839-2) and the
 air-gap limit, within 60-140 % of the file's. A grid over the box, then a compass search from its best point
 (:func:`_polish`), each point a drop of the machine, each round's points run side by side. The criterion with
-the smallest margin at the optimum binds. Geometries whose smallest margins agree (within :data:`POLISH_GAIN`)
+the smallest margin at the optimum binds. Geometries whose smallest margins agree (within :data:`TIE_MARGIN`)
 are told apart by their next smallest, and so on (:func:`better`): where one criterion depends on one variable
 alone (the clearance against the air gap), the others are not left to the order in which the grid was run. A
 variable at a bound of the box is said. A point that fails a criterion is never recommended; the
@@ -39,8 +39,8 @@ CLEARANCE_RANGE = (0.6, 1.4)  #: ours: fraction of the file's radial clearance
 ORBIT_ZONE = 0.3
 #: Most drops the polish after the grid runs.
 POLISH_POINTS = 12
-#: Difference in a margin below which two geometries tie on it (:func:`better`).
-POLISH_GAIN = 1e-3
+#: Difference in a margin below which two geometries tie on it (:func:`better`), in the grid and the polish.
+TIE_MARGIN = 1e-3
 #: The polish stops when its step falls below this share of each variable's range (an eighth of the 3-level
 #: grid's spacing after three rounds).
 POLISH_STEP_MIN = 0.05
@@ -173,7 +173,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         "outer_groove_ratio": float(x[1] + offset), "radial_clearance_mm": [p.radial_clearance * x[2] * 1e3
                                                                              for p in machine.planes],
         "clearance_factor": float(x[2]), "worst_margin": best["worst"], "binding_criterion": best["binding"],
-        "tie_margin": POLISH_GAIN,
+        "tie_margin": TIE_MARGIN,
         "variables_at_bounds": at_bound, "margins": best["margins"], "evaluations": len(evaluated),
         "bounds": {"contact_angle_deg": [math.degrees(v) for v in bounds[0]], "inner_groove_ratio": list(bounds[1]),
                    "clearance_factor": list(bounds[2])},
@@ -187,13 +187,13 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
 def better(a: dict, b: dict) -> bool:
     """Whether design point ``a`` beats ``b`` (a maximin order, ties broken by the next smallest margin).
 
-    Their margins are compared from the smallest up; the first pair that differs by more than :data:`POLISH_GAIN`
+    Their margins are compared from the smallest up; the first pair that differs by more than :data:`TIE_MARGIN`
     decides. All agreeing, it is a tie (False).
     """
     ours = sorted(a["margins"].values()) or [a["worst"]]
     theirs = sorted(b["margins"].values()) or [b["worst"]]
     for mine, other in zip(ours, theirs, strict=False):  # a failure adds a margin
-        if abs(mine - other) > POLISH_GAIN:
+        if abs(mine - other) > TIE_MARGIN:
             return mine > other
     return False
 
@@ -235,9 +235,10 @@ def _polish(best: dict, bounds: np.ndarray, step: float, evaluated: list, launch
             for sign in (1.0, -1.0):
                 u = centre.copy()
                 u[i] = min(1.0, max(0.0, u[i] + sign * step))
-                if key(lo + u * span) not in seen:
-                    seen.add(key(lo + u * span))
-                    polls.append(lo + u * span)
+                x = lo + u * span
+                if key(x) not in seen:
+                    seen.add(key(x))
+                    polls.append(x)
         polls = polls[:POLISH_POINTS - spent]
         points = [judged(*pending) for pending in [launch(x) for x in polls]]  # all out before the first is read
         spent += len(points)
