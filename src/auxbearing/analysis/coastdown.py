@@ -15,7 +15,10 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   quantities move there: the rotor's and the free races' spin speeds under the losses the window measured
   (the bearings' viscous torque as Palmgren's law of the speed, the rest as torques), the drag law
   T0 + c1 Omega + c2 Omega^2 and the process torque; the temperatures follow their networks. A stretch ends
-  when the speed has fallen by ``coastdown.speed_step`` or a clearance has moved by :data:`CLEARANCE_STEP`,
+  when the speed has fallen by ``coastdown.speed_step`` (where the windows find steady states, no rattle or
+  swing, the step doubles, up to four times, while the windows after each stretch find the torques it held
+  unchanged within their scatter: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`) or a clearance
+  has moved by :data:`CLEARANCE_STEP`,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
   ``coastdown.settle_time`` of it after a stretch is run and booked but not judged. The motion only evolves
   in the windows (a stretch resumes it as it was), so where it changes slowly with the clearances and the
@@ -75,6 +78,7 @@ from auxbearing.analysis.coastdown_phases import (
     STEADY_SPAN,
     STEADY_SPANS,
     StretchEnd,
+    calm,
     integrate_stretch,
     motion_steady,
     plane_window,
@@ -82,6 +86,7 @@ from auxbearing.analysis.coastdown_phases import (
     same_families,
     settled,
     spin_model,
+    stretch_growth,
 )
 from auxbearing.analysis.drop import (
     MachineRun,
@@ -108,6 +113,8 @@ from auxbearing.machine.model import Machine
 CLEARANCE_STEP = 1e-6
 #: Longest reduced stretch between two full-dynamics checks [s].
 MAX_STRETCH = 60.0
+#: Largest share of its speed a stretch whose speed step has grown may lose (coastdown_phases.stretch_growth).
+MAX_SPEED_FALL = 0.5
 #: Conductivity of a steel shaft [W/(m K)] for the default journal-to-rotor path (the catalogue 'steel').
 SHAFT_CONDUCTIVITY = 60.5
 #: Shortest shaft length from a plane to the rotor body held at ambient [m] (a plane at the mass centre).
@@ -347,20 +354,22 @@ def _window_planes(machine: Machine, watch, powers: dict) -> list:
     return [w._replace(load=_window_load(machine, k, w)) for k, w in enumerate(planes)]
 
 
-def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_end: float):
+def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_end: float, growth: float = 1.0):
     """Advance the slow quantities on the reduced model (:mod:`auxbearing.core.spin`).
 
-    The temperatures take one exact step with the stretch's mean heat input (the input changes by at most
-    the speed step within a stretch); the stretch is halved until no clearance moves more than
-    :data:`CLEARANCE_STEP` and no part passes ``coastdown.max_temperature`` (so a run-away is found within
-    a check window of its time). Returns the stretch (:class:`auxbearing.analysis.coastdown_phases.Stretch`) and the new
-    temperatures.
+    The stretch ends when the speed has fallen by ``growth`` times ``coastdown.speed_step`` (at most by
+    :data:`MAX_SPEED_FALL`, unless the speed step itself is larger;
+    :func:`auxbearing.analysis.coastdown_phases.stretch_growth`). The temperatures take one exact step with the
+    stretch's mean heat input; the stretch is halved until no clearance moves more than :data:`CLEARANCE_STEP`
+    and no part passes ``coastdown.max_temperature`` (so a run-away is found within a check window of its
+    time). Returns the stretch (:class:`auxbearing.analysis.coastdown_phases.Stretch`) and the new temperatures.
     """
     coast = machine.coastdown
     y = session.y
     omega0 = float(y[cm.OMEGA])
     races = [float(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) for k in range(len(machine.planes))]
-    floor = max(abs(omega0) * (1.0 - coast.speed_step), coast.stop_speed)
+    fall = min(growth * coast.speed_step, max(coast.speed_step, MAX_SPEED_FALL))
+    floor = max(abs(omega0) * (1.0 - fall), coast.stop_speed)
     model = spin_model(machine, windows, omega0, races, floor)
     span = min(t_end - session.t, MAX_STRETCH)
     while True:
@@ -480,6 +489,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     motion: list = []  # the last full windows in one family of reducible states, for motion_steady
     steady = False  # the motion has been found steady since it last changed state
     ending = None  # the last stretch until the windows after it have measured the load at its end
+    held = None  # the windows the last stretch held its torques from, while the states stay reducible
+    growth = 1.0  # the stretches' steps over their base (coastdown_phases.stretch_growth)
     settling = 0
     stopped_at = None
 
@@ -568,6 +579,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         reducible = all(p.state in REDUCIBLE for p in windows)
         if not reducible or (motion and not same_families(motion[-1], windows)):
             motion, steady = [], False
+            held, growth = None, 1.0
         if reducible:
             span = math.ceil(STEADY_SPAN / length - 1e-9)
             motion.append(windows)
@@ -589,7 +601,12 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         for w in carried:
             counts["states"][w.state] = counts["states"].get(w.state, 0) + 1
         loads = [w.load for w in carried]
-        stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end)
+        if not calm(machine, checked):
+            growth = 1.0
+        elif held is not None:
+            growth = stretch_growth(growth, held, carried, machine)
+        held = carried
+        stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth)
         session.set_speeds(stretch.rotor_speed, stretch.race_speeds)
         for k in range(len(networks)):
             for j in range(3):
