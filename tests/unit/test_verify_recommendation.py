@@ -7,6 +7,7 @@ does at every point of its search, so the test needs no integration.
 from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 import auxbearing.analysis.drop
 from auxbearing.machine.files import machine_table
@@ -103,3 +104,35 @@ def test_a_tie_on_the_smallest_margin_goes_to_the_larger_next_one():
     assert better(point(0.56, 1.0, 0.6), point(0.55, 20.0, 0.9))  # the smallest margin first
     assert not better(point(0.55, 22.6, 0.73), point(0.55, 22.6, 0.73))  # equal: the earlier point stays
     assert best_of([]) is None
+
+
+def test_the_bearing_as_it_stands_goes_out_with_the_grid(monkeypatch):
+    """Its margin is reported beside the recommendation; its drop runs beside the grid's, not after the polish."""
+    from auxbearing.verify.cases import Immediate
+
+    monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", _smooth_drop)
+
+    class Recording(Immediate):
+        def __init__(self):
+            self.submitted, self.first_asked = 0, None
+
+        def submit(self, fn, *args, **kwargs):
+            self.submitted += 1
+            done = super().submit(fn, *args, **kwargs)
+            owner = self
+
+            class Asked:
+                def result(self):
+                    if owner.first_asked is None:
+                        owner.first_asked = owner.submitted
+                    return done.result()
+            return Asked()
+
+    executor = Recording()
+    data, name, base = machine_table("paper_rig")
+    rec = recommend(data, name, base, read_criteria({"min_s0": 2.0}), quick=False, executor=executor)
+    assert executor.first_asked == 27 + 1  # the 3x3x3 grid and the bearing as it stands
+    from auxbearing.machine.files import read_machine
+
+    angle = read_machine("paper_rig").planes[0].bearing.contact_angle
+    assert rec["as_is"] == pytest.approx((3.0 - 4.0 * (angle - 0.40) ** 2) / 2.0 - 1.0)  # the stand-in's s0 margin

@@ -117,9 +117,6 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         tables.setdefault("drop", {}).update(duration)
         return x, executor.submit(_point_summary, tables, name, base)
 
-    def margins(x) -> dict:
-        return judged(*launch(x))
-
     def judged(x, future) -> dict:
         summary = future.result()
         if "invalid" in summary:
@@ -148,6 +145,8 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
 
     levels = 2 if quick else 3
     grids = [np.linspace(lo, hi, levels) if hi > lo else np.array([lo]) for lo, hi in bounds]
+    # the bearing as it stands goes out with the grid, so that no drop of its own waits for the polish to end
+    as_is = launch(np.array([first.contact_angle, first.inner_groove_ratio, 1.0]))
     pending = [launch(np.array([a, f, c])) for a in grids[0] for f in grids[1] for c in grids[2]]
     for x, future in pending:
         judged(x, future)
@@ -180,7 +179,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         "points": [{"contact_angle_deg": math.degrees(p["x"][0]), "inner_groove_ratio": float(p["x"][1]),
                     "clearance_factor": float(p["x"][2]), "worst_margin": p["worst"], "binding": p["binding"]}
                    for p in evaluated],
-        "as_is": margins(np.array([first.contact_angle, first.inner_groove_ratio, 1.0]))["worst"],
+        "as_is": judged(*as_is)["worst"],
     }
 
 
