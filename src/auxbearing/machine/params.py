@@ -194,9 +194,9 @@ COASTDOWN: tuple[Param, ...] = (
           "Temperature of any bearing part that ends the run (thermal run-away)",
           "ours: 150 degC, the usual dimensional-stabilisation limit of through-hardened bearing steel"),
     Param("coastdown", "speed_step", "dimensionless", 0.1, "", "fraction",
-          "Relative speed change of one reduced-model stretch before full dynamics checks again; it doubles, up "
-          "to four times (at most half the speed), while the windows after each stretch find the torques it held "
-          "unchanged",
+          "Relative speed change of one reduced-model stretch before full dynamics checks again; where the "
+          "windows find steady states (no rattle or swing) it doubles, up to four times (at most half the speed), "
+          "while the windows after each stretch find the torques it held unchanged",
           "ours: the reduced/full agreement test holds within 2 % with it"),
     Param("coastdown", "max_steps", "dimensionless", 3e7, "", "count",
           "Step budget of the coast-down's full dynamics: past it the run stops, its outcome not checked",
