@@ -17,7 +17,7 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   T0 + c1 Omega + c2 Omega^2 and the process torque; the temperatures follow their networks. A stretch ends
   when the speed has fallen by ``coastdown.speed_step`` (where the windows find steady states, no rattle or
   swing, the step doubles, up to four times, while the windows after each stretch find the torques it held
-  unchanged within their scatter: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`) or a clearance
+  unchanged within 1 %: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`) or a clearance
   has moved by :data:`CLEARANCE_STEP`,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
   ``coastdown.settle_time`` of it after a stretch is run and booked but not judged. The motion only evolves
@@ -490,7 +490,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     steady = False  # the motion has been found steady since it last changed state
     ending = None  # the last stretch until the windows after it have measured the load at its end
     held = None  # the windows the last stretch held its torques from, while the states stay reducible
-    growth = 1.0  # the stretches' steps over their base (coastdown_phases.stretch_growth)
+    growth = 1.0  # the stretches' speed step over coastdown.speed_step (coastdown_phases.stretch_growth)
     settling = 0
     stopped_at = None
 
