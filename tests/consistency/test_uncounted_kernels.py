@@ -13,6 +13,8 @@ import os
 import subprocess
 import sys
 
+import pytest
+
 SCRIPT = r"""
 import json
 from numba.core.runtime import rtsys
@@ -42,6 +44,8 @@ print(json.dumps({"calls": len(calls), "unfreed": sum(c[0] for c in calls), "wor
 """
 
 
+# a fresh process that imports the package and runs five drops: 3.6 s, the quick loop's longest test
+@pytest.mark.slow
 def test_the_driver_frees_all_it_allocates():
     env = {**os.environ, "NUMBA_NRT_STATS": "1"}
     done = subprocess.run([sys.executable, "-c", SCRIPT], capture_output=True, text=True, env=env, timeout=600,
