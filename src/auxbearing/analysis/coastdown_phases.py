@@ -301,6 +301,8 @@ def _held(plane, window: PlaneWindow, omega: float) -> tuple[float, float, float
     if window.state == "free":
         return 0.0, 0.0, rest
     rotor = abs(window.rotor_speed) if window.rotor_speed != 0.0 else abs(omega)
+    if rotor <= 0.0:  # a rotor at rest takes no torque from its losses
+        return 0.0, 0.0, rest
     return window.powers[0] / rotor, window.powers[2] / rotor, rest
 
 
@@ -331,8 +333,8 @@ def stretch_growth(growth: float, before: list[PlaneWindow], after: list[PlaneWi
     """How many times ``coastdown.speed_step`` the next stretch may take (where the windows measured steady states).
 
     The loop asks only where :func:`calm` holds; the answer comes from what the last stretch held and the windows
-    after it.     A stretch holds each plane's contact, mount and non-viscous bearing torques at their values before it
-    (:func:`spin_model`; the viscous torque and the drag follow their laws of the speed) while the speed falls.
+    after it. A stretch holds each plane's contact, mount and non-viscous bearing torques at their values before
+    it (:func:`spin_model`; the viscous torque and the drag follow their laws of the speed) while the speed falls.
     The windows after it measure those torques again. Where none moved by more than half :data:`STATIONARY`
     of its plane's loss torque, the step doubles, up to :data:`MAX_GROWTH` times; where one moved by more than
     :data:`STATIONARY`, it goes back to its base. A torque that changes linearly over a stretch is held wrong
@@ -348,8 +350,7 @@ def stretch_growth(growth: float, before: list[PlaneWindow], after: list[PlaneWi
     change = 0.0
     for plane, b, a in zip(machine.planes, before, after, strict=True):
         if sum(a.powers) > 0.0:
-            moved = sum(abs(x - y) for x, y in zip(_held(plane, a, a.rotor_speed), _held(plane, b, b.rotor_speed),
-                                                   strict=True))
+            moved = sum(abs(x - y) for x, y in zip(_held(plane, a, 0.0), _held(plane, b, 0.0), strict=True))
             change = max(change, moved / abs(a.torque))
     if change > STATIONARY:
         return 1.0
