@@ -5,9 +5,9 @@ The windows are the shape of the blower's drive end rolling at low speed (a loss
 the issue's physics check on the reduced model's own assumption (held torques), not a published number.
 """
 
-from auxbearing.analysis.coastdown import MAX_SPEED_FALL
 from auxbearing.analysis.coastdown_phases import (
     MAX_GROWTH,
+    MAX_SPEED_FALL,
     STATIONARY,
     PlaneWindow,
     calm,

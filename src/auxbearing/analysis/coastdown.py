@@ -78,6 +78,7 @@ import xarray as xr
 from auxbearing import __version__
 from auxbearing.analysis.coastdown_life import plane_life
 from auxbearing.analysis.coastdown_phases import (
+    MAX_SPEED_FALL,
     MAX_WINDOWS,
     REDUCIBLE,
     STEADY_SPAN,
@@ -118,8 +119,6 @@ from auxbearing.machine.model import Machine
 CLEARANCE_STEP = 1e-6
 #: Longest reduced stretch between two full-dynamics checks [s].
 MAX_STRETCH = 60.0
-#: Largest share of its speed a stretch whose speed step has grown may lose (coastdown_phases.stretch_growth).
-MAX_SPEED_FALL = 0.5
 #: Conductivity of a steel shaft [W/(m K)] for the default journal-to-rotor path (the catalogue 'steel').
 SHAFT_CONDUCTIVITY = 60.5
 #: Shortest shaft length from a plane to the rotor body held at ambient [m] (a plane at the mass centre).
@@ -363,7 +362,7 @@ def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_en
     """Advance the slow quantities on the reduced model (:mod:`auxbearing.core.spin`).
 
     The stretch ends when the speed has fallen by ``growth`` times ``coastdown.speed_step`` (at most by
-    :data:`MAX_SPEED_FALL`, unless the speed step itself is larger;
+    :data:`~auxbearing.analysis.coastdown_phases.MAX_SPEED_FALL`, unless the speed step itself is larger;
     :func:`auxbearing.analysis.coastdown_phases.stretch_growth`). The temperatures take one exact step with the
     stretch's mean heat input; the stretch is halved until no clearance moves more than :data:`CLEARANCE_STEP`
     and no part passes ``coastdown.max_temperature`` (so a run-away is found within a check window of its

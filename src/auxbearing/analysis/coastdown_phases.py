@@ -327,6 +327,8 @@ def calm(machine: Machine, windows: list[list[PlaneWindow]]) -> bool:
 
 #: Most times ``coastdown.speed_step`` a stretch's speed step grows to (:func:`stretch_growth`).
 MAX_GROWTH = 4.0
+#: Largest share of its speed a stretch whose speed step has grown may lose (unless the speed step itself is larger).
+MAX_SPEED_FALL = 0.5
 
 
 def stretch_growth(growth: float, before: list[PlaneWindow], after: list[PlaneWindow], machine: Machine) -> float:
