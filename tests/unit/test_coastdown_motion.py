@@ -106,11 +106,14 @@ def test_a_swing_dying_out_below_the_quiet_level_is_steady():
 
 
 def test_a_run_that_carried_a_rattle_says_how_far_its_damage_may_be_off():
-    from auxbearing.analysis.coastdown import RATTLE_DAMAGE_RANGE, rattle_note
+    from auxbearing.analysis.coastdown import RATTLE_DAMAGE_RANGE, RATTLE_DAMAGE_RANGE_TO_STANDSTILL, rattle_note
 
     assert rattle_note({"reduced_plane_states": {"rolling": 12, "free": 3}}) == ""
     assert rattle_note({}) == ""
-    note = rattle_note({"reduced_plane_states": {"rolling": 40, "rattling": 208}})
-    low, high = RATTLE_DAMAGE_RANGE
-    assert "208 of 248 plane-stretches" in note
-    assert f"{100 * low:+.1f} %" in note and f"{100 * high:+.1f} %" in note
+    states = {"reduced_plane_states": {"rolling": 40, "rattling": 208}}
+    for until_stop, (low, high), span in ((False, RATTLE_DAMAGE_RANGE, "first 30 s"),
+                                          (True, RATTLE_DAMAGE_RANGE_TO_STANDSTILL, "to standstill")):
+        note = rattle_note(states | {"until_stop": until_stop})
+        assert "208 of 248 plane-stretches" in note
+        assert span in note
+        assert f"{100 * low:+.1f} %" in note and f"{100 * high:+.1f} %" in note
