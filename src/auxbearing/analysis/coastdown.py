@@ -760,7 +760,7 @@ def rattle_note(summary: dict) -> str:
     whole = bool(summary.get("until_stop"))
     low, high = RATTLE_DAMAGE_RANGE_TO_STANDSTILL if whole else RATTLE_DAMAGE_RANGE
     span, reference, temperatures = (
-        ("run to standstill", "full dynamics run as far", "0.08 K") if whole
+        ("run to standstill", "full dynamics run to the same end", "0.08 K") if whole
         else ("over their first 30 s", "full dynamics converged in its tolerances", "0.1 K"))
     return (f"the reduced model carried a rattling journal in {rattling} of {sum(carried.values())} plane-stretches: "
             f"on the shipped examples {span} the reduced model's damage per drop lay {100 * low:+.1f} % "
