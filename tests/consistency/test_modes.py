@@ -13,7 +13,7 @@ import math
 import numpy as np
 import pytest
 
-from auxbearing.analysis.modes import campbell, linear_matrices
+from auxbearing.analysis.modes import campbell, linear_matrices, swing_stiffness
 from auxbearing.machine.files import machine_table
 from auxbearing.machine.model import machine_from_mapping
 
@@ -59,6 +59,26 @@ def test_in_contact_each_plane_is_a_spring_and_free_nothing_holds_the_blower():
     assert all(k > 0.0 for k in contact.contact_stiffness)
     _, _, _, stiff, _ = linear_matrices(machine, "contact")
     assert np.allclose(stiff, stiff.T)
-    # the rigid rotor on two springs of equal stiffness at +-0.15 m: translation sqrt(2 k / m)
-    k = contact.contact_stiffness[0]
-    assert contact.frequencies[0, 0] == pytest.approx(math.sqrt(2 * k / M) / (2 * math.pi), rel=1e-9)
+    # the rigid rotor on two equal planes at +-0.15 m: along the weight the contact springs, translation sqrt(2 k / m);
+    # across it the swings, sqrt(2 k_s / m)
+    k, swing = contact.contact_stiffness[0], swing_stiffness(machine, 0)
+    assert sorted(contact.frequencies[0, [0, 2]]) == pytest.approx(
+        [math.sqrt(2 * swing / M) / (2 * math.pi), math.sqrt(2 * k / M) / (2 * math.pi)], rel=1e-9)
+    assert list(contact.whirl[0]) == ["planar"] * 4
+
+
+def test_a_journal_resting_in_its_bore_swings_as_a_pendulum_of_the_clearance_and_the_unbalance_drives_it():
+    machine = _blower(supports=False)
+    plane = machine.planes[0]
+    weight = 0.5 * M * machine.simulation.gravity
+    assert swing_stiffness(machine, 0) < weight / plane.radial_clearance  # in series with ball set and mount
+    # the simple pendulum of length c, sqrt(g / c) / (2 pi) = 40.7 Hz; the ball set and mount take 1 % off
+    pendulum = math.sqrt(machine.simulation.gravity / plane.radial_clearance) / (2.0 * math.pi)
+    speeds = np.linspace(0.0, 3000.0 * math.pi / 30.0, 61)
+    contact = campbell(machine, speeds, "contact")
+    assert contact.frequencies[0, 0] == pytest.approx(pendulum, rel=0.02)
+    # a line orbit at every speed (a translation: the spin does not couple it), so the 1x line meets it at its
+    # frequency; full dynamics loads the blower's journals more near that speed (analysis.coastdown)
+    assert set(contact.whirl[:, 0]) == {"planar"}
+    crit = min(c["speed_rpm"] for c in contact.critical_speeds())
+    assert crit == pytest.approx(60.0 * contact.frequencies[0, 0], rel=1e-3)

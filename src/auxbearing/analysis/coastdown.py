@@ -47,7 +47,8 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
 Where those gaps come from, measured speed band by speed band against full dynamics to standstill. A journal
 resting in the bottom of its bore is a rolling pendulum: the weight W on a plane, on an arc of the radial
 clearance c, restores a sideways shift with a stiffness W / c, so its small swings go at sqrt(g / c) / (2 pi)
-(the rigid rotor with that spring on each plane: 40.7 and 43.2 Hz on the blower, 35.2 Hz on the paper rig). The
+(the Campbell diagram in contact, :mod:`auxbearing.analysis.modes`, with the ball sets and mounts in series: 40.3
+and 42.8 Hz on the blower, 35.2 Hz on the paper rig). The
 unbalance drives it where the speed is once, twice or three times that frequency; near the clearance the swing
 is large and slower (an RMS speed of 3.5 cm/s at 36 Hz is 0.2 mm of swing in the blower's 0.15 mm), so the
 resonances sit 5-12 % below those speeds. Full dynamics sweeps through each and its swing builds up over

@@ -16,13 +16,22 @@ whirl directions). Two states of the touchdown planes are shown:
   hold it, each bearing as its controller's ideal PD law, a spring k_i k_p - k_s and a damper k_i k_d at the
   actuator (the sensor's and amplifier's lags and the integral action left out: exact well below their
   bandwidths). A rotor held by nothing has its rigid-body modes at zero, and its nutation J_p Omega / J_t at speed;
-* in contact: each plane carrying its share of the weight at rest, linearised as an isotropic spring: the
-  journal/race line contact's tangent stiffness (10/9) F / delta at that load (Eq. 19) in series with the
-  ball set's and the mount's (:func:`auxbearing.analysis.whirl.natural_frequency`); undamped.
+* in contact: each plane carrying its share W of the weight at rest in the bottom of its bore, undamped. Along
+  the weight (y) the journal/race line contact's tangent stiffness (10/9) F / delta at that load (Eq. 19) in
+  series with the ball set's and the mount's (:func:`auxbearing.analysis.whirl.natural_frequency`). Across it
+  (x) the journal's centre runs on an arc of the radial clearance c, so the weight restores a sideways shift
+  with W / c: the simple pendulum of length c, omega^2 = g / c (Thomson & Dahleh, *Theory of Vibration with
+  Applications*, 5th ed., 1998, Ch. 2, free vibration), in series with the ball set and mount
+  (:func:`swing_stiffness`; the race's turning as the journal rolls on it is left out: a 0.07 kg race adds
+  about 1 % to the blower's 5 kg a plane). Full dynamics finds these swings: the blower's coast-down loads its
+  journals more near once and twice its 40.7 Hz (:mod:`auxbearing.analysis.coastdown`). A vertical machine
+  rests on no plane, so nothing is added.
 
 A mode whirls forward when its orbit turns with the spin, backward when against it (at the station of its
-largest motion). Two modes of equal frequency (no spin, or no gyroscopic coupling) are a "pair": the
-eigensolver returns them in any mix, and either whirl direction is a combination of them.
+largest motion); one whose orbit there is nearly a line (:data:`PLANAR`, a plane swinging across its weight
+while the other direction sits on its contact) is "planar", and the unbalance drives it like a forward one.
+Two modes of equal frequency (no spin, or no gyroscopic coupling) are a "pair": the eigensolver returns them
+in any mix, and either whirl direction is a combination of them.
 """
 
 from __future__ import annotations
@@ -42,6 +51,10 @@ from auxbearing.machine.stations import of_kind
 RIGID_BELOW = 1e-3
 #: Two frequencies this close (relative) are one pair of modes (module docstring).
 PAIR_TOLERANCE = 1e-8
+#: An orbit whose turning 2 |Im(conj(x) y)| / (|x|^2 + |y|^2) is below this is a line: the mode is "planar" (a
+#: circle gives 1). A plane's pendulum swing in contact is a line at rest and stays below 0.03 up to the blower's and
+#: the compressor's top speeds; the spin turns the compressor's bending modes into orbits of 0.64-0.96 by 4000 rpm.
+PLANAR = 0.05
 STATES = ("free", "contact")
 
 
@@ -54,11 +67,11 @@ class Campbell:
     speeds: np.ndarray  #: (n,) spin speeds [rad/s]
     frequencies: np.ndarray  #: (n, modes) damped natural frequencies [Hz], ascending at each speed
     damping_ratios: np.ndarray  #: (n, modes) [-]
-    whirl: np.ndarray  #: (n, modes) "forward", "backward" or "pair" (module docstring)
+    whirl: np.ndarray  #: (n, modes) "forward", "backward", "planar" or "pair" (module docstring)
     contact_stiffness: tuple  #: each plane's linearised stiffness in contact [N/m] (0: free or not loaded)
 
     def critical_speeds(self) -> list[dict]:
-        """Where the synchronous excitation (1x) crosses a forward mode (or a pair) [rpm], linearly interpolated."""
+        """Where the synchronous excitation (1x) crosses a mode it drives (forward, planar or a pair) [rpm]."""
         out = []
         excitation = np.abs(self.speeds) / (2.0 * math.pi)
         for j in range(self.frequencies.shape[1]):
@@ -105,6 +118,23 @@ def contact_stiffness(machine: Machine, k: int) -> float:
     return natural_frequency(force, plane.line_stiffness, _support_stiffness(plane), 1.0) ** 2
 
 
+def swing_stiffness(machine: Machine, k: int) -> float:
+    """Plane k's stiffness across its weight at rest [N/m]: W / c in series with ball set and mount (0: unloaded).
+
+    The journal's centre in the bottom of its bore runs on an arc of the radial clearance c; a sideways shift x
+    lifts the weight W by x^2 / (2 c), a potential W x^2 / (2 c) (module docstring).
+    """
+    from auxbearing.analysis.drop import _support_stiffness
+
+    plane = machine.planes[k]
+    weight = machine.rest_share(k) * machine.rotor.mass * machine.simulation.gravity
+    if machine.orientation == "vertical" or weight <= 0.0:
+        return 0.0
+    support = _support_stiffness(plane)
+    pendulum = weight / plane.radial_clearance
+    return pendulum if support <= 0.0 else 1.0 / (1.0 / pendulum + 1.0 / support)
+
+
 def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, ...]:
     """(M, C, G, K) of the linear model (module docstring) and each plane's contact stiffness."""
     if state not in STATES:
@@ -143,9 +173,9 @@ def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, 
     for k, plane in enumerate(machine.planes):
         spring = contact_stiffness(machine, k) if state == "contact" else 0.0
         springs.append(spring)
-        if spring > 0.0:
+        if spring > 0.0:  # along the weight (y) the contact, across it (x) the swing on the bore's arc
             bx, by = station_rows(machine, plane.position, f"touchdown.{k}.position")
-            stiff += spring * (np.outer(bx, bx) + np.outer(by, by))
+            stiff += swing_stiffness(machine, k) * np.outer(bx, bx) + spring * np.outer(by, by)
     return mass, damp, gyro, stiff, tuple(springs)
 
 
@@ -181,7 +211,10 @@ def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
             z.append(-lam.real / abs(lam))
             # x = Re(X e^(i w t)), y = Re(Y e^(i w t)): Y = -i X turns from +x to +y, with a spin about +z
             turn = spin * np.imag(np.conj(x[at]) * y[at])
-            fw.append("forward" if turn < 0.0 else "backward")
+            if 2.0 * abs(turn) < PLANAR * (abs(x[at]) ** 2 + abs(y[at]) ** 2):
+                fw.append("planar")
+            else:
+                fw.append("forward" if turn < 0.0 else "backward")
         order = np.argsort(f)
         f, fw = np.array(f)[order], np.array(fw, dtype=object)[order]
         for j in range(len(f) - 1):

@@ -49,6 +49,10 @@ def _by_speed(diagram) -> list[dict]:
             for i, w in enumerate(diagram.speeds)]
 
 
+#: How the console table marks each mode's whirl (:data:`auxbearing.analysis.modes.PLANAR` for a line).
+_WHIRL_MARK = {"forward": "F", "backward": "B", "planar": "P"}
+
+
 @click.command("modes")
 @click.option("--machine", "machine_spec", required=True, metavar="FILE|NAME",
               help="A machine TOML file or an example machine (`auxbearing machines`).")
@@ -65,8 +69,9 @@ def modes_command(machine_spec, speeds, points, out_dir, as_json):
 
     The linear model of the drop's rotor: the rigid body and the elastic modes of a rotor given as matrices,
     the linear supports, and for "in contact" each touchdown plane's line contact, ball set and mount
-    linearised under its share of the weight. Forward and backward whirl are told apart; the critical speeds
-    are where the synchronous line crosses a forward mode.
+    linearised under its share of the weight along it, and the journal swinging on the arc of its clearance
+    across it (a pendulum of length c). Forward, backward and planar (a line orbit) modes are told apart; the
+    critical speeds are where the synchronous line crosses a forward or planar mode.
     """
     from rich.console import Console
     from rich.table import Table
@@ -108,13 +113,13 @@ def modes_command(machine_spec, speeds, points, out_dir, as_json):
         for j in range(width):
             table.add_column(f"mode {j + 1} [Hz]", justify="right")
         for i, omega in enumerate(d.speeds):
-            cells = [f"{f:.1f} {'F' if w == 'forward' else 'B' if w == 'backward' else '-'}"
+            cells = [f"{f:.1f} {_WHIRL_MARK.get(w, '-')}"
                      for f, w in zip(d.frequencies[i, :width], d.whirl[i, :width], strict=True)]
             table.add_row(f"{omega * 30.0 / math.pi:.0f}", *cells)
         console.print(table)
         crit = ", ".join(f"{c['speed_rpm']:.0f} rpm" for c in d.critical_speeds()) or "none in the range"
-        console.print(f"critical speeds (1x on a forward mode): {crit}; F forward, B backward, "
-                      "- a pair of equal frequency")
+        console.print(f"critical speeds (1x on a forward or planar mode): {crit}; F forward, B backward, "
+                      "P planar (a line), - a pair of equal frequency")
     if out_dir is not None:
         console.print(f"Wrote modes.json and the figures in {out_dir}/")
 

@@ -11,7 +11,7 @@ from matplotlib.figure import Figure
 from auxbearing.plots._axes import axes_for
 
 _STYLE = {"forward": ("tab:red", "forward"), "backward": ("tab:blue", "backward"),
-          "pair": ("0.4", "pair (either direction)")}
+          "planar": ("tab:green", "planar (a line)"), "pair": ("0.4", "pair (either direction)")}
 
 
 def plot_campbell(diagrams, operating_speed: float, ax=None) -> Figure:

@@ -176,9 +176,10 @@ def _modes(machine) -> list[tuple[Figure, str]]:
     for d in diagrams:
         crit = ", ".join(f"{c['speed_rpm']:.0f} rpm" for c in d.critical_speeds()) or "none up to 1.2x the speed"
         crossings.append(f"{'levitated' if d.state == 'free' else 'in contact at rest'}: {crit}")
-    out = [(plot_campbell(diagrams, machine.rotor.speed), "Damped natural frequencies against speed (forward and "
-            "backward whirl), levitated on the magnetic bearings and linear supports and in contact with the touchdown "
-            "bearings at rest; critical speeds (the synchronous line on a forward mode): " + "; ".join(crossings)
+    out = [(plot_campbell(diagrams, machine.rotor.speed), "Damped natural frequencies against speed (forward, "
+            "backward and planar whirl), levitated on the magnetic bearings and linear supports and in contact with "
+            "the touchdown bearings at rest (across the weight a journal swings on the arc of its clearance); critical "
+            "speeds (the synchronous line on a forward or planar mode): " + "; ".join(crossings)
             + ". The magnetic bearings enter as their ideal spring and damper (sensor and amplifier lags left out).")]
     modal = machine.modal()
     if modal is not None and modal.n_modes:
