@@ -24,7 +24,7 @@ whirl directions). Two states of the touchdown planes are shown:
   Applications*, 5th ed., 1998, Ch. 2, free vibration), in series with the ball set and mount
   (:func:`swing_stiffness`; the race's turning as the journal rolls on it is left out: a 0.07 kg race adds
   about 1 % to the blower's 5 kg a plane). Full dynamics finds these swings: the blower's coast-down loads its
-  journals more near once and twice its 40.7 Hz (:mod:`auxbearing.analysis.coastdown`). A vertical machine
+  journals more near once and twice its 40.3 Hz (:mod:`auxbearing.analysis.coastdown`). A vertical machine
   rests on no plane, so nothing is added.
 
 A mode whirls forward when its orbit turns with the spin, backward when against it (at the station of its
