@@ -105,33 +105,41 @@ def station_rows(machine: Machine, position: float, key: str) -> tuple[np.ndarra
     return bx, by
 
 
-def contact_stiffness(machine: Machine, k: int) -> float:
-    """Plane k's linearised stiffness in contact under its share of the weight at rest [N/m] (0: unloaded)."""
+def _resting(machine: Machine, k: int) -> tuple[float, float]:
+    """Plane k's share W of the weight at rest [N] and its ball set and mount in series [N/m]; (0, 0) when unloaded."""
     from auxbearing.analysis.drop import _support_stiffness
+
+    weight = machine.rest_share(k) * machine.rotor.mass * machine.simulation.gravity
+    if machine.orientation == "vertical" or weight <= 0.0:
+        return 0.0, 0.0
+    return weight, _support_stiffness(machine.planes[k])
+
+
+def contact_stiffness(machine: Machine, k: int, resting: tuple[float, float] | None = None) -> float:
+    """Plane k's linearised stiffness in contact under its share of the weight at rest [N/m] (0: unloaded).
+
+    ``resting``: :func:`_resting` of the plane, when the caller has it.
+    """
     from auxbearing.analysis.whirl import natural_frequency
 
-    plane = machine.planes[k]
-    force = machine.rest_share(k) * machine.rotor.mass * machine.simulation.gravity
-    if machine.orientation == "vertical" or force <= 0.0:
+    force, support = resting or _resting(machine, k)
+    if force <= 0.0:
         return 0.0
     # natural_frequency returns sqrt(k / m): with m = 1 its square is the series stiffness
-    return natural_frequency(force, plane.line_stiffness, _support_stiffness(plane), 1.0) ** 2
+    return natural_frequency(force, machine.planes[k].line_stiffness, support, 1.0) ** 2
 
 
-def swing_stiffness(machine: Machine, k: int) -> float:
+def swing_stiffness(machine: Machine, k: int, resting: tuple[float, float] | None = None) -> float:
     """Plane k's stiffness across its weight at rest [N/m]: W / c in series with ball set and mount (0: unloaded).
 
     The journal's centre in the bottom of its bore runs on an arc of the radial clearance c; a sideways shift x
-    lifts the weight W by x^2 / (2 c), a potential W x^2 / (2 c) (module docstring).
+    lifts the weight W by x^2 / (2 c), a potential W x^2 / (2 c) (module docstring). ``resting`` as for
+    :func:`contact_stiffness`.
     """
-    from auxbearing.analysis.drop import _support_stiffness
-
-    plane = machine.planes[k]
-    weight = machine.rest_share(k) * machine.rotor.mass * machine.simulation.gravity
-    if machine.orientation == "vertical" or weight <= 0.0:
+    weight, support = resting or _resting(machine, k)
+    if weight <= 0.0:
         return 0.0
-    support = _support_stiffness(plane)
-    pendulum = weight / plane.radial_clearance
+    pendulum = weight / machine.planes[k].radial_clearance
     return pendulum if support <= 0.0 else 1.0 / (1.0 / pendulum + 1.0 / support)
 
 
@@ -171,11 +179,12 @@ def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, 
                 damp += damper * b.T @ sensor
     springs = []
     for k, plane in enumerate(machine.planes):
-        spring = contact_stiffness(machine, k) if state == "contact" else 0.0
+        resting = _resting(machine, k) if state == "contact" else (0.0, 0.0)
+        spring = contact_stiffness(machine, k, resting)
         springs.append(spring)
         if spring > 0.0:  # along the weight (y) the contact, across it (x) the swing on the bore's arc
             bx, by = station_rows(machine, plane.position, f"touchdown.{k}.position")
-            stiff += swing_stiffness(machine, k) * np.outer(bx, bx) + spring * np.outer(by, by)
+            stiff += swing_stiffness(machine, k, resting) * np.outer(bx, bx) + spring * np.outer(by, by)
     return mass, damp, gyro, stiff, tuple(springs)
 
 
