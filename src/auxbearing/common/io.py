@@ -235,12 +235,21 @@ def write_json(obj: object, path: str | Path, inputs: dict | None = None) -> Pat
     return path
 
 
+def trim_of(fig) -> dict:
+    """Savefig's cropping for ``fig``: none for a figure laid out by its engine, else to the drawn extent.
+
+    A constrained layout already fits the axes, legends and titles into the canvas; cropping to the tight
+    box as well draws the figure twice (the blower's report figures: 20-55 % of their saving time).
+    """
+    return {} if fig.get_layout_engine() is not None else {"bbox_inches": "tight"}
+
+
 def save_figure(fig, stem: str | Path, formats: tuple[str, ...] = ("png",)) -> list[Path]:
     """Save a matplotlib Figure as ``stem.<fmt>`` for each format; returns the paths."""
     paths = []
     for fmt in formats:
         path = Path(f"{stem}.{fmt}")
-        fig.savefig(path, dpi=150, bbox_inches="tight")
+        fig.savefig(path, dpi=150, **trim_of(fig))
         paths.append(path)
     return paths
 

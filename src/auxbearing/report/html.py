@@ -16,6 +16,7 @@ import math
 from datetime import UTC, datetime
 
 from auxbearing import __version__
+from auxbearing.common.io import trim_of
 from auxbearing.report.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS
 from auxbearing.report.model import PAPER_STUDY, Framing, Section
 
@@ -37,7 +38,7 @@ color:#c62828}.about{background:#f5f8f5;border-left:4px solid #8a8;padding:.5em 
 def figure_png_base64(fig) -> str:
     """PNG bytes of a matplotlib Figure as base64 text."""
     buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=110, bbox_inches="tight")
+    fig.savefig(buffer, format="png", dpi=110, **trim_of(fig))
     return base64.b64encode(buffer.getvalue()).decode("ascii")
 
 
