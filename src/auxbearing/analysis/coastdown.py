@@ -42,7 +42,8 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   internal clearances within 0.09 um, the blower family's standstill times within 0.17 %, damage per drop within
   2 % on every plane but the paper rigs' (-3.1 to -4.5 %, standstill +1.3 / +2.4 %), the blower's rattling
   non-drive end (-2.2 %) and the 7208 DB pair's (-1.6 / -2.1 %); full dynamics 3.3 times tighter moved the
-  blower's and the DB pair's by at most 0.17 %.
+  blower's and the DB pair's by at most 0.17 %. Those are single runs; as the means of ensembles (below) only
+  the two-plane paper rig (-2.8 / -3.1 %) and the blower's non-drive end (-2.2 %) lie outside 2 %.
 
 Where those gaps come from, measured speed band by speed band against full dynamics to standstill. A journal
 resting in the bottom of its bore is a rolling pendulum: the weight W on a plane, on an arc of the radial
@@ -61,10 +62,18 @@ settling in that band still missed it (-2.04 %); full dynamics through 4900-3800
 near 5600, 4000 and 2000 rpm (20.5, 19.0 and 18.8 N against 14.6 N at rest) and the last swing dies out
 slowly below; the reduced run follows the middle one only. Its journal is chaotic besides: moving the
 unbalance phase by 1e-9 to 4e-9 rad moves full dynamics' standstill time by up to 4 % and its damage by up to
-8 %. Over five such runs each (four of full dynamics on two planes), the reduced run's means lie -0.25 % and
--1.1 % from full dynamics' in standstill time and -3.0 % and -2.3 / -2.9 % in damage per drop, with standard
-errors of 0.8-1.6 % on either side; the peak temperatures agree within 0.04 K. The DB pair's gap is no single
-passage: its loads lie 0.5-2 % low across the whole run, the small rattle above.
+8 %. Over fifteen such runs each (unbalance phases 0 to 1.4e-8 rad), the reduced run's means lie -1.0 % (one
+plane) and -0.4 % (two planes) from full dynamics' in standstill time and -0.4 % and -2.8 / -3.1 % in damage per
+drop, with standard errors of 0.7-1.1 % on the differences; the peak temperatures agree within 0.02 K. Speed
+band by speed band both rigs show one passage the reduced run steps over in every run: full dynamics' load
+climbs from 18.2 N at 6000 rpm to 20.8 N at 5400 rpm and falls to 15.4-16.5 N by 5200 rpm (three times the slowed
+pendulum, about 5 s of the coast-down), where the first stretch carries the 17.5-18.1 N of the windows just after the
+drop. That passage is about 3 % of either rig's damage per drop; on one plane the windows between 5000 and 4000
+rpm load the journal more than full dynamics does and make it up, on two planes they do not. Ensembles of
+five runs (phases 0 to 4e-9 rad) on the blower and its 7208 DB pair scatter by 0.1-0.2 % only: damage per drop
++0.4 / -2.2 % (blower, standard error 0.07 %: the passage at twice the pendulum above) and -1.4 / -1.8 % (DB
+pair), standstill -0.16 % and -0.10 %. The DB pair's gap is no single passage: its loads lie 0.5-2 % low
+across the whole run, the small rattle above.
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
 (:func:`spent_tail`): the spin energy left could warm the smallest part by less than
