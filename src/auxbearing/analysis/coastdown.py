@@ -62,9 +62,10 @@ settling in that band still missed it (-2.04 %); full dynamics through 4900-3800
 near 5600, 4000 and 2000 rpm (20.5, 19.0 and 18.8 N against 14.6 N at rest) and the last swing dies out
 slowly below; the reduced run follows the middle one only. Its journal is chaotic besides: moving the
 unbalance phase by 1e-9 to 4e-9 rad moves full dynamics' standstill time by up to 4 % and its damage by up to
-8 %. Over fifteen such runs each (unbalance phases 0 to 1.4e-8 rad), the reduced run's means lie -1.0 % (one
-plane) and -0.4 % (two planes) from full dynamics' in standstill time and -0.4 % and -2.8 / -3.1 % in damage per
-drop, with standard errors of 0.7-1.1 % on the differences; the peak temperatures agree within 0.02 K. Speed
+8 %. Over fifteen such runs each (unbalance phases 0 to 1.4e-8 rad; ``python -m
+tests.consistency.coastdown_ensemble paper_rig --phases 15`` regenerates them), the reduced run's means lie -1.0 %
+(one plane) and -0.4 % (two planes) from full dynamics' in standstill time and -0.4 % and -2.8 / -3.1 % in damage
+per drop, with standard errors of 0.7-1.1 % on the differences; the peak temperatures agree within 0.02 K. Speed
 band by speed band both rigs show one passage the reduced run steps over in every run: full dynamics' load
 climbs from 18.2 N at 6000 rpm to 20.8 N at 5400 rpm and falls to 15.4-16.5 N by 5200 rpm (three times the slowed
 pendulum, about 5 s of the coast-down), where the first stretch carries the 17.5-18.1 N of the windows just after the
