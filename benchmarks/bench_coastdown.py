@@ -14,6 +14,13 @@ In one process, after a short run that compiles or loads the kernels:
    first seconds are at the drop speed, where the motion may cost less than at lower speeds).
 
     python benchmarks/bench_coastdown.py [--repeats 3] [--full-duration 2.0] [--machine blower]
+
+``--every`` instead runs each shipped example and each of its ``[[candidate]]`` bearings once, auto to standstill
+or to the limit that ends it, and prints a line per case: its end, simulated time, wall and CPU time,
+simulated seconds per wall second (the verification issue's target: at least 20 in every whirl state), the
+share of the simulated time spent in full-dynamics windows and what those windows cost per simulated second.
+
+    python benchmarks/bench_coastdown.py --every
 """
 
 from __future__ import annotations
@@ -28,7 +35,10 @@ from itertools import pairwise
 import numpy as np
 
 from auxbearing.analysis.coastdown import run_coastdown
-from auxbearing.machine.files import read_machine
+from auxbearing.analysis.drop import whirl_window
+from auxbearing.machine.files import machine_names, machine_table, read_machine
+from auxbearing.machine.judging import candidate_tables
+from auxbearing.machine.model import machine_from_mapping
 
 #: Speed bands of the split, as fractions of the drop speed.
 BANDS = np.array([0.0, 0.25, 0.5, 0.75, 1.0 + 1e-9])
@@ -48,7 +58,7 @@ class Split:
 
     def __init__(self, machine, until_stop: bool, duration: float | None) -> None:
         self.t_end = machine.coastdown.max_time if until_stop else duration
-        self.window = machine.coastdown.check_window
+        self.window = max(machine.coastdown.check_window, whirl_window(machine))  # as the coast-down's windows
         self.rpm0 = abs(machine.rotor.speed) * 30.0 / math.pi
         self.calls: list[tuple[float, float, float, float]] = []  # wall clock, CPU clock, simulated time, rpm
 
@@ -88,13 +98,51 @@ def timed(machine, until_stop: bool, duration: float | None, mode: str):
     return stop[0] - start[0], stop[1] - start[1], run.summary, split.report(start, stop)
 
 
+#: Simulated seconds per wall second every coast-down should reach (the verification issue's target).
+TARGET_RATE = 20.0
+
+
+def every_case():
+    """(label, machine) of each shipped example, then each of its [[candidate]] bearings in its place."""
+    for name in machine_names():
+        data, _, base = machine_table(name)
+        yield name, read_machine(name)
+        for label, tables in candidate_tables(data, data.get("candidate", [])):
+            yield f"{name} with {label}", machine_from_mapping(tables, f"{name} with {label}", base)
+
+
+def every() -> None:
+    """One auto run to its end per example and candidate: the rate against :data:`TARGET_RATE`, windows' share."""
+    print(f"{'case':44s} {'end':>21s} {'simulated':>10s} {'wall':>7s} {'CPU':>7s} {'sim/wall':>8s} "
+          f"{'windows':>8s} {'window cost':>12s}")
+    for label, machine in every_case():
+        wall, cpu, s, split = timed(machine, True, None, "auto")
+        sim = s["simulated_s"]
+        if s["drop_verdict"] != "ok":  # nothing after a drop that left the model's range
+            print(f"{label[:44]:44s} no coast-down: its drop ended {s['drop_verdict'].replace('_', ' ')}")
+            continue
+        end = "standstill" if s["reached_standstill"] else s["verdict"].replace("_", " ")
+        full = s["full_dynamics_s"]
+        windows = split["windows"] + np.array([*split["drop"], 0.0])  # the drop and first window are windows too
+        cost = f"{windows[0] / full:.2f} s/s" if full > 0.0 else "-"
+        rate = sim / wall if wall > 0.0 else math.inf
+        print(f"{label[:44]:44s} {end[:21]:>21s} {sim:8.2f} s {wall:5.2f} s {cpu:5.2f} s {rate:8.1f} "
+              f"{100 * full / max(sim, 1e-300):7.1f}% {cost:>12s}" + ("" if rate >= TARGET_RATE else "  below target"))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--machine", default="blower")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--full-duration", type=float, default=2.0, help="simulated seconds of the full path [s]")
+    parser.add_argument("--every", action="store_true", help="each shipped example and candidate once (docstring)")
     args = parser.parse_args()
     print(load())
+    if args.every:
+        run_coastdown(read_machine("paper_rig"), until_stop=False, duration=0.02)  # kernels compiled or loaded
+        every()
+        print(load())
+        return
     machine = read_machine(args.machine)
     start = time.perf_counter()
     run_coastdown(machine, until_stop=False, duration=0.02)
