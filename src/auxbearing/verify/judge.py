@@ -28,15 +28,7 @@ def _drop_planes(cases: Cases):
 def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     """Every criterion of the issue for one design, in the order the report shows them."""
     out = []
-    # s0 of every ball contact in every drop
-    s0s = [(p["s0"], case, p["name"]) for case, run, p in _drop_planes(cases) if run.summary["verdict"] == "ok"]
-    worst = min((s for s in s0s if s[0] is not None), default=None)
-    if worst is None:
-        found, where = None, "no drop ended inside the model's range"
-    else:
-        found, where = worst[0], f"{worst[1]}, {worst[2]}"
-    out.append(lower_bound("static safety factor s0 of every ball contact", found, criteria["min_s0"], "-",
-                           origin("min_s0", criteria), f"smallest in the drops: {where}"))
+    out.append(_static_safety(cases, criteria))
     # no run leaving the model's range
     verdicts = {case: run.summary["verdict"] for case, run in cases.drops.items()}
     if cases.coastdown is not None:
@@ -127,6 +119,31 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     if cases.campaign is not None:
         out.append(_whirl_probability(cases.campaign, criteria))
     return out
+
+
+def _static_safety(cases: Cases, criteria: dict) -> Criterion:
+    """s0 of every ball contact in every drop (ISO 76), a drop cut short included up to where it stopped.
+
+    A drop that left the model's range or reached a budget stops there: its stresses so far are inside the
+    model, what would follow is not known. Its smallest s0 so far can fail the criterion but not pass it, so
+    the criterion is then not checked unless a value already fails (the heavy rotor's drop at the maximum speed
+    reaches s0 1.16 before a contact ellipse runs over its groove shoulder, where the drops that ended give 16).
+    """
+    name = "static safety factor s0 of every ball contact"
+    s0s = [(p["s0"], case, p["name"], run.summary["verdict"]) for case, run, p in _drop_planes(cases)
+           if p["s0"] is not None]
+    if not s0s:
+        return lower_bound(name, None, criteria["min_s0"], "-", origin("min_s0", criteria),
+                           "no drop reached a ball contact inside the model's range")
+    worst = min(s0s)
+    cut = [case for case, run in cases.drops.items() if run.summary["verdict"] != "ok"]
+    where = f"{worst[1]}, {worst[2]}" + ("" if worst[3] == "ok" else " (up to where that drop stopped)")
+    judged = lower_bound(name, worst[0], criteria["min_s0"], "-", origin("min_s0", criteria),
+                         f"smallest in the drops: {where}")
+    if not cut:
+        return judged
+    return _unsettled(judged, "; ".join(cut) + " stopped early (" + "; ".join(
+        cases.drops[c].summary["verdict"].replace("_", " ") for c in cut) + "): its stresses after that are unknown")
 
 
 #: Verdicts of a run that reached a budget of work: its outcome is not known.
