@@ -58,7 +58,13 @@ def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
         table["inner_groove_ratio"] = float(x[1])
         table["outer_groove_ratio"] = float(x[1] + offset)
         plane["bearing"] = table
-        plane["radial_clearance"] = f"{float(machine.planes[k].radial_clearance * x[2])!r} m"
+        clearance = machine.planes[k].radial_clearance * x[2]
+        plane["radial_clearance"] = f"{float(clearance)!r} m"
+        if "journal_radius" in plane:
+            # the bearing's bore stays: a clearance is made by the journal's diameter (its sleeve), so a journal
+            # given in the file changes with it (kept, a larger clearance would push the race past the bore)
+            race_bore = machine.planes[k].journal_radius + machine.planes[k].radial_clearance
+            plane["journal_radius"] = f"{float(race_bore - clearance)!r} m"
     return tables
 
 
