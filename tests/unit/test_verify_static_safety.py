@@ -1,8 +1,9 @@
-"""The s0 criterion counts a drop cut short up to where it stopped: it can fail there, never pass."""
+"""Criteria judged over the drops count a drop cut short up to where it stopped: it can fail them, never pass them."""
 
 from types import SimpleNamespace
 
-from auxbearing.verify.judge import _static_safety
+from auxbearing.verify.criteria import upper_bound
+from auxbearing.verify.judge import _static_safety, drops_cut_short
 
 CRITERIA = {"min_s0": 1.0, "given": []}
 
@@ -14,29 +15,42 @@ def _cases(**drops):
                                   for case, (verdict, s0) in drops.items()})
 
 
+def _judged(cases):
+    return drops_cut_short(cases, [_static_safety(cases, CRITERIA)])[0]
+
+
 def test_every_drop_ended_the_smallest_s0_is_judged():
-    c = _static_safety(_cases(high=("ok", 16.0), low=("ok", 9.0)), CRITERIA)
+    c = _judged(_cases(high=("ok", 16.0), low=("ok", 9.0)))
     assert c.passed is True and c.found == 9.0 and "low, QJ208" in c.evidence
 
 
 def test_a_drop_that_left_the_range_above_the_limit_leaves_the_criterion_not_checked():
     # the heavy rotor: s0 1.16 before a contact ellipse ran over the groove shoulder, 16 in the drop that ended
-    c = _static_safety(_cases(top=("contact_ellipse_over_shoulder", 1.16), low=("ok", 16.0)), CRITERIA)
+    c = _judged(_cases(top=("contact_ellipse_over_shoulder", 1.16), low=("ok", 16.0)))
     assert c.passed is None and c.kind == "not checked"
     assert c.found == 1.16
-    assert "up to where that drop stopped" in c.evidence and "top stopped early" in c.evidence
+    assert "up to where that drop stopped" in c.evidence
+    assert "top stopped early (contact ellipse over shoulder)" in c.evidence
 
 
 def test_a_drop_that_left_the_range_below_the_limit_fails():
-    c = _static_safety(_cases(top=("contact_ellipse_over_shoulder", 0.8), low=("ok", 16.0)), CRITERIA)
+    c = _judged(_cases(top=("contact_ellipse_over_shoulder", 0.8), low=("ok", 16.0)))
     assert c.passed is False and c.found == 0.8
 
 
 def test_a_cut_drop_without_ball_contact_still_leaves_it_unchecked():
-    c = _static_safety(_cases(top=("step_budget", None), low=("ok", 16.0)), CRITERIA)
+    c = _judged(_cases(top=("step_budget", None), low=("ok", 16.0)))
     assert c.passed is None and c.found == 16.0
 
 
 def test_no_ball_contact_anywhere_fails_with_no_value():
-    c = _static_safety(_cases(top=("contact_ellipse_over_shoulder", None)), CRITERIA)
+    c = _judged(_cases(top=("contact_ellipse_over_shoulder", None)))
     assert c.passed is False and c.found is None
+
+
+def test_the_seal_excursion_of_a_cut_drop_is_not_a_pass():
+    seal = upper_bound("journal excursion against the seal clearance", 0.2, 0.35, "mm", "user input", "drops")
+    other = upper_bound("some other limit", 0.2, 0.35, "mm", "user input", "drops")
+    kept = drops_cut_short(_cases(top=("step_budget", 2.0)), [seal, other])
+    assert kept[0].passed is None and kept[1].passed is True
+    assert drops_cut_short(_cases(top=("ok", 2.0)), [seal])[0].passed is True

@@ -116,38 +116,50 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     out += _scenario_criteria(cases, criteria)
     if cases.partial_coastdown:
         out = [_unsettled(c, cases.partial_coastdown) if c.name in PARTIAL_COASTDOWN_CRITERIA else c for c in out]
+    out = drops_cut_short(cases, out)
     if cases.campaign is not None:
         out.append(_whirl_probability(cases.campaign, criteria))
     return out
+
+
+def drops_cut_short(cases: Cases, criteria: list[Criterion]) -> list[Criterion]:
+    """``criteria`` with those of :data:`PARTIAL_DROP_CRITERIA` that pass not checked when a drop was cut short."""
+    cut = {case: run.summary["verdict"] for case, run in cases.drops.items() if run.summary["verdict"] != "ok"}
+    if not cut:
+        return criteria
+    why = "; ".join(f"{c} stopped early ({v.replace('_', ' ')})" for c, v in cut.items())
+    return [_unsettled(c, why) if c.name in PARTIAL_DROP_CRITERIA else c for c in criteria]
 
 
 def _static_safety(cases: Cases, criteria: dict) -> Criterion:
     """s0 of every ball contact in every drop (ISO 76), a drop cut short included up to where it stopped.
 
     A drop that left the model's range or reached a budget stops there: its stresses so far are inside the
-    model, what would follow is not known. Its smallest s0 so far can fail the criterion but not pass it, so
-    the criterion is then not checked unless a value already fails (the heavy rotor's drop at the maximum speed
-    reaches s0 1.16 before a contact ellipse runs over its groove shoulder, where the drops that ended give 16).
+    model and count; the criterion is then not checked unless a value already fails (:data:`PARTIAL_DROP_CRITERIA`;
+    the heavy rotor's drop at the maximum speed reaches s0 1.16 before a contact ellipse runs over its groove
+    shoulder, where its drop at low speed, which ends, gives 16).
     """
-    name = "static safety factor s0 of every ball contact"
     s0s = [(p["s0"], case, p["name"], run.summary["verdict"]) for case, run, p in _drop_planes(cases)
            if p["s0"] is not None]
     if not s0s:
-        return lower_bound(name, None, criteria["min_s0"], "-", origin("min_s0", criteria),
-                           "no drop reached a ball contact inside the model's range")
-    worst = min(s0s)
-    cut = [case for case, run in cases.drops.items() if run.summary["verdict"] != "ok"]
-    where = f"{worst[1]}, {worst[2]}" + ("" if worst[3] == "ok" else " (up to where that drop stopped)")
-    judged = lower_bound(name, worst[0], criteria["min_s0"], "-", origin("min_s0", criteria),
-                         f"smallest in the drops: {where}")
-    if not cut:
-        return judged
-    return _unsettled(judged, "; ".join(cut) + " stopped early (" + "; ".join(
-        cases.drops[c].summary["verdict"].replace("_", " ") for c in cut) + "): its stresses after that are unknown")
+        found, where = None, "no drop reached a ball contact inside the model's range"
+    else:
+        worst = min(s0s)
+        found = worst[0]
+        where = f"smallest in the drops: {worst[1]}, {worst[2]}" + (
+            "" if worst[3] == "ok" else " (up to where that drop stopped)")
+    return lower_bound("static safety factor s0 of every ball contact", found, criteria["min_s0"], "-",
+                       origin("min_s0", criteria), where)
 
 
 #: Verdicts of a run that reached a budget of work: its outcome is not known.
 BUDGETS = ("step_budget", "wall_time_budget")
+
+#: Criteria judged over the drops that a drop cut short (out of the model's range or at a budget) can fail but not
+#: pass: what it would have shown after its stop is unknown.
+PARTIAL_DROP_CRITERIA = ("static safety factor s0 of every ball contact", "no sustained backward whirl or dry whip",
+                         "journal excursion against the seal clearance",
+                         "peak magnetic-bearing current against its amplifier's limit")
 
 #: Criteria a coast-down cut short (``--quick``) can fail but not pass: temperatures and the closing clearance
 #: go on changing, and the over-rolling of the rest of the run adds damage.
