@@ -63,7 +63,7 @@ class Cases:
     notes: list[str] = field(default_factory=list)
     spreads: list[dict] = field(default_factory=list)  #: the campaign's uncontrolled conditions (campaign_spreads)
     tables: tuple[str, ...] = ()  #: the tables the machine file gives (to say where a value came from)
-    #: why the coast-down stopped short of standstill without a finding (--quick, a budget); empty: it did not
+    #: why the coast-down stopped short of standstill (--quick, a budget, a limit that ended it); empty: it did not
     partial_coastdown: str = ""
     quick: bool = False  #: the quick look's shorter cases
 
@@ -185,6 +185,13 @@ def collect_cases(cases: Cases, futures: dict) -> Cases:
             cases.partial_coastdown = "only the first part of the coast-down ran (--quick): run without --quick"
     elif coastdown.summary["verdict"] in ("step_budget", "wall_time_budget"):
         cases.partial_coastdown = f"the coast-down reached a budget ({coastdown.summary['reason']})"
+    elif coastdown.summary["coastdown_time_s"] is None:
+        # stopped on a limit (a thermal run-away, a clearance closed) or at coastdown.max_time: the peaks and the
+        # damage of the rest of the coast-down are unknown, so what it shows so far can fail a criterion, not pass it
+        verdict = coastdown.summary["verdict"]
+        cases.partial_coastdown = (f"the coast-down stopped at its {verdict.replace('_', ' ')} "
+                                   f"({coastdown.summary['reason']})" if verdict != "ok" else
+                                   "the coast-down reached coastdown.max_time before standstill")
     if coastdown.summary.get("tail"):
         cases.notes.append(tail_note(coastdown.summary["tail"]))
     rattle = rattle_note(coastdown.summary)

@@ -161,8 +161,9 @@ PARTIAL_DROP_CRITERIA = ("static safety factor s0 of every ball contact", "no su
                          "journal excursion against the seal clearance",
                          "peak magnetic-bearing current against its amplifier's limit")
 
-#: Criteria a coast-down cut short (``--quick``) can fail but not pass: temperatures and the closing clearance
-#: go on changing, and the over-rolling of the rest of the run adds damage.
+#: Criteria a coast-down cut short (``--quick``, a budget, or a limit such as a thermal run-away that ends it before
+#: standstill) can fail but not pass: temperatures and the closing clearance go on changing, and the over-rolling of
+#: the rest of the run adds damage.
 PARTIAL_COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing internal clearance",
                               "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap")
 
