@@ -160,7 +160,6 @@ from auxbearing.machine.model import Machine
 #: +2.1 % (1.5 um) and +2.4 / +2.8 % (2 um), past the 2 % the comparison holds; at 4 um the 6208's drive end
 #: falls to -3.4 % to standstill. So the step stays at 1 um.
 CLEARANCE_STEP = 1e-6
-CLEARANCE_STEP = 1.5e-6
 #: Longest reduced stretch between two full-dynamics checks [s].
 MAX_STRETCH = 60.0
 #: Conductivity of a steel shaft [W/(m K)] for the default journal-to-rotor path (the catalogue 'steel').
