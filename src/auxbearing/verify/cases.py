@@ -28,6 +28,7 @@ import xarray as xr
 from auxbearing.analysis.coastdown import CoastdownRun, rattle_note, run_coastdown, tail_note
 from auxbearing.analysis.drop import MachineRun, run_machine
 from auxbearing.common.errors import InputError
+from auxbearing.machine.combinations import SEAT_TOLERANCE
 from auxbearing.machine.judging import (
     FRICTION_SOURCE,
     VERIFY_TABLE,
@@ -306,6 +307,15 @@ def campaign_tables(data: dict, machine: Machine, settings: dict, samples: int, 
         tables.pop(key, None)
     if drop:
         tables.setdefault("drop", {}).update(drop)
+    for plane, table in zip(machine.planes, tables.get("touchdown", []), strict=False):
+        # the clearance tolerance is the journal's and the bore's: a journal radius the file gives with the
+        # journal seated in the bore (radius + clearance = bore / 2) is derived per drop from the sampled
+        # clearance, as the file would give it; kept fixed, every sample above the file's clearance put the race
+        # past the bore (56 of the heavy rotor's 128 drops refused as invalid input)
+        bore = plane.bearing.bore
+        if "journal_radius" in table and bore is not None and abs(
+                plane.journal_radius + plane.radial_clearance - 0.5 * bore) <= SEAT_TOLERANCE:
+            del table["journal_radius"]
     si_units = {"rotor.unbalance_phase": "rad", "rotor.unbalance": "m", "rotor.start_x": "m", "rotor.start_y": "m"}
     inputs = []
     for spread in campaign_spreads(machine, settings):
