@@ -37,6 +37,9 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     spent = {c: v for c, v in verdicts.items() if v in BUDGETS}
     reasons = {c: (cases.drops[c].summary if c in cases.drops else cases.coastdown.summary)["reason"]
                for c in (*bad, *spent)}
+    exits = _campaign_exits(cases.campaign)
+    if exits:  # a drop condition of the campaign is a run as well
+        bad["campaign"], reasons["campaign"] = exits
     range_name, range_origin = ("no run leaves the model's range or a limit",
                                 "a run outside the model's range is a failed design")
     if bad or not spent:
@@ -120,6 +123,21 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     if cases.campaign is not None:
         out.append(_whirl_probability(cases.campaign, criteria))
     return out
+
+
+def _campaign_exits(campaign: dict | None) -> tuple[str, str] | None:
+    """(finding, reason) when drops of the campaign left the model's range, else None."""
+    if not campaign:
+        return None
+    from auxbearing.campaign.evaluate import OUT_OF_RANGE
+
+    counts = {v: n for v, n in campaign.get("verdicts", {}).items() if v in OUT_OF_RANGE and n}
+    if not counts:
+        return None
+    left, ran = sum(counts.values()), campaign["completed"]
+    return (f"{left} of {ran} drops out of range",
+            f"{left} of the campaign's {ran} drops left the model's range ("
+            + ", ".join(f"{v.replace('_', ' ')}: {n}" for v, n in counts.items()) + ")")
 
 
 def drops_cut_short(cases: Cases, criteria: list[Criterion]) -> list[Criterion]:
@@ -236,7 +254,16 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
     if campaign.get("stopped_decided"):
         evidence += (f" (stopped after its first {campaign['samples']} of {campaign['planned']} drops: even with "
                      "every drop left ending without whirl the estimate stays above the limit)")
+    from auxbearing.campaign.evaluate import FAILED
+
+    lost = {v: n for v, n in campaign.get("verdicts", {}).items() if v in FAILED and n}
+    if lost:  # a budget reached, a sample refused, an error: no result, so no whirl either way
+        evidence += (f"; {sum(lost.values())} drops gave no result ("
+                     + ", ".join(f"{v.replace('_', ' ')}: {n}" for v, n in lost.items()) + ")")
     c = upper_bound(WHIRL_PROBABILITY, p["high"], limit, "-", source, evidence)
+    if c.passed is True and lost:
+        return c._replace(passed=None, kind="not checked",
+                          evidence=f"{evidence}: whether they whirled is unknown, so this is not a pass")
     if c.passed is False and p["value"] <= limit:
         need = _drops_to_show(p["value"], limit)
         more = "" if need is None else (
