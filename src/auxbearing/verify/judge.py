@@ -6,6 +6,7 @@ import math
 
 from auxbearing.analysis.scenario_outcome import SATURATED
 from auxbearing.analysis.whirl import BACKWARD
+from auxbearing.campaign.evaluate import FAILED, OUT_OF_RANGE
 from auxbearing.machine.scenario import SCENARIO_CASE
 from auxbearing.verify.cases import Cases
 from auxbearing.verify.criteria import (
@@ -129,8 +130,6 @@ def _campaign_exits(campaign: dict | None) -> tuple[str, str] | None:
     """(finding, reason) when drops of the campaign left the model's range, else None."""
     if not campaign:
         return None
-    from auxbearing.campaign.evaluate import OUT_OF_RANGE
-
     counts = {v: n for v, n in campaign.get("verdicts", {}).items() if v in OUT_OF_RANGE and n}
     if not counts:
         return None
@@ -254,8 +253,6 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
     if campaign.get("stopped_decided"):
         evidence += (f" (stopped after its first {campaign['samples']} of {campaign['planned']} drops: even with "
                      "every drop left ending without whirl the estimate stays above the limit)")
-    from auxbearing.campaign.evaluate import FAILED
-
     lost = {v: n for v, n in campaign.get("verdicts", {}).items() if v in FAILED and n}
     if lost:  # a budget reached, a sample refused, an error: no result, so no whirl either way
         evidence += (f"; {sum(lost.values())} drops gave no result ("
