@@ -116,6 +116,7 @@ from auxbearing.analysis.coastdown_phases import (
     REDUCIBLE,
     STEADY_SPAN,
     STEADY_SPANS,
+    BackwardWhirl,
     StretchEnd,
     calm,
     integrate_stretch,
@@ -532,6 +533,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     full_time = session.t
     reduced_time = 0.0
     counts = {"windows": 0, "stretches": 0, "states": {}}
+    backward = BackwardWhirl(len(machine.planes))  # judged as in a drop: a whirl in the coast-down counts too
     checked: list = []  # each full window's planes since the last stretch
     motion: list = []  # the last full windows in one family of reducible states, for motion_steady
     steady = False  # the motion has been found steady since it last changed state
@@ -616,6 +618,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         temps = [net.step(limits.temps[k], _heat_per_node(net, *powers[k]), length) for k, net in enumerate(networks)]
         omega_mean = 0.5 * (omega_start + float(session.y[cm.OMEGA]))
         windows = _window_planes(machine, watch, powers)
+        backward.window(windows, session.t, length)
         for k, w in enumerate(windows):
             revs = abs(w.race_speed) * length / (2.0 * math.pi)
             overrolling[k].append((revs, w.load))
@@ -654,6 +657,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             growth = stretch_growth(growth, held, carried, machine)
         held = carried
         stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth)
+        backward.stretch(carried, session.t, stretch.duration)
         session.set_speeds(stretch.rotor_speed, stretch.race_speeds)
         for k in range(len(networks)):
             for j in range(3):
@@ -682,7 +686,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     lives = [plane_life(machine, k, drop.dataset, drop.summary["planes"][k], overrolling[k]) if finished else None
              for k in range(len(machine.planes))]
     summary = _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at, full_time, reduced_time,
-                       counts, time.perf_counter() - wall_start, until_stop)
+                       counts, time.perf_counter() - wall_start, until_stop, backward)
     summary["tail"] = tail
     history_ds.attrs["summary"] = _json(summary)
     return CoastdownRun(drop, history_ds, summary, lives)
@@ -847,7 +851,7 @@ _LIFE_KEYS = ("damage_per_drop", "drop_damage", "coastdown_damage", "drops_to_fa
 
 
 def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at, full_time, reduced_time, counts,
-             wall, until_stop) -> dict:
+             wall, until_stop, backward: BackwardWhirl) -> dict:
     planes = []
     for k, plane in enumerate(machine.planes):
         life = lives[k]
@@ -872,6 +876,8 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
             "peak_contact_force_N": drop.summary["planes"][k]["peak_contact_force_N"],
             "peak_ball_stress_MPa": drop.summary["planes"][k]["peak_ball_stress_MPa"],
             "whirl_in_drop": drop.summary["planes"][k]["whirl"],
+            # sustained backward whirl after the drop (coastdown_phases.BackwardWhirl): from when, for how long
+            "backward_whirl_from_s": backward.onset[k], "backward_whirl_s": backward.seconds[k],
         })
     return {
         "machine": machine.name, "verdict": verdict, "reason": reason,

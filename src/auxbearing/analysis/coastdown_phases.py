@@ -32,7 +32,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from auxbearing.analysis.whirl import classify_window
+from auxbearing.analysis.whirl import BACKWARD, SUSTAINED, classify_window
 from auxbearing.core import drive, spin
 from auxbearing.core import integrate as ig
 from auxbearing.core.bearing_friction import palmgren_viscous_torque
@@ -76,6 +76,8 @@ class PlaneWindow(NamedTuple):
     load: float = 0.0
     #: mean square speed of the journal centre in its bore [m^2/s^2]
     orbit_speed_sq: float = 0.0
+    #: the class of each of its closed whirl windows, in order (:func:`~auxbearing.analysis.whirl.classify_window`)
+    whirl_classes: tuple = ()
 
     @property
     def torque(self) -> float:
@@ -100,7 +102,8 @@ def plane_window(machine: Machine, k: int, records: np.ndarray, onsets: int, pow
     contact = float(mean[_F["contact_fraction"]])
     journal = r * abs(omega)
     slip = ((mean[_F["mean_radius"]] * whirl + r * omega - (r + s) * race) / journal) if journal > 0.0 else 0.0
-    classes = {classify_window(rec, s, r, 0.0) for rec in records}
+    ordered = tuple(classify_window(rec, s, r, 0.0) for rec in records)
+    classes = set(ordered)
     if records.shape[0] == 0:
         state = "unsettled"  # no closed whirl window: nothing to judge the window on
     elif contact <= 0.01 and onsets == 0:
@@ -116,7 +119,43 @@ def plane_window(machine: Machine, k: int, records: np.ndarray, onsets: int, pow
     return PlaneWindow(state, onsets, contact, float(mean[_F["mean_normal_force"]]),
                        float(mean[_F["mean_axial_force"]]), float(omega), float(race),
                        float(whirl), float(slip), tuple(float(p) for p in powers),
-                       orbit_speed_sq=float(mean[_F["orbit_speed_sq"]]))
+                       orbit_speed_sq=float(mean[_F["orbit_speed_sq"]]), whirl_classes=ordered)
+
+
+class BackwardWhirl:
+    """Per plane, when the coast-down's journal first whirls backward for good and for how long (SI).
+
+    As in a drop (:func:`auxbearing.analysis.whirl.whirl_summary`), a backward whirl is sustained once
+    :data:`~auxbearing.analysis.whirl.SUSTAINED` whirl windows in a row are backward; the count runs on across
+    the check windows. A stretch that carries a plane in steady backward rolling whirl (state ``whirling``)
+    carries the whirl with it. ``onset`` [s] is None while a plane never whirled backward for good;
+    ``seconds`` is the time it spent so.
+    """
+
+    def __init__(self, planes: int) -> None:
+        self.run = [0] * planes
+        self.onset: list[float | None] = [None] * planes
+        self.seconds = [0.0] * planes
+
+    def window(self, windows: list[PlaneWindow], t_end: float, length: float) -> None:
+        """A full-dynamics window of ``length`` that ended at ``t_end``, its planes as :func:`plane_window` gave."""
+        for k, w in enumerate(windows):
+            share = length / max(len(w.whirl_classes), 1)
+            for i, c in enumerate(w.whirl_classes):
+                self.run[k] = self.run[k] + 1 if c in BACKWARD else 0
+                if self.run[k] == SUSTAINED:  # the run counts from its start (earlier windows taken as this long)
+                    self.seconds[k] += SUSTAINED * share
+                    if self.onset[k] is None:
+                        self.onset[k] = t_end - length + (i + 1 - SUSTAINED) * share
+                elif self.run[k] > SUSTAINED:
+                    self.seconds[k] += share
+
+    def stretch(self, carried: list[PlaneWindow], t_start: float, duration: float) -> None:
+        """A reduced stretch from ``t_start`` that carried the planes ``carried`` for ``duration``."""
+        for k, w in enumerate(carried):
+            if w.state == "whirling":
+                self.onset[k] = t_start if self.onset[k] is None else self.onset[k]
+                self.seconds[k] += duration
 
 
 def settled(windows: list[list[PlaneWindow]]) -> list[PlaneWindow] | None:

@@ -51,16 +51,7 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     else:  # a budget reached is no finding about the machine: not checked, never a pass or a fail
         out.append(not_checked(range_name, "budget reached: " + "; ".join(f"{c}: {reasons[c]}" for c in spent),
                                range_origin))
-    # no sustained backward whirl or dry whip
-    whirls = [(case, p["name"], p["backward_whirl_onset_ms"], p["whirl"]) for case, _, p in _drop_planes(cases)
-              if p["backward_whirl_onset_ms"] is not None or p["whirl"] in BACKWARD]
-    out.append(yes_no("no sustained backward whirl or dry whip", "none in any drop",
-                      "none" if not whirls else "; ".join(
-                          f"{c}, {n}: backward whirl sustained from {o:.0f} ms, {w} at the end" if o is not None
-                          else f"{c}, {n}: {w} at the end"
-                          for c, n, o, w in whirls), not whirls,
-                      "Jiang & Ulbrich 2005 and Jiang 2007: backward whirl and dry whip destroy touchdown bearings",
-                      "whirl judged window by window (auxbearing.analysis.whirl)"))
+    out.append(_sustained_whirl(cases))
     coast = cases.coastdown.summary if cases.coastdown is not None else None
     if coast is not None:
         hottest = max((max(p["max_temperature_C"].values()), p["name"]) for p in coast["planes"])
@@ -126,6 +117,22 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     return out
 
 
+def _sustained_whirl(cases: Cases) -> Criterion:
+    """No sustained backward whirl or dry whip in any drop or in the coast-down after the drop at full speed."""
+    whirls = [(case, p["name"], p["backward_whirl_onset_ms"], p["whirl"]) for case, _, p in _drop_planes(cases)
+              if p["backward_whirl_onset_ms"] is not None or p["whirl"] in BACKWARD]
+    found = [f"{c}, {n}: backward whirl sustained from {o:.0f} ms, {w} at the end" if o is not None
+             else f"{c}, {n}: {w} at the end" for c, n, o, w in whirls]
+    if cases.coastdown is not None:  # its windows judge the journals' whirl as a drop does (coastdown_phases)
+        found += [f"coast-down, {p['name']}: backward whirl sustained from {p['backward_whirl_from_s']:.2f} s, "
+                  f"{p['backward_whirl_s']:.2f} s of it" for p in cases.coastdown.summary["planes"]
+                  if p.get("backward_whirl_from_s") is not None]
+    return yes_no("no sustained backward whirl or dry whip", "none in any drop or in the coast-down",
+                  "; ".join(found) or "none", not found,
+                  "Jiang & Ulbrich 2005 and Jiang 2007: backward whirl and dry whip destroy touchdown bearings",
+                  "whirl judged window by window (auxbearing.analysis.whirl)")
+
+
 def _campaign_exits(campaign: dict | None) -> tuple[str, str] | None:
     """(finding, reason) when drops of the campaign left the model's range, else None."""
     if not campaign:
@@ -179,10 +186,11 @@ PARTIAL_DROP_CRITERIA = ("static safety factor s0 of every ball contact", "no su
                          "peak magnetic-bearing current against its amplifier's limit")
 
 #: Criteria a coast-down cut short (``--quick``, a budget, or a limit such as a thermal run-away that ends it before
-#: standstill) can fail but not pass: temperatures and the closing clearance go on changing, and the over-rolling of
-#: the rest of the run adds damage.
+#: standstill) can fail but not pass: temperatures and the closing clearance go on changing, the over-rolling of
+#: the rest of the run adds damage, and a journal may still start to whirl backward.
 PARTIAL_COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing internal clearance",
-                              "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap")
+                              "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap",
+                              "no sustained backward whirl or dry whip")
 
 
 #: Name of the campaign's criterion: judged by the upper end of its 95 % interval, not by the estimate.
