@@ -8,11 +8,11 @@ from auxbearing.verify.judge import _static_safety, drops_cut_short
 CRITERIA = {"min_s0": 1.0, "given": []}
 
 
-def _cases(**drops):
+def _cases(campaign=None, **drops):
     """Drop case -> (verdict, s0 of its one plane)."""
     return SimpleNamespace(drops={case: SimpleNamespace(summary={"verdict": verdict,
                                                                  "planes": [{"name": "QJ208", "s0": s0}]})
-                                  for case, (verdict, s0) in drops.items()})
+                                  for case, (verdict, s0) in drops.items()}, campaign=campaign)
 
 
 def _judged(cases):
@@ -54,3 +54,13 @@ def test_the_seal_excursion_of_a_cut_drop_is_not_a_pass():
     kept = drops_cut_short(_cases(top=("step_budget", 2.0)), [seal, other])
     assert kept[0].passed is None and kept[1].passed is True
     assert drops_cut_short(_cases(top=("ok", 2.0)), [seal])[0].passed is True
+
+
+def test_a_campaign_drop_below_the_limit_fails_it():
+    campaign = {"ok": 120, "smallest_s0": 0.7, "p_s0_below_required": {"successes": 3}}
+    c = _judged(_cases(campaign=campaign, high=("ok", 16.0)))
+    assert c.passed is False and c.found == 0.7
+    assert "3 of the campaign's 120 drops that ended ok fall below 1" in c.evidence
+    # above the limit the campaign keeps its figures to its own table: the drops' smallest is judged
+    calm = {"ok": 120, "smallest_s0": 12.0, "p_s0_below_required": {"successes": 0}}
+    assert _judged(_cases(campaign=calm, high=("ok", 16.0))).found == 16.0

@@ -265,6 +265,7 @@ def campaign_statistics(ds, required_s0: float | None = None, seed: int = 0) -> 
                                                             "runs that ended ok or left the model's range"),
         "required_s0": required,
         "required_s0_source": _required_source(required, required_s0 is not None),
+        "smallest_s0": float(np.nanmin(s0[ok])) if ok.any() and np.isfinite(s0[ok]).any() else None,
         "quantiles": {},
         "planes": {},
     }

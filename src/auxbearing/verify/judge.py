@@ -161,7 +161,8 @@ def _static_safety(cases: Cases, criteria: dict) -> Criterion:
     A drop that left the model's range or reached a budget stops there: its stresses so far are inside the
     model and count; the criterion is then not checked unless a value already fails (:data:`PARTIAL_DROP_CRITERIA`;
     the heavy rotor's drop at the maximum speed reaches s0 1.16 before a contact ellipse runs over its groove
-    shoulder, where its drop at low speed, which ends, gives 16).
+    shoulder, where its drop at low speed, which ends, gives 16). A campaign drop below the limit fails it too
+    (its conditions are drops the machine may see); above it, the campaign's figures stay in its own table.
     """
     s0s = [(p["s0"], case, p["name"], run.summary["verdict"]) for case, run, p in _drop_planes(cases)
            if p["s0"] is not None]
@@ -172,6 +173,12 @@ def _static_safety(cases: Cases, criteria: dict) -> Criterion:
         found = worst[0]
         where = f"smallest in the drops: {worst[1]}, {worst[2]}" + (
             "" if worst[3] == "ok" else " (up to where that drop stopped)")
+    below = (cases.campaign or {}).get("p_s0_below_required", {}).get("successes", 0)
+    if below and (found is None or cases.campaign["smallest_s0"] < found):
+        # a drop condition of the campaign is a drop as well: one below the limit fails the criterion
+        found = cases.campaign["smallest_s0"]
+        where = (f"{below} of the campaign's {cases.campaign['ok']} drops that ended ok fall below "
+                 f"{criteria['min_s0']:g}, the smallest at {found:.3g}")
     return lower_bound("static safety factor s0 of every ball contact", found, criteria["min_s0"], "-",
                        origin("min_s0", criteria), where)
 
