@@ -125,7 +125,7 @@ def plane_window(machine: Machine, k: int, records: np.ndarray, onsets: int, pow
 class BackwardWhirl:
     """Per plane, when the coast-down's journal first whirls backward for good and for how long (SI).
 
-    As in a drop (:func:`auxbearing.analysis.whirl.whirl_summary`), a backward whirl is sustained once
+    As in a drop (:func:`auxbearing.analysis.whirl.timeline`), a backward whirl is sustained once
     :data:`~auxbearing.analysis.whirl.SUSTAINED` whirl windows in a row are backward; the count runs on across
     the check windows. A stretch that carries a plane in steady backward rolling whirl (state ``whirling``)
     carries the whirl with it. ``onset`` [s] is None while a plane never whirled backward for good;
