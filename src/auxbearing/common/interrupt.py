@@ -42,3 +42,30 @@ def watching():
     finally:
         signal.signal(signal.SIGINT, previous)
         _requested.clear()
+
+
+@contextmanager
+def deferred():
+    """Hold Ctrl-C back for the duration (main thread only), then honour it when the block has finished.
+
+    For a library that must not be interrupted halfway: a KeyboardInterrupt raised inside the NetCDF writer
+    while it closes its file leaves the file manager's lock taken, and the close in its own clean-up then waits
+    on that lock for ever (seen from the command line: a drop interrupted as it saved its results hung until
+    killed). Writing a result file takes well under a second, so the interrupt waits that long.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    held = threading.Event()
+
+    def hold(signum, frame) -> None:
+        held.set()
+        _requested.set()
+
+    previous = signal.signal(signal.SIGINT, hold)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    if held.is_set():
+        raise KeyboardInterrupt

@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from auxbearing import __version__
+from auxbearing.common import interrupt
 from auxbearing.common.errors import InputError
 
 if TYPE_CHECKING:  # xarray is imported by the functions that write it, so reading a TOML file needs none
@@ -187,7 +188,8 @@ def save_dataset(ds: xr.Dataset, path: str | Path, inputs: dict | None = None) -
     for name in out.variables:
         out[name].attrs = {k: _netcdf_attr(v) for k, v in out[name].attrs.items()}
     try:
-        out.to_netcdf(path)
+        with interrupt.deferred():  # a Ctrl-C inside the writer's close hangs it: honoured once the file is shut
+            out.to_netcdf(path)
     except RuntimeError as err:  # the NetCDF/HDF5 library reports a full disk as "NetCDF: HDF error"
         free = shutil.disk_usage(path.parent).free
         raise OSError(None, f"the NetCDF library could not write it ({err}); {free / 1e6:.0f} MB free on that "
