@@ -30,18 +30,29 @@ def check() -> None:
 
 
 @contextmanager
-def watching():
-    """Install :func:`handler` for SIGINT for the duration (main thread only; elsewhere a no-op)."""
+def _on_sigint(action):
+    """``action`` as the SIGINT handler for the duration; yields False (and installs nothing) off the main thread."""
     if threading.current_thread() is not threading.main_thread():
-        yield
+        yield False
         return
-    _requested.clear()
-    previous = signal.signal(signal.SIGINT, handler)
+    previous = signal.signal(signal.SIGINT, action)
     try:
-        yield
+        yield True
     finally:
         signal.signal(signal.SIGINT, previous)
-        _requested.clear()
+
+
+@contextmanager
+def watching():
+    """Install :func:`handler` for SIGINT for the duration (main thread only; elsewhere a no-op)."""
+    with _on_sigint(handler) as installed:
+        if installed:
+            _requested.clear()
+        try:
+            yield
+        finally:
+            if installed:
+                _requested.clear()
 
 
 @contextmanager
@@ -53,19 +64,13 @@ def deferred():
     on that lock for ever (seen from the command line: a drop interrupted as it saved its results hung until
     killed). Writing a result file takes well under a second, so the interrupt waits that long.
     """
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
     held = threading.Event()
 
     def hold(signum, frame) -> None:
         held.set()
         _requested.set()
 
-    previous = signal.signal(signal.SIGINT, hold)
-    try:
+    with _on_sigint(hold):
         yield
-    finally:
-        signal.signal(signal.SIGINT, previous)
     if held.is_set():
         raise KeyboardInterrupt
