@@ -119,6 +119,7 @@ from auxbearing.analysis.coastdown_phases import (
     BackwardWhirl,
     StretchEnd,
     calm,
+    confirmed,
     integrate_stretch,
     motion_steady,
     plane_window,
@@ -643,7 +644,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             continue
         checked.append(windows)
         del checked[:-MAX_WINDOWS]  # settled looks back over these at most
-        carried = settled(checked)
+        carried = settled(checked) or confirmed(machine, held, checked)
         if verdict != OK or mode == "full" or carried is None or not steady:
             continue
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
@@ -663,6 +664,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             for j in range(3):
                 session.y[session.layout.heat(k, j)] += stretch.heat[k][j]
             overrolling[k].append((stretch.race_revolutions[k], loads[k]))
+        if ending is not None:  # the next stretch came before the windows that measure the last one's end
+            ending.close(overrolling)
         ending = StretchEnd(carried, [len(o) - 1 for o in overrolling])
         session.y[session.layout.drag_loss] += stretch.drag_loss
         session.y[session.layout.work_in] += stretch.work

@@ -317,10 +317,16 @@ class StretchEnd:
         self.after.append(windows)
         if len(self.after) < MIN_WINDOWS:
             return False
+        self.close(overrolling)
+        return True
+
+    def close(self, overrolling: list[list[tuple[float, float]]]) -> None:
+        """Charge the stretch at the windows measured after it so far (a next stretch starts before all came)."""
+        if not self.after:
+            return
         for k, row in enumerate(self.rows):
             revs, before = overrolling[k][row]
             overrolling[k][row] = (revs, stretch_load(before, mean_equivalent_load([w[k].load for w in self.after])))
-        return True
 
 
 def _viscous(plane, speed: float) -> float:
@@ -388,16 +394,44 @@ def stretch_growth(growth: float, before: list[PlaneWindow], after: list[PlaneWi
     """
     if not same_families(before, after):
         return 1.0
-    change = 0.0
-    for plane, b, a in zip(machine.planes, before, after, strict=True):
-        if sum(a.powers) > 0.0:
-            moved = sum(abs(x - y) for x, y in zip(_held(plane, a, 0.0), _held(plane, b, 0.0), strict=True))
-            change = max(change, moved / abs(a.torque))
+    change = held_change(before, after, machine)
     if change > STATIONARY:
         return 1.0
     if change <= 0.5 * STATIONARY:
         return min(2.0 * growth, MAX_GROWTH)
     return growth
+
+
+def held_change(before: list[PlaneWindow], after: list[PlaneWindow], machine: Machine) -> float:
+    """How far the torques a stretch holds (:func:`_held`) moved from ``before`` to ``after``.
+
+    The largest change over the planes, as a fraction of the plane's loss torque after it.
+    """
+    change = 0.0
+    for plane, b, a in zip(machine.planes, before, after, strict=True):
+        if sum(a.powers) > 0.0:
+            moved = sum(abs(x - y) for x, y in zip(_held(plane, a, 0.0), _held(plane, b, 0.0), strict=True))
+            change = max(change, moved / abs(a.torque))
+    return change
+
+
+def confirmed(machine: Machine, held: list[PlaneWindow] | None, windows: list[list[PlaneWindow]]):
+    """The first window after a stretch as the next stretch's, where it finds what the stretch held.
+
+    :func:`settled` measures a state afresh after every stretch, over :data:`MIN_WINDOWS` windows. Where the
+    windows before the stretch (``held``) and the one after it are :func:`calm` (steady states, not samples of a
+    motion) and in the same states, and the torques the stretch held moved by no more than half
+    :data:`STATIONARY` of each plane's loss (the test :func:`stretch_growth` grows a stretch on), the reduced
+    model's assumption has just been confirmed and that one window carries the next stretch. None otherwise.
+    """
+    if held is None or len(windows) != 1:
+        return None
+    last = windows[-1]
+    if any(p.state not in REDUCIBLE for p in last) or [p.state for p in last] != [p.state for p in held]:
+        return None
+    if not calm(machine, [held, last]) or held_change(held, last, machine) > 0.5 * STATIONARY:
+        return None
+    return last
 
 
 def spin_model(machine: Machine, windows: list[PlaneWindow], omega: float, race_speeds: list,
