@@ -19,7 +19,9 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   swing, the step doubles, up to four times, while the windows after each stretch find the torques it held
   unchanged within 1 %: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`) or a clearance
   has moved by :data:`CLEARANCE_STEP`,
-  and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
+  and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there: over
+  :data:`~auxbearing.analysis.coastdown_phases.MIN_WINDOWS` windows, or one where every plane is calm and the
+  torques the stretch held are found again, :func:`auxbearing.analysis.coastdown_phases.confirmed`); the first
   ``coastdown.settle_time`` of it after a stretch is run and booked but not judged. The motion only evolves
   in the windows (a stretch resumes it as it was), so where it changes slowly with the clearances and the
   speed it lags full dynamics' by tens of stretches; settling gives it time to follow (measured on the blower
