@@ -19,9 +19,7 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   swing, the step doubles, up to four times, while the windows after each stretch find the torques it held
   unchanged within 1 %: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`) or a clearance
   has moved by :data:`CLEARANCE_STEP`,
-  and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there: over
-  :data:`~auxbearing.analysis.coastdown_phases.MIN_WINDOWS` windows, or one where every plane is calm and the
-  torques the stretch held are found again, :func:`auxbearing.analysis.coastdown_phases.confirmed`); the first
+  and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
   ``coastdown.settle_time`` of it after a stretch is run and booked but not judged. The motion only evolves
   in the windows (a stretch resumes it as it was), so where it changes slowly with the clearances and the
   speed it lags full dynamics' by tens of stretches; settling gives it time to follow (measured on the blower
@@ -121,7 +119,6 @@ from auxbearing.analysis.coastdown_phases import (
     BackwardWhirl,
     StretchEnd,
     calm,
-    confirmed,
     integrate_stretch,
     motion_steady,
     plane_window,
@@ -646,7 +643,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             continue
         checked.append(windows)
         del checked[:-MAX_WINDOWS]  # settled looks back over these at most
-        carried = settled(checked) or confirmed(machine, held, checked)
+        carried = settled(checked)
         if verdict != OK or mode == "full" or carried is None or not steady:
             continue
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
@@ -666,8 +663,6 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             for j in range(3):
                 session.y[session.layout.heat(k, j)] += stretch.heat[k][j]
             overrolling[k].append((stretch.race_revolutions[k], loads[k]))
-        if ending is not None:  # the next stretch came before the windows that measure the last one's end
-            ending.close(overrolling)
         ending = StretchEnd(carried, [len(o) - 1 for o in overrolling])
         session.y[session.layout.drag_loss] += stretch.drag_loss
         session.y[session.layout.work_in] += stretch.work
