@@ -31,7 +31,8 @@ CRITERIA: tuple[Param, ...] = (
     Param("criteria", "amb_air_gap", "length", None, "mm", "optional_positive",
           "Radial air gap of the magnetic bearings; without it the air-gap criterion is not checked", "user input"),
     Param("criteria", "air_gap_fraction", "dimensionless", 0.5, "", "unit_interval",
-          "Largest touchdown clearance (with thermal growth) as a fraction of the magnetic air gap",
+          "Largest touchdown clearance (at the top of its fit tolerance, with thermal growth) as a fraction of the "
+          "magnetic air gap",
           "ours: common practice of about half the air gap; not a clause we could read in ISO 14839-5"),
     Param("criteria", "seal_clearance", "length", None, "mm", "optional_positive",
           "Radial clearance of the tightest seal; the journal's largest excursion must stay inside it", "user input"),
@@ -81,9 +82,11 @@ VERIFY: tuple[Param, ...] = (
           "ISO 21940-11:2016, Table 1 (G 6.3: fans, blowers, pumps, electric motors); e_per = G / Omega"),
     Param("verify", "fit_grade", "dimensionless", 6.0, "", "positive",
           "ISO tolerance grade (IT) of the race bore and the journal; the campaign's radial clearance spreads by "
-          "(IT_bore + IT_journal) / 4 either side", "ISO 286-1:2010, Table 1 (IT6: ground bore and journal)"),
+          "(IT_bore + IT_journal) / 4 either side, and the air-gap criterion takes its top",
+          "ISO 286-1:2010, Table 1 (IT6: ground bore and journal)"),
     Param("verify", "clearance_tolerance", "length", None, "um", "optional_nonnegative",
-          "Half-width of the radial clearance's spread, instead of the one from verify.fit_grade", "user input"),
+          "Half-width of the radial clearance's spread (the campaign's, and the air-gap criterion's allowance), "
+          "instead of the one from verify.fit_grade", "user input"),
     Param("verify", "mount_stiffness_spread", "dimensionless", 0.2, "", "unit_interval",
           "Half-width of the mount stiffness's spread, as a fraction of its value",
           "ours: elastomer and spring mounts are held to about +-20 % of their rated stiffness"),

@@ -274,15 +274,7 @@ def campaign_spreads(machine: Machine, settings: dict) -> list[dict]:
         lo, hi = settings["friction_low"], settings["friction_high"]
         spreads.append({"key": f"touchdown.{k}.sliding_friction", "low": lo, "high": hi, "scale": 1.0, "unit": "",
                         "label": f"{plane.name}: journal/race sliding friction", "origin": FRICTION_SOURCE})
-        tol = settings["clearance_tolerance"]
-        if tol is None:
-            bore = 2.0 * (plane.journal_radius + plane.radial_clearance)
-            tol = 0.25 * (it_tolerance(bore, settings["fit_grade"]) +
-                          it_tolerance(2.0 * plane.journal_radius, settings["fit_grade"]))
-            origin = (f"ISO 286-1 IT{settings['fit_grade']:g} of the {bore * 1e3:.0f} mm bore and journal: "
-                      f"+-{tol * 1e6:.1f} um")
-        else:
-            origin = "your [verify] table"
+        tol, origin = clearance_tolerance(plane, settings)
         if tol > 0.0:
             s = plane.radial_clearance
             spreads.append({"key": f"touchdown.{k}.radial_clearance", "low": max(s - tol, 0.5 * s), "high": s + tol,
@@ -298,6 +290,35 @@ def campaign_spreads(machine: Machine, settings: dict) -> list[dict]:
                                     "label": f"{plane.name}: {name.replace('_', ' ')}",
                                     "origin": VERIFY_TABLE[spread_key].source})
     return spreads
+
+
+def clearance_tolerance(plane, settings: dict) -> tuple[float, str]:
+    """How far a plane's radial clearance as made may lie from the file's [m], and where that comes from.
+
+    ``verify.clearance_tolerance`` if given; else the journal's and the bore's ISO 286-1 tolerance of grade
+    ``verify.fit_grade``: each zone is IT wide, the radial clearance is half their diametral difference, so it
+    spans (IT_bore + IT_journal) / 2, taken as +- a quarter of the sum about the file's value.
+    """
+    tol = settings["clearance_tolerance"]
+    if tol is not None:
+        return float(tol), "your [verify] table"
+    bore = 2.0 * (plane.journal_radius + plane.radial_clearance)
+    grade = settings["fit_grade"]
+    tol = 0.25 * (it_tolerance(bore, grade) + it_tolerance(2.0 * plane.journal_radius, grade))
+    return tol, f"ISO 286-1 IT{grade:g} of the {bore * 1e3:.0f} mm bore and journal: +-{tol * 1e6:.1f} um"
+
+
+def largest_clearance_tolerances(cases: Cases) -> list[tuple[float, str]]:
+    """Per plane, how far above the file's its radial clearance may be made [m], and where that comes from.
+
+    The campaign's spread of the clearance (:func:`campaign_spreads`); (0, "") where it has none.
+    """
+    out = []
+    for k, plane in enumerate(cases.machine.planes):
+        spread = next((sp for sp in cases.spreads if sp["key"] == f"touchdown.{k}.radial_clearance"), None)
+        out.append((max(0.0, float(spread["high"]) - plane.radial_clearance), spread["origin"]) if spread
+                   else (0.0, ""))
+    return out
 
 
 def campaign_tables(data: dict, machine: Machine, settings: dict, samples: int, drop: dict) -> dict:
