@@ -33,8 +33,8 @@ def test_the_fit_tolerance_and_the_thermal_growth_add_to_the_clearance_as_given(
     c = _air_gap(_cases(planes, [8e-6, 8e-6], history), CRITERIA)
     assert c.found == pytest.approx(0.1805)  # 0.150 + 0.008 + 0.0225 mm, the drive end
     assert c.passed is True and c.margin == pytest.approx(1.0 - 0.1805 / 0.2)
-    assert "drive end: 0.15 mm as given + 0.008 mm of fit tolerance (tolerance of drive end)" in c.evidence
-    assert "0.0225 mm of thermal growth" in c.evidence
+    assert "drive end: 0.15 mm as given + 8 um of fit tolerance (tolerance of drive end)" in c.evidence
+    assert "22.5 um of thermal growth" in c.evidence
 
 
 def test_the_plane_with_the_larger_tolerance_can_govern():

@@ -130,9 +130,9 @@ def _air_gap(cases: Cases, criteria: dict) -> Criterion:
     total, plane, tol, source, growth = worst
     parts = [f"{plane.name}: {plane.radial_clearance * 1e3:.4g} mm as given"]
     if tol > 0.0:
-        parts.append(f"{tol * 1e3:.4g} mm of fit tolerance ({source})")
+        parts.append(f"{tol * 1e6:.3g} um of fit tolerance ({source})")
     if history is not None:
-        parts.append(f"{growth * 1e3:.4g} mm of thermal growth in the coast-down")
+        parts.append(f"{growth * 1e6:.3g} um of thermal growth in the coast-down")
     limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
     return upper_bound(name, total * 1e3, limit * 1e3, "mm",
                        f"{origin('air_gap_fraction', criteria)}; air gap from your [criteria]",
