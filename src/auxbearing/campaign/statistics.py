@@ -179,12 +179,21 @@ def sample_outputs(ds) -> dict[str, tuple[np.ndarray, str]]:
               "peak_contact_force_N": (ds["peak_contact_force"].max("plane", skipna=False).values, "N"),
               "s0_min": (ds["s0"].min("plane", skipna=False).values, "-"),
               "backward_whirl": (ds["backward_whirl"].max("plane", skipna=False).values, "-")}
+    if "max_excursion" in ds:  # stores made before it was recorded lack it
+        planes["max_excursion_mm"] = (ds["max_excursion"].max("plane", skipna=False).values * 1e3, "mm")
     if "max_temperature" in ds:
         planes["max_temperature_C"] = (ds["max_temperature"].max("plane", skipna=False).values, "degC")
         planes["damage_per_drop"] = (ds["damage_per_drop"].max("plane", skipna=False).values, "-")
         planes["allowed_drops_min"] = (ds["allowed_drops"].min("plane", skipna=False).values, "-")
         planes["coastdown_time_s"] = (ds["coastdown_time"].values, "s")
     return planes
+
+
+def _largest(values, ok: np.ndarray) -> float | None:
+    """The largest of ``values`` over the runs that ended ok, or None (no such runs, no values, no array)."""
+    if values is None or not ok.any() or not np.isfinite(values[ok]).any():
+        return None
+    return float(np.nanmax(values[ok]))
 
 
 def verdict_masks(ds) -> dict[str, np.ndarray]:
@@ -266,6 +275,7 @@ def campaign_statistics(ds, required_s0: float | None = None, seed: int = 0) -> 
         "required_s0": required,
         "required_s0_source": _required_source(required, required_s0 is not None),
         "smallest_s0": float(np.nanmin(s0[ok])) if ok.any() and np.isfinite(s0[ok]).any() else None,
+        "largest_excursion_mm": _largest(outputs.get("max_excursion_mm", (None,))[0], ok),
         "quantiles": {},
         "planes": {},
     }

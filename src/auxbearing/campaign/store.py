@@ -186,7 +186,8 @@ def check_arrays(path: str | Path, ds, attrs: dict) -> None:
     for name in (*sample, *plane, "completed", "unit", "value"):
         if name not in ds.variables:
             raise InputError(f"store = '{path}': the array {name!r} is missing: the store is damaged (a folder "
-                             "deleted or a copy that did not finish?); run the campaign again into a new --out")
+                             "deleted or a copy that did not finish?) or was made by an auxbearing that did not "
+                             "record it; run the campaign again into a new --out")
 
 
 def read_attrs(path: str | Path) -> dict:
