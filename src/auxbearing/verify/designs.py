@@ -108,14 +108,15 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     gap_limit = None
     # the clearance as made may lie its fit tolerance above the design's (the verdict counts it: judge._air_gap);
     # the tolerance of the file's geometry serves every point (the bore stays, the journal moves by micrometres)
-    tolerances = [clearance_tolerance(p, verify_settings(data))[0] for p in machine.planes]
+    settings = verify_settings(data)
+    tolerances = [clearance_tolerance(p, settings)[0] for p in machine.planes]
     if criteria.get("amb_air_gap"):
         gap_limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
         c_high = min(c_high, min((gap_limit - tol) / p.radial_clearance
                                  for p, tol in zip(machine.planes, tolerances, strict=True)))
     # the levitated rotor orbits its mass centre above its rigid-body modes: the orbit is the unbalance, at least
     # the balance grade's (the verification's campaign uses the same)
-    orbit = max(machine.rotor.unbalance, verify_settings(data)["balance_grade"] / max(abs(machine.rotor.speed), 1e-9))
+    orbit = max(machine.rotor.unbalance, settings["balance_grade"] / max(abs(machine.rotor.speed), 1e-9))
     c_low = max(CLEARANCE_RANGE[0], orbit / ORBIT_ZONE / min(p.radial_clearance for p in machine.planes))
     bounds = np.array([CONTACT_ANGLE_RANGE if angle_free else (first.contact_angle, first.contact_angle),
                        GROOVE_RATIO_RANGE, (c_low, max(c_high, c_low))])
