@@ -54,10 +54,7 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     out.append(_sustained_whirl(cases))
     coast = cases.coastdown.summary if cases.coastdown is not None else None
     if coast is not None:
-        hottest = max((max(p["max_temperature_C"].values()), p["name"]) for p in coast["planes"])
-        out.append(temperature_bound("peak bearing temperature", hottest[0], criteria["max_temperature"] - 273.15,
-                                     cases.machine.coastdown.ambient_temperature - 273.15,
-                                     origin("max_temperature", criteria), f"coast-down, {hottest[1]}"))
+        out.append(_peak_temperature(cases, criteria))
         from auxbearing.analysis.coastdown import _preload_stress
 
         stresses = []
@@ -98,6 +95,23 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     if cases.campaign is not None:
         out.append(_whirl_probability(cases.campaign, criteria))
     return out
+
+
+def _peak_temperature(cases: Cases, criteria: dict) -> Criterion:
+    """The hottest part of any plane over the coast-down against the allowed temperature.
+
+    A coast-down that ran away thermally stops where a part reaches ``coastdown.max_temperature``: its figure is
+    where the run stopped, not the peak the bearing was heading for, and the evidence says so.
+    """
+    coast = cases.coastdown.summary
+    hottest = max((max(p["max_temperature_C"].values()), p["name"]) for p in coast["planes"])
+    where = f"coast-down, {hottest[1]}"
+    if coast["verdict"] == "thermal_runaway":
+        where += ("; the run stopped there on its thermal run-away (coastdown.max_temperature): the peak it was "
+                  "heading for is higher")
+    return temperature_bound("peak bearing temperature", hottest[0], criteria["max_temperature"] - 273.15,
+                             cases.machine.coastdown.ambient_temperature - 273.15, origin("max_temperature", criteria),
+                             where)
 
 
 def _air_gap(cases: Cases, criteria: dict) -> Criterion:
