@@ -322,3 +322,22 @@ def test_the_whirl_criterion_fails_whatever_follows_only_when_the_rest_cannot_sa
     # 6 whirls: 6 / 128 = 0.047, the rest could still bring the estimate within the limit
     assert not whirl_fails_whatever_follows(6, 60, 68, 0.05)
     assert not whirl_fails_whatever_follows(0, 0, 0, 0.05)
+
+
+def test_a_store_part_written_opens_with_xarrays_defaults_and_shows_its_batches(tmp_path):
+    """Its metadata is consolidated when it is made (arrays and attributes never change after): a user's plain
+    xarray.open_zarr reads it without a warning, and the batches written since are there."""
+    import warnings
+
+    import xarray as xr
+
+    c = small()
+    points = design(c)
+    path = tmp_path / "s.zarr"
+    prepare_store(path, c, points)
+    write_batch(path, 2, ev.evaluate_batch(c, points.values[2:4]))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        ds = xr.open_zarr(path)
+    assert ds["completed"].values.tolist() == [0, 0, 1, 1, 0, 0]
+    assert np.isfinite(ds["max_excursion"].values[2:4]).all()

@@ -117,7 +117,9 @@ def create_store(path: str | Path, campaign: Campaign, design: Design) -> Path:
     except OSError as err:
         raise InputError(f"store = '{path}': cannot be made here ({err.strerror or err})") from None
     try:
-        ds.to_zarr(scratch / "store.zarr", mode="w-", compute=False, consolidated=False, zarr_format=ZARR_FORMAT,
+        # metadata consolidated once: the arrays and attributes are fixed here and batches only fill chunks, so
+        # xarray.open_zarr on a store, finished or not, reads it without a warning and without listing every array
+        ds.to_zarr(scratch / "store.zarr", mode="w-", compute=False, consolidated=True, zarr_format=ZARR_FORMAT,
                    encoding=encoding)
         os.rename(scratch / "store.zarr", path)
     except OSError as err:
