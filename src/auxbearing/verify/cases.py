@@ -308,6 +308,12 @@ def clearance_tolerance(plane, settings: dict) -> tuple[float, str]:
     return tol, f"ISO 286-1 IT{grade:g} of the {bore * 1e3:.0f} mm bore and journal: +-{tol * 1e6:.1f} um"
 
 
+def thermal_openings(history, planes) -> list[float]:
+    """Per plane, how far thermal growth opened its touchdown clearance beyond the file's over a coast-down [m]."""
+    return [max(0.0, float(history.radial_clearance.isel(plane=k).max()) - p.radial_clearance)
+            for k, p in enumerate(planes)]
+
+
 def largest_clearance_tolerances(cases: Cases) -> list[tuple[float, str]]:
     """Per plane, how far above the file's its radial clearance may be made [m], and where that comes from.
 

@@ -8,7 +8,7 @@ from auxbearing.analysis.scenario_outcome import SATURATED
 from auxbearing.analysis.whirl import BACKWARD
 from auxbearing.campaign.evaluate import FAILED, OUT_OF_RANGE
 from auxbearing.machine.scenario import SCENARIO_CASE
-from auxbearing.verify.cases import Cases, largest_clearance_tolerances
+from auxbearing.verify.cases import Cases, largest_clearance_tolerances, thermal_openings
 from auxbearing.verify.criteria import (
     Criterion,
     lower_bound,
@@ -124,17 +124,12 @@ def _air_gap(cases: Cases, criteria: dict) -> Criterion:
     name = "touchdown clearance against the magnetic air gap"
     if criteria["amb_air_gap"] is None:
         return not_checked(name, "give criteria.amb_air_gap to check it", origin("air_gap_fraction", criteria))
+    planes = cases.machine.planes
     history = cases.coastdown.history if cases.coastdown is not None else None
-    worst = None
-    for k, (plane, (tol, source)) in enumerate(zip(cases.machine.planes, largest_clearance_tolerances(cases),
-                                                    strict=True)):
-        growth = 0.0
-        if history is not None:
-            growth = max(0.0, float(history.radial_clearance.isel(plane=k).max()) - plane.radial_clearance)
-        total = plane.radial_clearance + tol + growth
-        if worst is None or total > worst[0]:
-            worst = (total, plane, tol, source, growth)
-    total, plane, tol, source, growth = worst
+    openings = thermal_openings(history, planes) if history is not None else [0.0] * len(planes)
+    total, plane, tol, source, growth = max(
+        ((p.radial_clearance + tol + growth, p, tol, source, growth) for p, (tol, source), growth in
+         zip(planes, largest_clearance_tolerances(cases), openings, strict=True)), key=lambda row: row[0])
     parts = [f"{plane.name}: {plane.radial_clearance * 1e3:.4g} mm as given"]
     if tol > 0.0:
         parts.append(f"{tol * 1e6:.3g} um of fit tolerance ({source})")
