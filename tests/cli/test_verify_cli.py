@@ -91,6 +91,11 @@ def test_verify_in_a_log_gives_one_line_a_criterion(blower_verified):
     for c in criteria:
         line = next(x for x in lines if x.lstrip().startswith(("pass ", "FAIL ", "not checked ")) and c["name"] in x)
         assert line.split()[0] in ("pass", "FAIL", "not")
+    # a FAIL's reason names what it could not check; the lines after the table say why, as an INCOMPLETE's reason
+    if json.loads((out / "verify.json").read_text())["verdict"] == "fail":
+        for c in criteria:
+            if c["pass"] is None:
+                assert f"Not checked: {c['name']}: {c['evidence'][:30]}" in " ".join(output.split())
 
 
 @pytest.mark.slow
@@ -158,3 +163,28 @@ def test_bad_candidate_is_refused_before_any_drop(tmp_path):
     result = _run("verify", "--machine", "blower", "--out", out, "--candidates", "QJ208,,7208")
     assert result.exit_code == 2 and "--candidates" in result.output
     assert not out.exists()
+
+
+def test_a_failing_verdict_says_why_each_criterion_it_could_not_check_is_open(tmp_path, monkeypatch):
+    # mending a failure does not make a pass while other criteria stay open: after the table, each says why
+    from auxbearing.report.verify_html import verdict_reason
+    from auxbearing.verify import run as verify_run
+    from auxbearing.verify.criteria import not_checked, upper_bound
+
+    criteria = [upper_bound("peak bearing temperature", 150.0, 120.0, "°C", "", "coast-down, drive end"),
+                not_checked("touchdown clearance against the magnetic air gap", "give criteria.amb_air_gap", "")]
+
+    class Result(dict):
+        def save(self, folder):
+            (folder / "verify.json").write_text("{}")
+
+    def verify(*args, **kwargs):
+        return Result(verdict="fail", reason=verdict_reason(criteria), machine="m", design={"criteria": criteria},
+                      candidates=[], ranking=[], recommendation=None, wall_time_s=1.0)
+
+    monkeypatch.setattr(verify_run, "verify", verify)
+    result = _run("verify", "--machine", "blower", "--out", tmp_path / "out", "--quiet")
+    assert result.exit_code == 1, result.output
+    assert "besides, 1 of 2 are not checked: touchdown clearance against the magnetic air gap" in " ".join(
+        result.output.split())
+    assert "Not checked: touchdown clearance against the magnetic air gap: give criteria.amb_air_gap" in result.output

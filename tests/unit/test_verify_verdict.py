@@ -52,3 +52,15 @@ def test_ranking_puts_failing_designs_last_whatever_their_margins():
     order = sorted([("bad", bad), ("incomplete", incomplete), ("good", good)], key=lambda d: ranking_key(d[1]))
     assert [name for name, _ in order] == ["good", "incomplete", "bad"]
     assert math.isfinite(ranking_key(good)[2])
+
+
+def test_a_failing_verdict_names_the_criteria_it_could_not_check():
+    # mending a failure does not make a pass while other criteria stay open: a FAIL's reason names them too
+    from auxbearing.report.verify_html import verdict_reason
+
+    failing = [*_held(), not_checked("air gap", "give criteria.amb_air_gap", ""), upper_bound("x", 2.0, 1.0, "", "",
+                                                                                              "case a")]
+    reason = verdict_reason(failing)
+    assert reason.startswith("fails on x (2 against 1: case a)")
+    assert reason.endswith("besides, 1 of 5 are not checked: air gap")
+    assert "not checked" not in verdict_reason([*_held(), upper_bound("x", 2.0, 1.0, "", "", "")])

@@ -97,6 +97,10 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         for name, required, found, margin, status in rows:
             console.print(f"  {status:>11}  {name}: {found} against {required}"
                           + (f" (margin {margin})" if margin != "-" else ""), highlight=False, soft_wrap=True)
+    if result["verdict"] == "fail":  # an incomplete verdict's reason says already why each is not checked
+        for c in result["design"]["criteria"]:
+            if c.passed is None:
+                console.print(f"Not checked: {c.name}: {c.evidence}", highlight=False, soft_wrap=True)
     if result["candidates"]:
         console.print("Candidates ranked by worst margin: " + ", ".join(result["ranking"]), highlight=False)
     if result["recommendation"]:

@@ -65,14 +65,19 @@ def verdict_rows(criteria: list) -> tuple[list[list[str]], list[str]]:
 def verdict_reason(criteria: list) -> str:
     """Why the design passes, fails or is incomplete, in one sentence.
 
-    FAIL names every failing criterion with its evidence; INCOMPLETE names every criterion not checked and how
-    to check it (its evidence says); PASS says every criterion holds.
+    FAIL names every failing criterion with its evidence, then those not checked by name (mending the failures
+    does not make a pass while they stay open); INCOMPLETE names every criterion not checked and how to check it
+    (its evidence says); PASS says every criterion holds.
     """
     failing = [c for c in criteria if c.passed is False]
     unchecked = [c for c in criteria if c.passed is None]
     if failing:
-        return "fails on " + "; ".join(f"{c.name} ({_fmt(c.found, c.unit)} against {_fmt(c.required, c.unit)}: "
-                                       f"{c.evidence})" for c in failing)
+        reason = "fails on " + "; ".join(f"{c.name} ({_fmt(c.found, c.unit)} against {_fmt(c.required, c.unit)}: "
+                                         f"{c.evidence})" for c in failing)
+        if unchecked:
+            reason += (f"; besides, {len(unchecked)} of {len(criteria)} are not checked: "
+                       + ", ".join(c.name for c in unchecked))
+        return reason
     if unchecked:
         return (f"no checked criterion fails, but {len(unchecked)} of {len(criteria)} are not checked: "
                 + "; ".join(f"{c.name} ({c.evidence})" for c in unchecked))
