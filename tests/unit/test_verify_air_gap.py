@@ -62,3 +62,10 @@ def test_the_tolerance_read_back_is_the_one_the_campaign_spreads():
     (back, origin), = largest_clearance_tolerances(_cases([plane], [tol]))
     assert back == pytest.approx(tol) and origin == "tolerance of drive end"
     assert clearance_tolerance(plane, {**settings, "clearance_tolerance": 5e-6}) == (5e-6, "your [verify] table")
+
+
+def test_a_plane_that_never_warmed_reads_no_growth_rather_than_a_rounding_residue():
+    # the middle plane of a three-plane rotor barely touches: its bore grows by 1e-17 m, printed as 5.6e-11 um before
+    planes = [_plane("middle", 0.25e-3)]
+    c = _air_gap(_cases(planes, [8e-6], [[0.25e-3], [0.25e-3 + 5.6e-17]]), CRITERIA)
+    assert "+ 0 um of thermal growth" in c.evidence

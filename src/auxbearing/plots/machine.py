@@ -30,8 +30,12 @@ def plot_machine(machine, ax=None) -> Figure:
     ax.add_patch(Rectangle((left, -radius), right - left, 2 * radius, facecolor="0.85", edgecolor="0.3", lw=1))
     ax.plot(0.0, 0.0, marker="o", ms=9, mfc="white", mec="black")
     ax.plot(0.0, 0.0, marker="+", ms=9, color="black")
+    # under the shaft, or under the bearings where a plane sits at the mass centre (its balls would cover the text)
+    outside = max((p.bearing.outside_diameter or p.bearing.pitch_diameter * 1.4) * 0.5e3 for p in planes)
+    crowded = any(abs(p.position * 1e3) < 0.08 * span for p in planes)
     ax.annotate(f"mass centre\n{machine.rotor.mass:g} kg, {machine.rotor.speed * 30 / np.pi:.0f} rpm", (0.0, 0.0),
-                (0.0, -radius * 2.6), ha="center", fontsize=8, arrowprops={"arrowstyle": "-", "color": "0.4"})
+                (0.0, -outside * 1.9 if crowded else -radius * 2.6), ha="center", fontsize=8,
+                arrowprops={"arrowstyle": "-", "color": "0.4"})
     for plane in planes:
         z = plane.position * 1e3
         width = (plane.bearing.width or plane.bearing.ball_diameter) * 1e3

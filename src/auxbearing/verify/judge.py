@@ -114,6 +114,11 @@ def _peak_temperature(cases: Cases, criteria: dict) -> Criterion:
                              where)
 
 
+def _micrometres(length: float) -> str:
+    """A length [m] in micrometres to 0.01 um: a plane that never touched grows by 1e-17 m, shown as 0."""
+    return f"{round(length * 1e6, 2) + 0.0:.3g}"
+
+
 def _air_gap(cases: Cases, criteria: dict) -> Criterion:
     """The largest touchdown clearance the machine may have against the part of the magnetic air gap it may use.
 
@@ -132,9 +137,9 @@ def _air_gap(cases: Cases, criteria: dict) -> Criterion:
          zip(planes, largest_clearance_tolerances(cases), openings, strict=True)), key=lambda row: row[0])
     parts = [f"{plane.name}: {plane.radial_clearance * 1e3:.4g} mm as given"]
     if tol > 0.0:
-        parts.append(f"{tol * 1e6:.3g} um of fit tolerance ({source})")
+        parts.append(f"{_micrometres(tol)} um of fit tolerance ({source})")
     if history is not None:
-        parts.append(f"{growth * 1e6:.3g} um of thermal growth in the coast-down")
+        parts.append(f"{_micrometres(growth)} um of thermal growth in the coast-down")
     limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
     return upper_bound(name, total * 1e3, limit * 1e3, "mm",
                        f"{origin('air_gap_fraction', criteria)}; air gap from your [criteria]",
