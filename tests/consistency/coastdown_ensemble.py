@@ -8,6 +8,7 @@ takes about 5 minutes)::
 
     PYTHONPATH=src python -m tests.consistency.coastdown_ensemble paper_rig --phases 15
     PYTHONPATH=src python -m tests.consistency.coastdown_ensemble "blower:7208 DB light" --phases 5
+    PYTHONPATH=src python -m tests.consistency.coastdown_ensemble "blower:QJ208 hybrid" --phases 10 --duration 4
 
 Each phase k runs with ``rotor.unbalance_phase`` = k * 1e-9 rad, once ``mode="auto"`` and once ``mode="full"``,
 side by side on ``--workers`` processes. Full dynamics gets a step budget of 1e8 (the blower's full run to
@@ -48,9 +49,11 @@ def machine_at_phase(case: str, phase: float):
     return machine_from_mapping(data, name, base)
 
 
-def one_run(case: str, k: int, mode: str) -> dict:
-    """The figures of one run to standstill: standstill time and per plane damage, peak temperature, clearance."""
-    summary = run_coastdown(machine_at_phase(case, k * PHASE_STEP), until_stop=True, mode=mode).summary
+def one_run(case: str, k: int, mode: str, duration: float | None = None) -> dict:
+    """The figures of one run to standstill (or over ``duration`` s): standstill time and per plane damage, peak
+    temperature, clearance."""
+    summary = run_coastdown(machine_at_phase(case, k * PHASE_STEP), until_stop=duration is None, duration=duration,
+                            mode=mode).summary
     planes = summary["planes"]
     return {"verdict": summary["verdict"], "standstill_s": summary["coastdown_time_s"],
             "damage": [p["damage_per_drop"] for p in planes],
@@ -76,11 +79,12 @@ def main() -> None:
     parser.add_argument("case", help='an example machine, or "machine:candidate"')
     parser.add_argument("--phases", type=int, default=5, help="runs of each path (default 5)")
     parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--duration", type=float, default=None, help="simulated seconds (default: to standstill)")
     args = parser.parse_args()
-    jobs = [(args.case, k, mode) for k in range(args.phases) for mode in ("full", "auto")]
+    jobs = [(args.case, k, mode, args.duration) for k in range(args.phases) for mode in ("full", "auto")]
     with ProcessPoolExecutor(args.workers) as pool:
         runs = list(pool.map(one_run, *zip(*jobs, strict=True)))
-    by_mode = {mode: [r for (_, _, m), r in zip(jobs, runs, strict=True) if m == mode] for mode in ("full", "auto")}
+    by_mode = {mode: [r for (_, _, m, _), r in zip(jobs, runs, strict=True) if m == mode] for mode in ("full", "auto")}
     print(f"{args.case}: {args.phases} phases; verdicts", {m: sorted({r["verdict"] for r in rs}) for m, rs in
                                                             by_mode.items()})
     full, auto = by_mode["full"], by_mode["auto"]

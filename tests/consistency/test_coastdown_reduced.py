@@ -70,8 +70,16 @@ SPEED_TOLERANCE = {"paper_rig": 0.05, "paper_rig_two_planes": 0.05}
 #: not. The reduced run stays on the small rattle, whose windows (30 ms of motion per stretch) grow too slowly to
 #: leave it: -3.3 / -5.6 % over 30 s against full dynamics converged in its tolerances (at the default
 #: tolerances full dynamics' own damage is 1.2 / 2.4 % low; tolerances 3.3 and 10 times tighter agree within 0.04 %).
+#: Since the windows charge the mean load of a varying load (the cube mean of the bearing's load, not its plain
+#: mean: auxbearing.analysis.coastdown_life), a swing's growth weighs more: the paper rigs' journals swing up
+#: through three times their rolling pendulum from 1.3 s on, full dynamics' mean load rising from 22.3 to about
+#: 24 N by 4 s with the first impacts, while the reduced run's first stretch at 1.2 s holds 22.3 N: -5.75 % on
+#: every plane, the same over ten unbalance phases (over 4 s the rigs are not yet chaotic). The QJ208 hybrid's
+#: drive end is -2.2 % at this phase, -0.91 +- 0.40 % over six phases.
 DAMAGE_TOLERANCE = {**{(case, 1): 0.06 for case in ("blower", "blower:7208", "blower:6208", "blower:7208 DB light",
-                                                      "blower:QJ208 hybrid")}, ("blower:7208", 0): 0.03}
+                                                      "blower:QJ208 hybrid")}, ("blower:7208", 0): 0.03,
+                    ("paper_rig", 0): 0.07, ("paper_rig_two_planes", 0): 0.07, ("paper_rig_two_planes", 1): 0.07,
+                    ("blower:QJ208 hybrid", 0): 0.03}
 
 
 @pytest.mark.slow

@@ -799,12 +799,13 @@ def rattle_note(summary: dict) -> str:
 def _window_load(machine: Machine, k: int, window) -> float:
     """ISO 281 equivalent load on plane k's bearing over a window [N].
 
-    Radial: the window's mean journal contact force plus the race's weight; axial: its mean face force (the
-    averaging this implies: :mod:`auxbearing.analysis.coastdown_life`).
+    Radial: the mean load of the bearing's varying radial load over the window (the cube mean of the ball set's
+    reaction, which carries the race's weight too: :mod:`auxbearing.analysis.coastdown_life`); axial: the mean face
+    force.
     """
     from auxbearing.analysis.coastdown_life import equivalent_load
 
-    radial = window.force + machine.planes[k].race_mass * machine.simulation.gravity
+    radial = window.bearing_load
     return equivalent_load(machine.planes[k].unit, radial, window.axial_force)
 
 

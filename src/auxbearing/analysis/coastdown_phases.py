@@ -85,6 +85,9 @@ class PlaneWindow(NamedTuple):
     orbit_speed_sq: float = 0.0
     #: the class of each of its closed whirl windows, in order (:func:`~auxbearing.analysis.whirl.classify_window`)
     whirl_classes: tuple = ()
+    #: mean radial load of the bearing over the window, (time mean of F^3)^(1/3) of the ball set's reaction [N]
+    #: (:mod:`~auxbearing.analysis.coastdown_life`)
+    bearing_load: float = 0.0
 
     @property
     def torque(self) -> float:
@@ -126,7 +129,8 @@ def plane_window(machine: Machine, k: int, records: np.ndarray, onsets: int, pow
     return PlaneWindow(state, onsets, contact, float(mean[_F["mean_normal_force"]]),
                        float(mean[_F["mean_axial_force"]]), float(omega), float(race),
                        float(whirl), float(slip), tuple(float(p) for p in powers),
-                       orbit_speed_sq=float(mean[_F["orbit_speed_sq"]]), whirl_classes=ordered)
+                       orbit_speed_sq=float(mean[_F["orbit_speed_sq"]]), whirl_classes=ordered,
+                       bearing_load=float(max(mean[_F["mean_cube_bearing_load"]], 0.0) ** (1.0 / 3.0)))
 
 
 class BackwardWhirl:

@@ -28,6 +28,8 @@ from numba import njit
 from auxbearing.core import integrate as ig
 from auxbearing.core import probes
 from auxbearing.core.machine import (
+    D_BFX,
+    D_BFY,
     D_FA,
     D_FN,
     D_MOUNT,
@@ -55,9 +57,12 @@ STOP_NAMES = {JOURNAL_PRESSURE: "journal_contact_overstress", BALL_STRESS: "ball
 STRESS_CANDIDATE_LOAD = 0.7
 #: Columns of a whirl-window record. ``orbit_speed_sq`` is the mean square of the journal centre's speed in its
 #: bore [m^2/s^2]: how much the journal moves (rattle, swing, whirl), which a coast-down's reduced stretch
-#: freezes (:func:`auxbearing.analysis.coastdown_phases.motion_steady`).
+#: freezes (:func:`auxbearing.analysis.coastdown_phases.motion_steady`). ``mean_cube_bearing_load`` is the time
+#: mean of the cube of the bearing's radial load [N^3], the ball set's reaction on the race (the journal's impacts
+#: reach it through the race's inertia), from which a coast-down's window takes the mean load of a varying load
+#: (:mod:`auxbearing.analysis.coastdown_life`).
 WHIRL_FIELDS = ("whirl_speed", "mean_radius", "contact_fraction", "spin_speed", "race_speed", "duration",
-                "mean_normal_force", "mean_axial_force", "orbit_speed_sq")
+                "mean_normal_force", "mean_axial_force", "orbit_speed_sq", "mean_cube_bearing_load")
 _FORCE, _STRESS, _AXIAL = range(3)
 
 
@@ -164,6 +169,7 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
         acc[7] += abs(diags[k, D_FA]) * h
         if h > 0.0:  # (step's displacement / h)^2 over h
             acc[8] += ((x1 - x0) ** 2 + (y1_ - y0_) ** 2) / h
+        acc[9] += math.hypot(diags[k, D_BFX], diags[k, D_BFY]) ** 3 * h
     if t + h >= w.window_end[0]:
         i = w.window_count[0]
         if i < w.whirl.shape[0]:
@@ -180,6 +186,7 @@ def _whirl_step(w, y0, y1, m, t, h, diags):
                     w.whirl[i, k, 6] = acc[6] / span
                     w.whirl[i, k, 7] = acc[7] / span
                     w.whirl[i, k, 8] = acc[8] / span
+                    w.whirl[i, k, 9] = acc[9] / span
                 for j in range(acc.size):
                     acc[j] = 0.0
             w.window_count[0] = i + 1
