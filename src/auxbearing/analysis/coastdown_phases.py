@@ -229,7 +229,7 @@ def too_short(windows: list[list[PlaneWindow]]) -> bool:
     windows, so that twelve of them never agree and 400 windows ran in full dynamics. Longer windows average
     the beat within each (:data:`WINDOW_GROWTH`), and their over-rolling load stays the beat's, a cube mean over
     the window (:mod:`auxbearing.analysis.coastdown_life`). Against full dynamics to the vertical rotor's run-away:
-    320 windows instead of 628, damage per drop -0.42 / -0.42 % (-0.49 / -0.03 % with the windows left at 10 ms),
+    320 windows instead of 628, damage per drop -0.32 / -0.19 % (-0.49 / -0.03 % with the windows left at 10 ms),
     peaks within 0.17 K, the run-away at 13.08 s against 13.11 s.
     """
     run = _same_state_run(windows)
@@ -359,7 +359,8 @@ class StretchEnd:
     stretch is then charged at :func:`stretch_load`. The first three windows alone, as taken before, were no
     measure where the load varies: a journal that bounces now and then in the bottom of its bore (the paper rigs
     between 4000 and 3000 rpm) showed an impact in them, and the cube of its load was charged to half a stretch
-    of some 500 revolutions (the paper rig's damage per drop +270 +- 54 % of full dynamics' over fifteen phases).
+    of some 500 revolutions (the paper rig's damage per drop +270 +- 54 % of full dynamics' over fifteen phases;
+    with the settled load +73 +- 16 %, which :mod:`auxbearing.analysis.coastdown` says is still no measure there).
     Windows in another family of states than the stretch carried, or the run's end, leave the stretch at its
     starting load: where in the stretch the state changed is not known.
     """
