@@ -31,16 +31,16 @@ def plot_machine(machine, ax=None) -> Figure:
     ax.plot(0.0, 0.0, marker="o", ms=9, mfc="white", mec="black")
     ax.plot(0.0, 0.0, marker="+", ms=9, color="black")
     # under the shaft, or under the bearings where a plane sits at the mass centre (its balls would cover the text)
-    outside = max((p.bearing.outside_diameter or p.bearing.pitch_diameter * 1.4) * 0.5e3 for p in planes)
+    top = max(_outer_radius(p) for p in planes)  # the bearings' outer edge [mm]
     crowded = any(abs(p.position * 1e3) < 0.08 * span for p in planes)
     ax.annotate(f"mass centre\n{machine.rotor.mass:g} kg, {machine.rotor.speed * 30 / np.pi:.0f} rpm", (0.0, 0.0),
-                (0.0, -outside * 1.9 if crowded else -radius * 2.6), ha="center", fontsize=8,
+                (0.0, -top * 1.9 if crowded else -radius * 2.6), ha="center", fontsize=8,
                 arrowprops={"arrowstyle": "-", "color": "0.4"})
     for plane in planes:
         z = plane.position * 1e3
         width = (plane.bearing.width or plane.bearing.ball_diameter) * 1e3
         bore = plane.journal_radius * 1e3 + 20.0 * plane.radial_clearance * 1e3  # clearance enlarged x20
-        outer = (plane.bearing.outside_diameter or plane.bearing.pitch_diameter * 1.4) * 0.5e3
+        outer = _outer_radius(plane)
         ball = plane.bearing.ball_diameter * 0.5e3
         pitch = plane.bearing.pitch_diameter * 0.5e3
         for sign in (1.0, -1.0):
@@ -55,7 +55,6 @@ def plot_machine(machine, ax=None) -> Figure:
                 + (f", axial {plane.axial_clearance * 1e3:g} mm" if plane.catches_axially else "")
                 + (f"\nmount {plane.mount.mount_stiffness:.2g} N/m" if plane.mount is not None else "\nrigid housing"))
         ax.text(z, outer + 6.0, text, ha="center", va="bottom", fontsize=8)
-    top = max((p.bearing.outside_diameter or p.bearing.pitch_diameter * 1.4) * 0.5e3 for p in planes)
     _stations(ax, machine, stations, radius, top, span)
     ax.set_xlim(min(left, *positions) - 0.05 * span, max(right, *positions) + 0.05 * span)
     ax.set_ylim(-top * 2.9, top * 2.6)
@@ -68,6 +67,11 @@ def plot_machine(machine, ax=None) -> Figure:
     for spine in ("left", "right", "top"):
         ax.spines[spine].set_visible(False)
     return fig
+
+
+def _outer_radius(plane) -> float:
+    """Outer radius of a plane's bearing as drawn [mm] (1.4 pitch diameters where the catalogue gives none)."""
+    return (plane.bearing.outside_diameter or plane.bearing.pitch_diameter * 1.4) * 0.5e3
 
 
 def _stations(ax, machine, stations, radius: float, top: float, span: float) -> None:
