@@ -135,8 +135,13 @@ from auxbearing.analysis.coastdown_phases import (
     calm,
     integrate_stretch,
     motion_steady,
+    next_passage_top,
+    passage_at,
+    pendulum_passages,
+    pendulum_swinging,
     plane_window,
     quiet_orbits,
+    resting,
     same_families,
     settled,
     spin_model,
@@ -417,7 +422,8 @@ def _window_planes(machine: Machine, watch, powers: dict) -> list:
     return [w._replace(load=_window_load(machine, k, w)) for k, w in enumerate(planes)]
 
 
-def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_end: float, growth: float = 1.0):
+def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_end: float, growth: float = 1.0,
+             stop_above: float = 0.0):
     """Advance the slow quantities on the reduced model (:mod:`auxbearing.core.spin`).
 
     The stretch ends when the speed has fallen by ``growth`` times ``coastdown.speed_step`` (at most by
@@ -432,7 +438,7 @@ def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_en
     omega0 = float(y[cm.OMEGA])
     races = [float(y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) for k in range(len(machine.planes))]
     fall = min(growth * coast.speed_step, max(coast.speed_step, MAX_SPEED_FALL))
-    floor = max(abs(omega0) * (1.0 - fall), coast.stop_speed)
+    floor = max(abs(omega0) * (1.0 - fall), coast.stop_speed, stop_above)
     model = spin_model(machine, windows, omega0, races, floor)
     span = min(t_end - session.t, MAX_STRETCH)
     while True:
@@ -564,6 +570,9 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
 
     to_standstill = until_stop and duration is None
     speed0 = max(abs(float(session.y[cm.OMEGA])), coast.stop_speed)
+    passages = pendulum_passages(machine, speed0)
+    passage_end = None  # a swinging journal's pendulum passage runs in full dynamics down to this speed
+    rested = [False] * len(machine.planes)  # per plane: its journal has come to rest in its bore
 
     def done() -> float:
         # to standstill: the share of the speed lost (coastdown.max_time is only a bound); else of the time
@@ -652,6 +661,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             motion.append(windows)
             del motion[:-STEADY_SPANS * span]
             steady = steady or motion_steady(motion, span, quiet_orbits(machine, windows))
+            if len(motion) >= span:
+                rested = [a or b for a, b in zip(rested, resting(motion[-span:]), strict=True)]
         if progress is not None:
             rpm = abs(session.y[cm.OMEGA]) * 30 / math.pi
             progress(done(), f"t = {session.t:.2f} s, {rpm:.0f} rpm")
@@ -669,6 +680,21 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             continue
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
             continue  # at standstill: the loop's top ends the run
+        speed = abs(session.y[cm.OMEGA])
+        if passage_end is not None and speed >= passage_end:
+            steady = False  # the swing a passage leaves dies out over seconds: judged afresh below it
+            continue
+        passage = passage_at(passages, speed)
+        swinging = pendulum_swinging(machine, motion[-span:], rested)
+        if swinging:
+            # a swing builds up in a passage and dies out after it on its own time scale, which a stretch would
+            # stop: full dynamics while it lasts, through to the passage's end when it swings in one
+            if passage is not None:
+                passage_end, steady, motion = passage[0], False, []
+            if ending is not None:  # the stretch before ended where these windows started
+                ending.close(carried, overrolling)
+                ending = None
+            continue
         for w in carried:
             counts["states"][w.state] = counts["states"].get(w.state, 0) + 1
         if ending is not None:  # the last stretch ends at the load these windows settled on
@@ -679,7 +705,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         elif held is not None:
             growth = stretch_growth(growth, held, carried, machine)
         held = carried
-        stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth)
+        stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth,
+                                  next_passage_top(passages, session.y[cm.OMEGA]))
         backward.stretch(carried, session.t, stretch.duration)
         session.set_speeds(stretch.rotor_speed, stretch.race_speeds)
         for k in range(len(networks)):

@@ -23,6 +23,13 @@ over-rolling. A sliding race stays in full dynamics until it rolls: the reduced 
 race's own speed while it is driven. The first stretch, and the first after a window in a state it does not
 carry, also waits until the journals' motion has stopped changing (:func:`motion_steady`): a stretch leaves
 the motion as it was, so a swing still building up would be frozen in its early form.
+
+A journal that has come to rest in the bottom of its bore is a rolling pendulum, and the unbalance drives it where
+the spin passes once, twice and three times its frequency (:func:`pendulum_passages`). There its swing builds up
+over seconds, lifts the journal off its race and dies out slowly after: a motion a stretch would stop. While such
+a journal swings with :data:`PASSAGE_SWING` of the energy that lifts it off (:func:`pendulum_swinging`) no stretch
+carries it, and in a passage it runs in full dynamics to the passage's end; stretches end at the top of each
+passage, so that the windows see the journal enter it.
 """
 
 from __future__ import annotations
@@ -530,3 +537,96 @@ def integrate_stretch(model: spin.SpinModel, omega: float, race_speeds: list, sp
     return Stretch(duration, float(y[spin.OMEGA]), [float(y[spin.RACE_AT + k]) for k in range(n)], heat,
                    float(y[at.drag_loss]), float(y[at.work_in]),
                    [float(y[at.turn_at + k]) / (2.0 * math.pi) for k in range(n)], int(memory.steps[0]))
+
+
+#: Orders of the rolling pendulum's resonance the unbalance drives: the spin at once, twice and three times the
+#: pendulum's frequency (:func:`pendulum_passages`).
+PASSAGE_ORDERS = 3
+#: A passage spans these fractions of n times the pendulum's small-swing frequency: near the clearance the swing is
+#: large and slower, so the journal answers below n omega_p. Measured in full dynamics to standstill: the paper
+#: rig's journal lifts off its race between 0.79 and 0.91 of 3 omega_p, 0.83 and 0.95 of 2 omega_p and 0.71 and
+#: 0.83 of omega_p; the blower's non-drive end swings up between 0.83 and 0.95 of 2 omega_p.
+PASSAGE_BAND = (0.7, 0.95)
+#: A passage is run in full dynamics when a journal resting in its bore enters it already swinging with this share
+#: of the kinetic energy (mean square speed over g c) that lifts it off the side of its bore
+#: (:func:`pendulum_swinging`).
+PASSAGE_SWING = 0.15
+
+
+def pendulum_frequencies(machine: Machine) -> list[float]:
+    """Per plane, the small-swing angular frequency of its journal resting in the bottom of its bore [rad/s].
+
+    omega_p^2 = k_s / m_k, with k_s the plane's stiffness across its weight (W / c in series with ball set and
+    mount, :func:`auxbearing.analysis.modes.swing_stiffness`; the simple pendulum of length c, omega_p^2 = g / c,
+    on a rigid support) and m_k the rotor mass whose weight the plane carries. 0 where the plane carries no weight
+    (a vertical machine).
+    """
+    from auxbearing.analysis.modes import swing_stiffness
+
+    out = []
+    for k in range(len(machine.planes)):
+        mass = machine.rest_share(k) * machine.rotor.mass
+        stiffness = swing_stiffness(machine, k) if mass > 0.0 else 0.0
+        out.append(math.sqrt(stiffness / mass) if stiffness > 0.0 else 0.0)
+    return out
+
+
+def pendulum_passages(machine: Machine, top_speed: float) -> list[tuple[float, float]]:
+    """The spin speeds at which the unbalance drives a resting journal's rolling pendulum, below ``top_speed``.
+
+    Bands (low, high) in rad/s, merged where they overlap, fastest first: :data:`PASSAGE_BAND` of n omega_p for
+    n = 1 .. :data:`PASSAGE_ORDERS` and every plane's omega_p (:func:`pendulum_frequencies`). In a passage the
+    swing grows over seconds as the spin sweeps through it, and a journal near the clearance lifts off and falls
+    back (measured on the paper rig: 56 % of its over-rolling damage to standstill falls within the passage at
+    3 omega_p, 26 % within 2 omega_p's and 6 % within omega_p's, its load's cube mean 38-47 N there against
+    15-17 N outside). A stretch steps over that growth (the windows after it go on from the motion before it), so
+    a swinging journal's passage is left to full dynamics (:func:`pendulum_swinging`).
+    """
+    bands = sorted((PASSAGE_BAND[0] * n * w, PASSAGE_BAND[1] * n * w) for w in pendulum_frequencies(machine)
+                   if w > 0.0 for n in range(1, PASSAGE_ORDERS + 1) if PASSAGE_BAND[0] * n * w < top_speed)
+    merged: list[tuple[float, float]] = []
+    for low, high in bands:
+        if merged and low <= merged[-1][1]:
+            merged[-1] = (merged[-1][0], max(high, merged[-1][1]))
+        else:
+            merged.append((low, high))
+    return merged[::-1]
+
+
+def resting(windows: list[list[PlaneWindow]]) -> list[bool]:
+    """Per plane, whether its journal rests in its bore over these windows: in contact 99 % of their time or more."""
+    return [float(np.mean([w[k].contact for w in windows])) >= REST_CONTACT for k in range(len(windows[-1]))]
+
+
+#: A journal rests in its bore when in contact this share of the time or more (:func:`resting`).
+REST_CONTACT = 0.99
+
+
+def pendulum_swinging(machine: Machine, windows: list[list[PlaneWindow]], rested: list[bool]) -> bool:
+    """Whether a journal that has come to rest in its bore swings with :data:`PASSAGE_SWING` of a lift-off.
+
+    ``rested``: per plane, whether its journal has come to rest in its bore (:func:`resting`): a pendulum then,
+    loaded by the weight (:func:`pendulum_frequencies`). One that the unbalance has kept lifting off its race since
+    the drop (the blower's drive end down to 4000 rpm, in contact 50-90 % of the time) moves
+    as the rattle makes it, passage or not. The journal's centre runs on an arc of the radial clearance c; it
+    leaves the race once its swing climbs past the bore's side, which takes a speed at the bottom of sqrt(2 g c):
+    a swing of that size has a mean square speed of g c. ``orbit_speed_sq`` over g c is the share of it the
+    swing has; a swing that has begun to lift off still counts (its contact falls below :data:`REST_CONTACT`).
+    """
+    gravity = machine.simulation.gravity
+    for k, (plane, w_p) in enumerate(zip(machine.planes, pendulum_frequencies(machine), strict=True)):
+        if w_p > 0.0 and rested[k]:
+            swing = float(np.mean([w[k].orbit_speed_sq for w in windows]))
+            if swing >= PASSAGE_SWING * gravity * plane.radial_clearance:
+                return True
+    return False
+
+
+def passage_at(passages: list[tuple[float, float]], speed: float) -> tuple[float, float] | None:
+    """The passage (low, high) the speed lies in, or None."""
+    return next(((low, high) for low, high in passages if low <= abs(speed) <= high), None)
+
+
+def next_passage_top(passages: list[tuple[float, float]], speed: float) -> float:
+    """The top of the fastest passage below ``speed`` [rad/s] (0 when none): a stretch ends there."""
+    return max((high for low, high in passages if high < abs(speed)), default=0.0)
