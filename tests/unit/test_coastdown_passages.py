@@ -86,10 +86,20 @@ def test_only_a_journal_that_came_to_rest_and_swings_near_a_lift_off_is_swinging
     rig = read_machine("paper_rig")
     lift_off = rig.simulation.gravity * rig.planes[0].radial_clearance  # mean square speed of a swing to the side
     big, small = _windows(1.0, 1.2 * PASSAGE_SWING * lift_off), _windows(1.0, 0.8 * PASSAGE_SWING * lift_off)
-    assert pendulum_swinging(rig, big, [True])
-    assert not pendulum_swinging(rig, small, [True])
+    calm = small[:3]
+    assert pendulum_swinging(rig, big, calm, [True], None)
+    assert not pendulum_swinging(rig, small, calm, [True], (100.0, 200.0))
     # a journal the unbalance has kept lifting off since the drop is no pendulum, whatever its motion
-    assert not pendulum_swinging(rig, big, [False])
+    assert not pendulum_swinging(rig, big, calm, [False], None)
+
+
+def test_a_resting_journal_that_bounces_in_a_passage_is_not_carried():
+    rig = read_machine("paper_rig")
+    small = _windows(1.0, 0.0)
+    struck = [[small[0][0]._replace(onsets=2, contact=0.95)], *small[:2]]
+    assert pendulum_swinging(rig, small, struck, [True], (100.0, 200.0))
+    assert not pendulum_swinging(rig, small, struck, [True], None)  # outside a passage a rattle may be carried
+    assert not pendulum_swinging(rig, small, struck, [False], (100.0, 200.0))
 
 
 def test_a_journal_rests_when_in_contact_nearly_all_the_time():

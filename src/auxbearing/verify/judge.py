@@ -44,8 +44,8 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     range_name, range_origin = ("no run leaves the model's range or a limit",
                                 "a run outside the model's range is a failed design")
     if bad or not spent:
-        out.append(yes_no(range_name, "every run ends ok",
-                          "all ok" if not bad else "; ".join(f"{c}: {v.replace('_', ' ')}" for c, v in bad.items()), not bad,
+        found = "; ".join(f"{c}: {v.replace('_', ' ')}" for c, v in bad.items())  # the verdicts in words
+        out.append(yes_no(range_name, "every run ends ok", found or "all ok", not bad,
                           range_origin, "; ".join(f"{c}: {reasons[c]}" for c in bad) or
                           "every drop and the coast-down stayed in range"))
     else:  # a budget reached is no finding about the machine: not checked, never a pass or a fail
