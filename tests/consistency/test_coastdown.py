@@ -30,13 +30,15 @@ def both_paths():
 
 @pytest.mark.slow
 def test_reduced_model_agrees_with_full_dynamics(both_paths):
-    """A paper rig with drag stops in about 10 s: full dynamics can go all the way (measured: 9.91 s reduced
-    against 9.90 s full, hottest part within 0.003 K, damage per drop -1.2 %)."""
+    """A paper rig with drag stops in about 10 s: full dynamics can go all the way (measured: 9.852 s reduced
+    against 9.855 s full, hottest part within 0.001 K)."""
     auto, full = both_paths
     assert auto["verdict"] == full["verdict"] == "ok"
-    # the reduced path really carried the run (56 % of it: the first stretch waits about 4 s for the journal's
-    # swing in the bottom of its bore to stop changing, coastdown_phases.motion_steady)
-    assert auto["reduced_model_s"] > 0.5 * auto["simulated_s"]
+    # the reduced path carried a part of the run: 0.76 s of 9.25 s. Braked this hard the rig sweeps through its
+    # three pendulum passages within seconds, and its journal swings with more than 15 % of a lift-off nearly all
+    # the way, which no stretch carries (coastdown_phases.pendulum_swinging); before that rule the reduced path
+    # carried 56 % of the run
+    assert auto["reduced_model_s"] > 0.0
     assert full["reduced_model_s"] == 0.0
     assert auto["coastdown_time_s"] == pytest.approx(full["coastdown_time_s"], rel=0.02)
     hot_auto = auto["planes"][0]["max_temperature_C"]
