@@ -611,10 +611,10 @@ def pendulum_swinging(machine: Machine, recent: list[list[PlaneWindow]], since_s
                       rested: list[bool], passage: tuple[float, float] | None) -> bool:
     """Whether a journal that has come to rest in its bore swings so that no stretch may carry it.
 
-    ``rested``: per plane, whether its journal has come to rest in its bore (:func:`resting`): a pendulum then,
-    loaded by the weight (:func:`pendulum_frequencies`). One that the unbalance has kept lifting off its race since
-    the drop (the blower's drive end down to 4000 rpm, in contact 50-90 % of the time) moves as the rattle makes
-    it, passage or not. Such a journal swings too much to be carried when
+    ``rested``: per plane, whether its journal has come to rest in its bore (:func:`resting`) under the weight (a
+    plane with a pendulum frequency, :func:`pendulum_frequencies`): a pendulum then. One that the unbalance has kept
+    lifting off its race since the drop (the blower's drive end down to 4000 rpm, in contact 50-90 % of the time)
+    moves as the rattle makes it, passage or not. Such a journal swings too much to be carried when
 
     * over ``recent`` (a span of full dynamics, :data:`STEADY_SPAN`) its mean square speed reaches
       :data:`PASSAGE_SWING` of g c: its centre runs on an arc of the radial clearance c and leaves the race once
@@ -627,8 +627,8 @@ def pendulum_swinging(machine: Machine, recent: list[list[PlaneWindow]], since_s
       dynamics', this rule as well +3.4 +- 12.4 % (full dynamics' own scatters by 29 % from phase to phase).
     """
     gravity = machine.simulation.gravity
-    for k, (plane, w_p) in enumerate(zip(machine.planes, pendulum_frequencies(machine), strict=True)):
-        if w_p <= 0.0 or not rested[k]:
+    for k, plane in enumerate(machine.planes):
+        if not rested[k]:
             continue
         if recent and float(np.mean([w[k].orbit_speed_sq for w in recent])) >= (
                 PASSAGE_SWING * gravity * plane.radial_clearance):
