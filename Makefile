@@ -41,7 +41,8 @@ study: $(KERNELS_STAMP)
 # Compile the kernels once after an install or a change to the core, before anything runs them: on a fresh
 # machine every test worker compiled them at the same time (about 3 minutes of the CI's wall time), and the
 # verification's two workers did the same before its first case. Two lines side by side on the two cores: the
-# two-plane drop and coast-down (about 2 minutes from cold) then a levitated start (the right-hand side called
+# two-plane drop and coast-down (about 2 minutes from cold; the paper rig's 0.15 s drop and one coast-down window,
+# which has its own integrator) then a levitated start (the right-hand side called
 # from Python, which its steady orbit linearises), and the small kernels then the three-plane specialisation the
 # open-machine tests use (which took a test worker 75 s). Runs in a scratch folder; the stamp follows the core's
 # sources as the cache folder's name does, so `make verify` after that loads them in seconds.
@@ -50,7 +51,7 @@ kernels: $(KERNELS_STAMP)
 $(KERNELS_STAMP): $(STAMP) $(CORE_SOURCES)
 	@echo "Compiling the kernels: once after an install or a change to src/auxbearing/core, about two minutes"
 	@d=$$(mktemp -d); A=$(CURDIR)/$(BIN)/auxbearing; cd $$d || exit 1; \
-	  { $$A drop --duration '0.1 ms' --quiet >/dev/null && $$A coastdown --machine paper_rig --duration 0.01 --quiet \
+	  { $$A drop --duration '0.1 ms' --quiet >/dev/null && $$A coastdown --machine paper_rig --duration 0.17 --quiet \
 	    >/dev/null && $$A drop --machine blower --scenario surge --duration '0.1 ms' --quiet >/dev/null; } & first=$$!; \
 	  $$A static --radial 1000 >/dev/null && $$A contact >/dev/null && (cd $(CURDIR) && $(BIN)/python -c \
 	    "from auxbearing.analysis.coastdown import run_coastdown; from tests.consistency.test_open_machine import \

@@ -1,19 +1,21 @@
 """What sets the integration step in contact: the stiffest mode of each example machine against the steps taken.
 
-The drops and the coast-downs' full-dynamics windows are integrated explicitly (Dormand & Prince's 5(4) pair,
-:mod:`auxbearing.core.integrate`). An explicit method's step h is bounded by stability: h lambda must stay inside
-the method's stability region for every eigenvalue lambda of the right-hand side's Jacobian, whatever the
-tolerances. This benchmark shows, for each shipped example, where that bound lies and how close the steps come:
+The drops are integrated explicitly with Dormand & Prince's 5(4) pair (:mod:`auxbearing.core.integrate`), the
+coast-downs' full-dynamics windows with the classical fourth-order Runge-Kutta method (:mod:`auxbearing.core.rk4`),
+chosen there because these steps sat on the Dormand-Prince stability bound. An explicit method's step h is
+bounded by stability: h lambda must stay inside the method's stability region for every eigenvalue lambda of the
+right-hand side's Jacobian, whatever the tolerances. This benchmark shows, for each shipped example, where that
+bound lies and how close the steps come:
 
 1. the drop is run to its end (or to its stop) twice, the second run 10 ms shorter; the difference of the
    accepted steps gives the mean step over the drop's last 10 ms, where the journals are in contact;
 2. at the final state the Jacobian of :func:`auxbearing.core.machine.rhs` over the mechanical states (rotor,
    planes, modes, stations; not the energy ledger) is taken by central differences, and its eigenvalues found;
 3. for the stiffest few, the largest stable step along each eigenvalue's direction in the complex plane,
-   r(theta) / |lambda|, where r(theta) is the boundary of |R(z)| <= 1 of the Dormand-Prince pair's propagated
-   (fifth-order) solution, R(z) = 1 + z b^T (I - z A)^-1 1 (Hairer, Norsett & Wanner, Solving Ordinary
-   Differential Equations I, 2nd ed., Sect. IV.2 of vol. II for R; the tableau is Dormand & Prince 1980, as
-   in :mod:`auxbearing.core.integrate`), found by bisection along the ray;
+   r(theta) / |lambda|, where r(theta) is the boundary of |R(z)| <= 1 of the method's propagated solution
+   (Dormand-Prince's fifth-order one for a drop, RK4's for a window), R(z) = 1 + z b^T (I - z A)^-1 1 (Hairer &
+   Wanner, Solving Ordinary Differential Equations II, 2nd ed., Sect. IV.2; the tableaus as in the two modules),
+   found by bisection along the ray;
 4. the states that carry each mode (the eigenvector's largest entries, positions scaled by |lambda| so that a
    displacement and a velocity count alike).
 
@@ -53,6 +55,14 @@ def dopri_tableau() -> tuple[np.ndarray, np.ndarray]:
     b = np.array([ig.B1, 0.0, ig.B3, ig.B4, ig.B5, ig.B6, 0.0])
     a[6, :] = b  # first same as last: the seventh stage is the next step's first
     return a, b
+
+
+def rk4_tableau() -> tuple[np.ndarray, np.ndarray]:
+    """(A, b) of the classical fourth-order method the coast-down's windows use (:mod:`auxbearing.core.rk4`)."""
+    a = np.zeros((4, 4))
+    a[1, 0] = a[2, 1] = 0.5
+    a[3, 2] = 1.0
+    return a, np.array([1.0, 2.0, 2.0, 1.0]) / 6.0
 
 
 def stability_radius(theta: float, a: np.ndarray, b: np.ndarray) -> float:
@@ -120,7 +130,7 @@ def coastdown_window(name: str, at: float):
     from auxbearing.core import drive
 
     seen = []
-    advance = drive.advance
+    advance = drive.advance_window  # the windows' own integrator (auxbearing.core.rk4)
 
     def watched(core, watch, y, t_end, settings, memory, grid):
         t0, steps = float(memory.t[0]), int(memory.steps[0])
@@ -128,11 +138,11 @@ def coastdown_window(name: str, at: float):
         seen.append((core, y.copy(), float(memory.t[0]), float(memory.t[0]) - t0, int(memory.steps[0]) - steps))
         return status
 
-    drive.advance = watched
+    drive.advance_window = watched
     try:
         run = coastdown.run_coastdown(read_machine(name), until_stop=False, duration=at)
     finally:
-        drive.advance = advance
+        drive.advance_window = advance
     core, y, t, span, steps = seen[-1]
     layout = coastdown.cm.layout_of(core)
     title = (f"{name}, coast-down window ending at t = {t:.2f} s ({run.summary['verdict']}): mean step "
@@ -176,15 +186,18 @@ def main() -> None:
     parser.add_argument("--modes", type=int, default=3, help="stiffest modes shown per machine")
     args = parser.parse_args()
     a, b = dopri_tableau()
-    print("Dormand-Prince 5(4), propagated solution: stability boundary on the negative real axis "
-          f"{stability_radius(np.pi, a, b):.3f}, on the imaginary axis {stability_radius(np.pi / 2, a, b):.3f}")
+    window_a, window_b = rk4_tableau()
+    for title, (ta, tb) in (("Dormand-Prince 5(4), propagated solution (drops)", (a, b)),
+                            ("classical RK4 (coast-down windows)", (window_a, window_b))):
+        print(f"{title}: stability boundary on the negative real axis {stability_radius(np.pi, ta, tb):.3f}, "
+              f"on the imaginary axis {stability_radius(np.pi / 2, ta, tb):.3f}")
     one, five, fifteen = os.getloadavg()
     print(f"load average {one:.2f} / {five:.2f} / {fifteen:.2f} on {os.cpu_count()} cores (timing-free benchmark)")
     for name in args.machine or EXAMPLES:
         analyse(drop_end(name), args.modes, a, b)
     for name, at in COASTDOWNS:
         if not args.machine or name in args.machine:
-            analyse(coastdown_window(name, at), args.modes, a, b)
+            analyse(coastdown_window(name, at), args.modes, window_a, window_b)
 
 
 if __name__ == "__main__":

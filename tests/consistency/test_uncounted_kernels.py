@@ -5,7 +5,8 @@ call of the compiled driver is wrapped here and numba's own allocation statistic
 set before numba is imported, hence the fresh process) are read around it: whatever the driver allocates
 it frees before it returns. Run on drops that take every branch of the right-hand side and the observer:
 one plane and two, compliant mounts and an axial face, the magnetic bearings' stations, a matched pair of
-rows, an elastic rotor, a stop on a range limit with its peak refinements, and a coast-down's windows.
+rows, an elastic rotor, a stop on a range limit with its peak refinements, and a coast-down's windows (their own
+driver, ``drive.advance_window``).
 """
 
 import json
@@ -24,18 +25,20 @@ from auxbearing.core import drive
 from tests.consistency.test_coastdown_reduced import _machine
 
 calls = []
-original = drive.advance
 
 
-def counted(*args):
-    before = rtsys.get_allocation_stats()
-    status = original(*args)
-    after = rtsys.get_allocation_stats()
-    calls.append(((after.alloc - before.alloc) - (after.free - before.free), after.alloc - before.alloc))
-    return status
+def counting(original):
+    def counted(*args):
+        before = rtsys.get_allocation_stats()
+        status = original(*args)
+        after = rtsys.get_allocation_stats()
+        calls.append(((after.alloc - before.alloc) - (after.free - before.free), after.alloc - before.alloc))
+        return status
+    return counted
 
 
-drive.advance = counted
+drive.advance = counting(drive.advance)
+drive.advance_window = counting(drive.advance_window)  # the coast-down's windows (auxbearing.core.rk4)
 for case in ("paper_rig", "blower", "blower:7208 DB light", "compressor", "heavy_fast_rotor"):
     drop.run_machine(_machine(case), "20 ms")
 run_coastdown(_machine("paper_rig"), until_stop=False, duration="0.3 s")

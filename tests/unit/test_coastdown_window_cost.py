@@ -14,15 +14,17 @@ from auxbearing.machine.files import read_machine
 
 def test_windows_make_no_peak_search_and_the_drop_still_refines(monkeypatch):
     calls = []
-    advance = drive.advance
 
-    def recorded(m, w, y, t_end, settings, memory, grid):
-        before = int(w.searches[0])
-        status = advance(m, w, y, t_end, settings, memory, grid)
-        calls.append((w.track_peaks[0] == 0.0, int(w.searches[0]) - before))
-        return status
+    def recording(advance):
+        def recorded(m, w, y, t_end, settings, memory, grid):
+            before = int(w.searches[0])
+            status = advance(m, w, y, t_end, settings, memory, grid)
+            calls.append((w.track_peaks[0] == 0.0, int(w.searches[0]) - before))
+            return status
+        return recorded
 
-    monkeypatch.setattr(drive, "advance", recorded)
+    monkeypatch.setattr(drive, "advance", recording(drive.advance))
+    monkeypatch.setattr(drive, "advance_window", recording(drive.advance_window))
     run = run_coastdown(read_machine("paper_rig").for_batch(), until_stop=False, duration=0.3)
     windows = [searches for is_window, searches in calls if is_window]
     drop = [searches for is_window, searches in calls if not is_window]

@@ -310,7 +310,7 @@ class _Session:
             watch.in_contact[k] = 1.0 if _penetration(self.y, self.core, k) > 0.0 else 0.0
         watch.window_end[0] = self.t + self.window
         settings = self.model.settings._replace(step_budget=10**9)
-        status = drive.advance(self.core, watch, self.y, self.t + length, settings, self.memory,
+        status = drive.advance_window(self.core, watch, self.y, self.t + length, settings, self.memory,
                                np.empty((0, self.y.size)))
         self.t = float(self.memory.t[0])
         return status, watch, ledger

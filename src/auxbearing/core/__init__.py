@@ -55,6 +55,7 @@ try:
         integrate,
         machine,
         probes,
+        rk4,
         spin,
         statics,
         thermal,

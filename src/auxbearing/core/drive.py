@@ -10,6 +10,7 @@ from numba import njit
 
 from auxbearing.core import machine, spin, watch
 from auxbearing.core.integrate import dopri5
+from auxbearing.core.rk4 import rk4
 
 
 @njit(cache=True)
@@ -19,6 +20,15 @@ def advance(m, w, y, t_end, settings, memory, grid):
     Arguments as :func:`auxbearing.core.integrate.dopri5`; returns its status.
     """
     return dopri5(machine.rhs, watch.observe, m, w, y, t_end, settings, memory, grid)
+
+
+@njit(cache=True)
+def advance_window(m, w, y, t_end, settings, memory, grid):
+    """The classical RK4 (:func:`auxbearing.core.rk4.rk4`) on the machine with its observer, as :func:`advance`.
+
+    For the coast-down's full-dynamics windows, whose steps sit on the stability bound (:mod:`auxbearing.core.rk4`).
+    """
+    return rk4(machine.rhs, watch.observe, m, w, y, t_end, settings, memory, grid)
 
 
 @njit(cache=True)
