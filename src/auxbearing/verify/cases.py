@@ -150,7 +150,7 @@ def _coastdown_task(machine: Machine, quick: bool, lean: bool = False) -> Coastd
     return run
 
 
-def submit_cases(cases: Cases, executor, lean: bool = False) -> dict:
+def submit_cases(cases: Cases, executor, lean: bool = False, coastdown: bool = True) -> dict:
     """Hand the drops and the coast-down of a planned design to ``executor`` (``submit(fn, *args)``): futures.
 
     The coast-down starts at once, beside the drops. It integrates its own drop at the maximum speed first, the
@@ -161,18 +161,34 @@ def submit_cases(cases: Cases, executor, lean: bool = False) -> dict:
     ``lean``: the runs come back with their summaries and the coast-down's history only, no drop time series
     (a candidate's or the recommended geometry's cases, which are judged and tabled but not drawn or saved:
     the blower's seven drops would otherwise bring 250 MB per design into this process).
+
+    ``coastdown=False``: the drops only, the one at the maximum speed as well; :func:`submit_coastdown` adds the
+    coast-down later, if it is still wanted.
     """
     futures = {case: executor.submit(run_machine, machine, None, None, lean) for case, machine in cases.machines.items()
-               if case != MAX_SPEED or _coastdown_horizon(cases.machine, cases.quick) < machine.simulation.duration}
-    futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick, lean)
+               if case != MAX_SPEED or not coastdown
+               or _coastdown_horizon(cases.machine, cases.quick) < machine.simulation.duration}
+    if coastdown:
+        submit_coastdown(cases, executor, futures, lean)
     return futures
 
 
+def submit_coastdown(cases: Cases, executor, futures: dict, lean: bool = False) -> None:
+    """Add the coast-down of a planned design to ``futures`` (:func:`submit_cases`)."""
+    futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick, lean)
+
+
 def collect_cases(cases: Cases, futures: dict) -> Cases:
-    """The runs of :func:`submit_cases` into ``cases``, with the notes they call for."""
-    coastdown = futures["coast-down"].result()
+    """The runs of :func:`submit_cases` into ``cases``, with the notes they call for.
+
+    Without a coast-down among them, the drops only: ``cases.coastdown`` stays None until they are collected
+    again with one.
+    """
+    coastdown = futures["coast-down"].result() if "coast-down" in futures else None
     for case in cases.machines:
         cases.drops[case] = futures[case].result() if case in futures else coastdown.drop
+    if coastdown is None:
+        return cases
     first = cases.drops[MAX_SPEED].summary
     if first["verdict"] != "ok":
         cases.notes.append("the coast-down was not run: the drop at the maximum speed it starts from already left "

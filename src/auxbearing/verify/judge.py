@@ -90,7 +90,9 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
     out.append(_seal(cases, criteria))
     out += _scenario_criteria(cases, criteria)
     if cases.partial_coastdown:
-        out = [_unsettled(c, cases.partial_coastdown) if c.name in PARTIAL_COASTDOWN_CRITERIA else c for c in out]
+        # a coast-down left out (its design already failing) is no run in range either
+        unsettled = PARTIAL_COASTDOWN_CRITERIA + ((range_name,) if cases.coastdown is None else ())
+        out = [_unsettled(c, cases.partial_coastdown) if c.name in unsettled else c for c in out]
     out = drops_cut_short(cases, out)
     if cases.campaign is not None:
         out.append(_whirl_probability(cases.campaign, criteria))
