@@ -19,22 +19,11 @@ from numba import njit
 from auxbearing.core import cache_folder
 from auxbearing.core import integrate as ig
 from auxbearing.core import rk4 as rk
+from tests.unit.test_integrate import nothing, oscillator, prothero_robinson  # noqa: F401 (named as here.*)
 
 _numba_cache_dir = numba.config.CACHE_DIR
 numba.config.CACHE_DIR = cache_folder()  # as tests/unit/test_integrate.py: cached with the core's kernels
 here = sys.modules[__name__]
-
-
-@njit(cache=True)
-def oscillator(t, y, model, out):
-    out[0] = y[1]
-    out[1] = -y[0]
-
-
-@njit(cache=True)
-def prothero_robinson(t, y, model, out):
-    lam = model[0]
-    out[0] = lam * (y[0] - math.sin(t)) + math.cos(t)
 
 
 @njit(cache=True)
@@ -45,11 +34,6 @@ def stiff_oscillation(t, y, model, out):
     out[1] = -y[0]
     out[2] = y[3]
     out[3] = -w * w * (y[2] - y[0]) - 2.0 * 0.02 * w * y[3]
-
-
-@njit(cache=True)
-def nothing(t, h, y0, y1, coeff, model, obs):
-    return 0
 
 
 @njit(cache=True)

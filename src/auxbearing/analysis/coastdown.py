@@ -28,8 +28,9 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   less load than full dynamics at the same speed, and 150 ms of settling brought every non-chaotic example
   within 1 %, at 2.5 times the cost). Each window's over-rolling load is the mean load of its varying bearing
   load, the cube mean (:mod:`auxbearing.analysis.coastdown_life`); a stretch's revolutions are charged at the
-  load measured before it and the load the windows after it settle on (the next stretch's), by the trapezoidal
-  rule on the damage per revolution (:class:`auxbearing.analysis.coastdown_phases.StretchEnd`).
+  load measured before it and the load the windows after it settle on (the next stretch's), the load taken
+  linear over its revolutions and its cube averaged exactly (:class:`auxbearing.analysis.coastdown_phases.StretchEnd`,
+  :func:`~auxbearing.analysis.coastdown_phases.stretch_load`).
 
 Pendulum passages. A journal resting in the bottom of its bore is a rolling pendulum: the weight W on a plane, on an
 arc of the radial clearance c, restores a sideways shift with a stiffness W / c, so its small swings go at

@@ -349,13 +349,19 @@ def mean_equivalent_load(loads) -> float:
 def stretch_load(before: float, after: float) -> float:
     """Equivalent load of a stretch from the loads of the windows before it and just after it [N].
 
-    Palmgren-Miner's sum over ISO 281:2007 Eq. (1) charges a revolution at P^3; taken linear in the
-    revolutions across the stretch, its mean is the trapezoidal rule's (P_b^3 + P_a^3) / 2. Charging the
-    whole stretch at the load measured before it (the rectangle rule) biases the damage wherever the load
-    follows the falling speed: on the vertical machine the windows just before each stretch carried 0.6-0.9 %
-    more load than full dynamics' mean over the stretch, 2-3 % in damage.
+    Palmgren-Miner's sum over ISO 281:2007 Eq. (1) charges a revolution at P^3. The load is taken linear in the
+    revolutions across the stretch and its cube averaged exactly: mean P^3 = (P_b + P_a)(P_b^2 + P_a^2) / 4.
+    That is exact for a load that goes as the square of the speed (a journal whirling round its bore, or lifted by
+    its unbalance) when the rotor slows at a steady rate, since the revolutions still to run then go as the square
+    of the speed too. Taking the cube itself linear (the trapezoidal rule on P^3, as before) overstates such a
+    stretch's damage by 2.2 % over a 10 % speed step; charging the whole stretch at the load before it (the
+    rectangle rule) biased the damage wherever the load follows the falling speed (the vertical machine's windows
+    before each stretch carried 0.6-0.9 % more load than full dynamics' mean over it, 2-3 % in damage). The loads
+    of the shipped examples' stretches change little across one: against the trapezoidal rule, their damages per
+    drop to standstill moved by 0.23 points at most (the 6208's drive end, -2.13 to -2.36 % of full dynamics').
     """
-    return mean_equivalent_load((before, after))  # two equal shares of the revolutions: the same mean
+    a, b = abs(before), abs(after)
+    return ((a + b) * (a * a + b * b) / 4.0) ** (1.0 / 3.0)
 
 
 class StretchEnd:

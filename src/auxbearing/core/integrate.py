@@ -267,6 +267,22 @@ def dense_max(f, coeff, model, tmp, arg):
     return best, f(tmp, model, arg)
 
 
+@njit(cache=True)
+def output_rows(coeff, t, h, grid, k_next, dt_out, tmp):
+    """Fill the output grid's rows that fall inside the accepted step from t to t + h; the next row to fill.
+
+    Row k holds the state at k * ``dt_out``, read off the step's dense output (``coeff``, :func:`dense_eval`);
+    ``tmp`` is a work array of the state's size.
+    """
+    while k_next < grid.shape[0] and k_next * dt_out <= t + h + 1e-9 * dt_out:
+        theta = (k_next * dt_out - t) / h
+        dense_eval(coeff, min(1.0, max(0.0, theta)), tmp)
+        for i in range(tmp.size):
+            grid[k_next, i] = tmp[i]
+        k_next += 1
+    return k_next
+
+
 @njit
 def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     """Advance ``y`` from ``memory.t`` towards ``t_end`` with DOPRI5 and PI step control.
@@ -319,7 +335,6 @@ def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     if memory.evaluations[0] == 0:
         rhs(t, y, model, k1)
         memory.evaluations[0] += 1
-    n_out = grid.shape[0]
     dt_out = settings.output_step
     k_next = memory.next_output[0]
     end_slack = 1e-13 * max(1.0, abs(t_end))  # a remainder below this is round-off, not a step
@@ -372,12 +387,7 @@ def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
             memory.rejected[0] += 1
             continue
         dense_coefficients(y, y1, h, k1, k3, k4, k5, k6, k7, coeff)
-        while k_next < n_out and k_next * dt_out <= t + h + 1e-9 * dt_out:
-            theta = (k_next * dt_out - t) / h
-            dense_eval(coeff, min(1.0, max(0.0, theta)), tmp)
-            for i in range(n):
-                grid[k_next, i] = tmp[i]
-            k_next += 1
+        k_next = output_rows(coeff, t, h, grid, k_next, dt_out, tmp)
         code = observe(t, h, y, y1, coeff, model, obs)
         factor = next_step_factor(e_norm, memory.err_prev[0], memory.rejected_last[0] > 0.5)
         memory.err_prev[0] = max(e_norm, 1e-4)
