@@ -60,11 +60,17 @@ full dynamics until the motion was steady caught it (blower +0.43 / -0.13 % of f
 for 5.3 times the windows (3163 against 601, 42 s of computing against 9 s).
 
 To standstill (or to a run-away) against full dynamics at unbalance phase 0, every example and candidate but the
-chaotic paper rigs (above): standstill times within 0.18 % and run-aways within 0.23 % of their time, peak
-temperatures within 0.17 K, closest internal clearances within 0.09 um, damage per drop blower +2.60 / -0.37 %,
-7208 DB pair -0.83 / -2.85 %, QJ208 hybrid +2.97 / -0.21 %, 6208 -1.74 / +1.40 %, compressor +0.43 / +1.21 %,
-vertical rotor -0.32 / -0.19 % (and the 7208, no candidate, -2.37 / +6.42 %: its non-drive end in steady backward
-rolling whirl). Over three unbalance phases (0, 1e-9, 2e-9 rad) the blower's damage per drop is +1.51 +- 0.59 /
+chaotic paper rigs (above), with the windows on the classical RK4 (:mod:`auxbearing.core.rk4`): standstill times
+within 0.15 % and run-aways within 0.6 % of their time, peak temperatures within 0.10 K, closest internal
+clearances within 0.13 um, damage per drop blower +3.21 / -0.29 %, 7208 DB pair -1.87 / -3.86 %, QJ208 hybrid
++1.36 / +1.83 %, 6208 -2.36 / +2.23 %, compressor +0.42 / +1.19 %, vertical rotor -0.48 / -1.01 % (and the 7208,
+no candidate, -5.34 / +2.76 %; its non-drive end in steady backward rolling whirl). The blower's drive end owes
+its excess to 3000-6000 rpm, where the unbalance stops lifting the journal: the few windows after the stretches
+there carry -1 to +12 % of full dynamics' mean load over the same 500 rpm (the motion a stretch resumes still
+lifts), elsewhere within 1.4 % (2000-3000 rpm +2.8 %). With the windows on Dormand-Prince, as measured before:
+blower +2.60 / -0.37 %, 7208 DB pair -0.83 / -2.85 %, hybrid +2.97 / -0.21 %, 6208 -1.74 / +1.40 %, the 7208
+-2.37 / +6.42 %: single runs of chaotic rattles, which move by that much with the arithmetic. Over three
+unbalance phases (0, 1e-9, 2e-9 rad), on Dormand-Prince, the blower's damage per drop was +1.51 +- 0.59 /
 -0.17 +- 0.14 %, the hybrid's +1.28 +- 0.89 / +0.30 +- 0.24 %, standstill -0.17 and -0.16 %. The reduced run
 cannot leave a motion that is unstable but grows over seconds: the 7208
 DB pair's small rattle turns unstable between 17 000 and 15 000 rpm and full dynamics switches to a larger one
