@@ -18,8 +18,8 @@ side by side. The criterion with the smallest margin at the optimum binds. Geome
 agree (within :data:`TIE_MARGIN`) are told apart by their next smallest, and so on (:func:`better`): where one
 criterion depends on one variable alone (the clearance against the air gap), the others are not left to the
 order in which the grid was run. A variable at a bound of the box is said. A point that fails a criterion is
-never recommended; the recommended design is then verified in full (:func:`auxbearing.verify.run.verify`) and
-its verdict shown.
+never recommended; the recommended design is then verified in full (:func:`auxbearing.verify.run.verify`; its
+coast-down last, and only when its drops and campaign fail nothing) and its verdict shown.
 """
 
 from __future__ import annotations
