@@ -283,6 +283,50 @@ def output_rows(coeff, t, h, grid, k_next, dt_out, tmp):
     return k_next
 
 
+@njit(cache=True, inline="always")
+def attempt(t, h, t_end, attempts, settings):
+    """What a stepping loop does next at ``t`` with the step ``h`` to try: (status, t, h, h_proposed, last).
+
+    ``status`` -1: try a step of ``h``, capped at ``settings.max_step`` and shortened to land on ``t_end`` when it
+    would pass it (``last``; ``h_proposed`` is the step before that). Otherwise the loop ends with ``status``:
+    :data:`FINISHED` with ``t`` set to ``t_end`` when only round-off is left, :data:`PAUSED` once the call's step
+    budget is used, :data:`STEP_UNDERFLOW` for a step below ``settings.min_step`` or not finite.
+    """
+    end_slack = 1e-13 * max(1.0, abs(t_end))  # a remainder below this is round-off, not a step
+    if t_end - t <= end_slack:
+        return FINISHED, t_end, h, h, True
+    if attempts >= settings.step_budget:
+        return PAUSED, t, h, h, False
+    if h < settings.min_step * max(1.0, abs(t_end)) or not math.isfinite(h):
+        return STEP_UNDERFLOW, t, h, h, False
+    h = min(h, settings.max_step)
+    h_proposed = h
+    last = t + h >= t_end - end_slack
+    if last:
+        h = t_end - t
+    return -1, t, h, h_proposed, last
+
+
+@njit(cache=True, inline="always")
+def remember(memory, accepted, e_norm):
+    """Book an attempted step in ``memory``: the PI controller's memory and the step counts."""
+    if accepted:
+        memory.err_prev[0] = max(e_norm, 1e-4)
+        memory.rejected_last[0] = 0.0
+        memory.steps[0] += 1
+    else:
+        memory.rejected_last[0] = 1.0
+        memory.rejected[0] += 1
+
+
+@njit(cache=True, inline="always")
+def leave(memory, t, h, k_next):
+    """Keep where a stepping loop stopped in ``memory``, for the next call to go on from."""
+    memory.t[0] = t
+    memory.h[0] = h
+    memory.next_output[0] = k_next
+
+
 @njit
 def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     """Advance ``y`` from ``memory.t`` towards ``t_end`` with DOPRI5 and PI step control.
@@ -337,25 +381,14 @@ def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
         memory.evaluations[0] += 1
     dt_out = settings.output_step
     k_next = memory.next_output[0]
-    end_slack = 1e-13 * max(1.0, abs(t_end))  # a remainder below this is round-off, not a step
     attempts = 0
     status = FINISHED
     while t < t_end:
-        if t_end - t <= end_slack:
-            t = t_end
-            break
-        if attempts >= settings.step_budget:
-            status = PAUSED
-            break
-        if h < settings.min_step * max(1.0, abs(t_end)) or not math.isfinite(h):
-            status = STEP_UNDERFLOW
+        ending, t, h, h_proposed, last = attempt(t, h, t_end, attempts, settings)
+        if ending >= 0:
+            status = ending
             break
         attempts += 1
-        h = min(h, settings.max_step)
-        h_proposed = h
-        last = t + h >= t_end - end_slack
-        if last:
-            h = t_end - t
         for i in range(n):
             yt[i] = y[i] + h * A21 * k1[i]
         rhs(t + C2 * h, yt, model, k2)
@@ -383,16 +416,13 @@ def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
                 h *= MIN_FACTOR
             else:
                 h *= next_step_factor(e_norm, memory.err_prev[0], True)
-            memory.rejected_last[0] = 1.0
-            memory.rejected[0] += 1
+            remember(memory, False, e_norm)
             continue
         dense_coefficients(y, y1, h, k1, k3, k4, k5, k6, k7, coeff)
         k_next = output_rows(coeff, t, h, grid, k_next, dt_out, tmp)
         code = observe(t, h, y, y1, coeff, model, obs)
         factor = next_step_factor(e_norm, memory.err_prev[0], memory.rejected_last[0] > 0.5)
-        memory.err_prev[0] = max(e_norm, 1e-4)
-        memory.rejected_last[0] = 0.0
-        memory.steps[0] += 1
+        remember(memory, True, e_norm)
         t = t_end if last else t + h
         for i in range(n):
             y[i] = y1[i]
@@ -402,7 +432,5 @@ def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
         if code != 0:
             status = STOPPED
             break
-    memory.t[0] = t
-    memory.h[0] = h
-    memory.next_output[0] = k_next
+    leave(memory, t, h, k_next)
     return status

@@ -52,11 +52,12 @@ from auxbearing.core.integrate import (
     FINISHED,
     MAX_FACTOR,
     MIN_FACTOR,
-    PAUSED,
-    STEP_UNDERFLOW,
     STOPPED,
+    attempt,
     error_norm,
+    leave,
     output_rows,
+    remember,
 )
 
 #: Order of the error estimate plus one (the exponent's k of the step control).
@@ -143,25 +144,14 @@ def rk4(rhs, observe, model, obs, y, t_end, settings, memory, grid):
         memory.evaluations[0] += 1
     dt_out = settings.output_step
     k_next = memory.next_output[0]
-    end_slack = 1e-13 * max(1.0, abs(t_end))
     attempts = 0
     status = FINISHED
     while t < t_end:
-        if t_end - t <= end_slack:
-            t = t_end
-            break
-        if attempts >= settings.step_budget:
-            status = PAUSED
-            break
-        if h < settings.min_step * max(1.0, abs(t_end)) or not math.isfinite(h):
-            status = STEP_UNDERFLOW
+        ending, t, h, h_proposed, last = attempt(t, h, t_end, attempts, settings)
+        if ending >= 0:
+            status = ending
             break
         attempts += 1
-        h = min(h, settings.max_step)
-        h_proposed = h
-        last = t + h >= t_end - end_slack
-        if last:
-            h = t_end - t
         half = 0.5 * h
         for i in range(n):
             yt[i] = y[i] + half * k1[i]
@@ -185,16 +175,13 @@ def rk4(rhs, observe, model, obs, y, t_end, settings, memory, grid):
                 h *= MIN_FACTOR
             else:
                 h *= step_factor(e_norm, memory.err_prev[0], True)
-            memory.rejected_last[0] = 1.0
-            memory.rejected[0] += 1
+            remember(memory, False, e_norm)
             continue
         hermite_coefficients(y, y1, h, k1, k5, coeff)
         k_next = output_rows(coeff, t, h, grid, k_next, dt_out, tmp)
         code = observe(t, h, y, y1, coeff, model, obs)
         factor = step_factor(e_norm, memory.err_prev[0], memory.rejected_last[0] > 0.5)
-        memory.err_prev[0] = max(e_norm, 1e-4)
-        memory.rejected_last[0] = 0.0
-        memory.steps[0] += 1
+        remember(memory, True, e_norm)
         t = t_end if last else t + h
         for i in range(n):
             y[i] = y1[i]
@@ -203,7 +190,5 @@ def rk4(rhs, observe, model, obs, y, t_end, settings, memory, grid):
         if code != 0:
             status = STOPPED
             break
-    memory.t[0] = t
-    memory.h[0] = h
-    memory.next_output[0] = k_next
+    leave(memory, t, h, k_next)
     return status
