@@ -327,6 +327,46 @@ def leave(memory, t, h, k_next):
     memory.next_output[0] = k_next
 
 
+@njit(inline="always")
+def begin(rhs, t, y, model, memory):
+    """The first stage's dy/dt at ``t`` into ``memory.derivative``, unless the call before left it there."""
+    if memory.evaluations[0] == 0:
+        rhs(t, y, model, memory.derivative)
+        memory.evaluations[0] += 1
+
+
+@njit(inline="always")
+def rejected(step_factor, h, e_norm, memory):
+    """The step to try after a rejected one of ``h`` (``step_factor``: the method's controller); booked."""
+    if not math.isfinite(e_norm):
+        h *= MIN_FACTOR
+    else:
+        h *= step_factor(e_norm, memory.err_prev[0], True)
+    remember(memory, False, e_norm)
+    return h
+
+
+@njit(inline="always")
+def accepted(observe, model, obs, t, h, h_proposed, last, t_end, y, y1, k1, k_end, coeff, grid, k_next, dt_out,
+             tmp, memory, e_norm, factor):
+    """Take an accepted step from t to t + h: (t, h, next grid row, observer code) to go on with.
+
+    Fills the grid rows the step passes (``coeff``: its dense output), asks the observer, books the step,
+    moves ``y`` to ``y1`` and the first stage to the step's last one (``k_end``, first same as last), and
+    proposes the next step as ``factor`` times this one.
+    """
+    k_next = output_rows(coeff, t, h, grid, k_next, dt_out, tmp)
+    code = observe(t, h, y, y1, coeff, model, obs)
+    remember(memory, True, e_norm)
+    t = t_end if last else t + h
+    for i in range(y.size):
+        y[i] = y1[i]
+        k1[i] = k_end[i]
+    # a step shortened to land on t_end says nothing about the step size the solution allows
+    h = max(h * factor, h_proposed) if last else h * factor
+    return t, h, k_next, code
+
+
 @njit
 def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     """Advance ``y`` from ``memory.t`` towards ``t_end`` with DOPRI5 and PI step control.
@@ -376,9 +416,7 @@ def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     coeff = np.empty((5, n))
     t = memory.t[0]
     h = memory.h[0]
-    if memory.evaluations[0] == 0:
-        rhs(t, y, model, k1)
-        memory.evaluations[0] += 1
+    begin(rhs, t, y, model, memory)
     dt_out = settings.output_step
     k_next = memory.next_output[0]
     attempts = 0
@@ -412,23 +450,12 @@ def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
             err[i] = h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
         e_norm = error_norm(err, y, y1, settings.rtol, settings.atol)
         if not (e_norm <= 1.0):
-            if not math.isfinite(e_norm):
-                h *= MIN_FACTOR
-            else:
-                h *= next_step_factor(e_norm, memory.err_prev[0], True)
-            remember(memory, False, e_norm)
+            h = rejected(next_step_factor, h, e_norm, memory)
             continue
         dense_coefficients(y, y1, h, k1, k3, k4, k5, k6, k7, coeff)
-        k_next = output_rows(coeff, t, h, grid, k_next, dt_out, tmp)
-        code = observe(t, h, y, y1, coeff, model, obs)
         factor = next_step_factor(e_norm, memory.err_prev[0], memory.rejected_last[0] > 0.5)
-        remember(memory, True, e_norm)
-        t = t_end if last else t + h
-        for i in range(n):
-            y[i] = y1[i]
-            k1[i] = k7[i]
-        # a step shortened to land on t_end says nothing about the step size the solution allows
-        h = max(h * factor, h_proposed) if last else h * factor
+        t, h, k_next, code = accepted(observe, model, obs, t, h, h_proposed, last, t_end, y, y1, k1, k7, coeff, grid,
+                                      k_next, dt_out, tmp, memory, e_norm, factor)
         if code != 0:
             status = STOPPED
             break

@@ -43,8 +43,6 @@ right-hand side and observer), so a run can change method between two calls.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import njit
 
@@ -53,11 +51,12 @@ from auxbearing.core.integrate import (
     MAX_FACTOR,
     MIN_FACTOR,
     STOPPED,
+    accepted,
     attempt,
+    begin,
     error_norm,
     leave,
-    output_rows,
-    remember,
+    rejected,
 )
 
 #: Order of the error estimate plus one (the exponent's k of the step control).
@@ -139,9 +138,7 @@ def rk4(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     coeff = np.empty((5, n))
     t = memory.t[0]
     h = memory.h[0]
-    if memory.evaluations[0] == 0:
-        rhs(t, y, model, k1)
-        memory.evaluations[0] += 1
+    begin(rhs, t, y, model, memory)
     dt_out = settings.output_step
     k_next = memory.next_output[0]
     attempts = 0
@@ -171,22 +168,12 @@ def rk4(rhs, observe, model, obs, y, t_end, settings, memory, grid):
             err[i] = sixth * (k4[i] - k5[i])
         e_norm = error_norm(err, y, y1, settings.rtol, settings.atol)
         if not (e_norm <= 1.0):
-            if not math.isfinite(e_norm):
-                h *= MIN_FACTOR
-            else:
-                h *= step_factor(e_norm, memory.err_prev[0], True)
-            remember(memory, False, e_norm)
+            h = rejected(step_factor, h, e_norm, memory)
             continue
         hermite_coefficients(y, y1, h, k1, k5, coeff)
-        k_next = output_rows(coeff, t, h, grid, k_next, dt_out, tmp)
-        code = observe(t, h, y, y1, coeff, model, obs)
         factor = step_factor(e_norm, memory.err_prev[0], memory.rejected_last[0] > 0.5)
-        remember(memory, True, e_norm)
-        t = t_end if last else t + h
-        for i in range(n):
-            y[i] = y1[i]
-            k1[i] = k5[i]
-        h = max(h * factor, h_proposed) if last else h * factor
+        t, h, k_next, code = accepted(observe, model, obs, t, h, h_proposed, last, t_end, y, y1, k1, k5, coeff, grid,
+                                      k_next, dt_out, tmp, memory, e_norm, factor)
         if code != 0:
             status = STOPPED
             break
