@@ -71,7 +71,10 @@ lifts), elsewhere within 1.4 % (2000-3000 rpm +2.8 %). With the windows on Dorma
 blower +2.60 / -0.37 %, 7208 DB pair -0.83 / -2.85 %, hybrid +2.97 / -0.21 %, 6208 -1.74 / +1.40 %, the 7208
 -2.37 / +6.42 %: single runs of chaotic rattles, which move by that much with the arithmetic. Over three
 unbalance phases (0, 1e-9, 2e-9 rad), on Dormand-Prince, the blower's damage per drop was +1.51 +- 0.59 /
--0.17 +- 0.14 %, the hybrid's +1.28 +- 0.89 / +0.30 +- 0.24 %, standstill -0.17 and -0.16 %. The reduced run
+-0.17 +- 0.14 %, the hybrid's +1.28 +- 0.89 / +0.30 +- 0.24 %, standstill -0.17 and -0.16 %. Over four phases
+(0 to 3e-9 rad) on RK4: blower +1.53 +- 0.57 / -0.30 +- 0.08 %, 7208 DB pair -0.90 +- 0.33 / -2.96 +- 0.43 %,
+hybrid +2.13 +- 0.39 / +1.04 +- 0.20 %, 6208 -1.37 +- 0.49 / +1.57 +- 0.38 % (its run-away in every run), standstill
+times -0.12 to -0.16 %, peaks within 0.04 K. The reduced run
 cannot leave a motion that is unstable but grows over seconds: the 7208
 DB pair's small rattle turns unstable between 17 000 and 15 000 rpm and full dynamics switches to a larger one
 (2-4 % more load); the windows, 30 ms of motion per stretch, stay on the small one, and 50 or 150 ms of settling
