@@ -325,25 +325,66 @@ class _Session:
         self.t = float(self.memory.t[0])
         return status, watch, ledger
 
-    def set_speeds(self, omega: float, race_speeds) -> None:
+    def set_speeds(self, omega: float, race_speeds, driven=None) -> None:
         """Set the rotor's and the races' spin speeds (the end of a reduced stretch).
 
-        The state holds the geometric axis, whose velocity is the mass centre's less the unbalance's turning
-        offset: G' = O' + e u' Omega and theta_p' = theta_g' + chi w' Omega (:mod:`auxbearing.core.machine`).
-        Over the stretch the spin slowed while the mass centre's momentum and the principal axis' angular
-        momentum carried on, so the axis' velocities take the change of the unbalance terms (left as they were,
-        the mass centre took a kick of e dOmega at every handover).
+        ``driven``: per plane, whether its journal moves as the unbalance drives it (lifted or rattling; not yet
+        come to rest in its bore, :func:`auxbearing.analysis.coastdown_phases.resting`). Such a motion is locked
+        to the spin: at the speed Omega_1 it runs the same path as at Omega_0, Omega_1 / Omega_0 as fast (a
+        journal pressed round its bore by its unbalance whirls at the spin speed; its orbit is the clearance
+        circle at either speed). So that journal's lateral velocity, its race's and its ring's are scaled by
+        Omega_1 / Omega_0; carried unscaled, the orbit resumed at the old pace, its centrifugal load that of the
+        old speed, and the windows after every stretch charged a lift the speed no longer gives (measured on the
+        blower's drive end between 3000 and 6000 rpm). Scaling the geometric axis' velocity scales the mass
+        centre's with it, since the unbalance's turning offset moves at Omega.
+
+        A journal at rest in its bore swings as a pendulum at its own frequency, which the spin does not set: its
+        velocity carries on, and only the unbalance terms change. The state holds the geometric axis, whose
+        velocity is the mass centre's less the unbalance's turning offset: G' = O' + e u' Omega and
+        theta_p' = theta_g' + chi w' Omega (:mod:`auxbearing.core.machine`). Over the stretch the spin slowed
+        while the mass centre's momentum and the principal axis' angular momentum carried on, so the axis'
+        velocities take the change of the unbalance terms (left as they were, the mass centre took a kick of
+        e dOmega at every handover).
+
+        With both kinds of plane on one rotor, the rotor's lateral and tilt velocities are those (in least
+        squares beyond two planes) that give each journal its own rule's velocity; the elastic modes' rates are
+        scaled only when every plane is driven.
         """
         y = self.y
+        planes = len(self.machine.planes)
+        driven = [False] * planes if driven is None else list(driven)
+        old = float(y[cm.OMEGA])
+        ratio = omega / old if old != 0.0 else 1.0
         kin = cm.rotor_kinematics(y, self.core.rotor)
-        slowed = float(y[cm.OMEGA]) - omega
-        y[cm.VX] += kin[0] * slowed
-        y[cm.VY] += kin[1] * slowed
-        y[cm.WX] += kin[4] * slowed
-        y[cm.WY] += kin[5] * slowed
-        self.y[cm.OMEGA] = omega
-        for k in range(len(self.machine.planes)):
-            self.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA] = race_speeds[k]
+        slowed = old - omega
+        carried = np.array([kin[0] * slowed, kin[1] * slowed, kin[4] * slowed, kin[5] * slowed])
+        if any(driven):
+            positions = np.asarray(self.core.planes.position[:planes], dtype=float)
+            vx, vy, wx, wy = (float(y[i]) for i in (cm.VX, cm.VY, cm.WX, cm.WY))
+            # journal k's rigid velocity: (VX + a_k WY, VY - a_k WX); each axis is its own 2-unknown fit
+            jx, jy = vx + positions * wy, vy - positions * wx
+            tx = np.where(driven, ratio * jx, jx + carried[0] + positions * carried[3])
+            ty = np.where(driven, ratio * jy, jy + carried[1] - positions * carried[2])
+            design = np.column_stack([np.ones(planes), positions])
+            (new_vx, new_wy), *_ = np.linalg.lstsq(design, tx, rcond=None)
+            (new_vy, minus_wx), *_ = np.linalg.lstsq(design, ty, rcond=None)
+            y[cm.VX], y[cm.VY], y[cm.WX], y[cm.WY] = new_vx, new_vy, -minus_wx, new_wy
+            for k in range(planes):
+                if driven[k]:
+                    b = self.layout.plane(k)
+                    for i in (cm.RVX, cm.RVY, cm.OVX, cm.OVY):
+                        y[b + i] *= ratio
+            if all(driven) and self.layout.modes:
+                rates = self.layout.modes_at + self.layout.modes
+                y[rates:rates + self.layout.modes] *= ratio
+        else:
+            y[cm.VX] += carried[0]
+            y[cm.VY] += carried[1]
+            y[cm.WX] += carried[2]
+            y[cm.WY] += carried[3]
+        y[cm.OMEGA] = omega
+        for k in range(planes):
+            y[self.layout.plane(k) + cm.ROMEGA] = race_speeds[k]
         self.memory.evaluations[0] = 0  # the first-stage derivative must be recomputed
 
 
@@ -692,7 +733,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth,
                                   next_passage_top(passages, session.y[cm.OMEGA]))
         backward.stretch(carried, session.t, stretch.duration)
-        session.set_speeds(stretch.rotor_speed, stretch.race_speeds)
+        session.set_speeds(stretch.rotor_speed, stretch.race_speeds, [not r for r in rested])
         for k in range(len(networks)):
             for j in range(3):
                 session.y[session.layout.heat(k, j)] += stretch.heat[k][j]
