@@ -65,3 +65,61 @@ def test_a_handover_keeps_the_mass_centres_momentum_and_the_principal_axis_turni
     session.set_speeds(omega, [0.9 * float(session.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) for k in range(2)])
     assert session.y[cm.OMEGA] == omega
     assert momenta(session.y) == pytest.approx(before, rel=1e-12, abs=1e-15)
+
+
+def _blower_session(seconds=0.002):
+    from auxbearing.analysis.coastdown import _Session
+    from auxbearing.analysis.drop import integrate_machine
+
+    machine = read_machine("blower")
+    return _Session(machine, integrate_machine(machine, seconds, None, None))
+
+
+def _journal_velocities(session):
+    from auxbearing.core import machine as cm
+
+    y, a = session.y, np.asarray(session.core.planes.position[:2])
+    return np.column_stack([y[cm.VX] + a * y[cm.WY], y[cm.VY] - a * y[cm.WX]])
+
+
+def _plane_velocities(session, k):
+    from auxbearing.core import machine as cm
+
+    b = session.layout.plane(k)
+    return session.y[[b + cm.RVX, b + cm.RVY, b + cm.OVX, b + cm.OVY]].copy()
+
+
+def test_a_handover_gives_a_driven_journal_the_new_speeds_pace():
+    """Every plane driven by the unbalance: journals, races, rings and the mass centre move Omega_1/Omega_0 as fast."""
+    from auxbearing.core import machine as cm
+
+    session = _blower_session()
+    rotor = session.core.rotor
+    journals, planes = _journal_velocities(session), [_plane_velocities(session, k) for k in range(2)]
+    kin = cm.rotor_kinematics(session.y, rotor)
+    centre = np.array([session.y[cm.VX] + kin[0] * session.y[cm.OMEGA], session.y[cm.VY] + kin[1] * session.y[cm.OMEGA]])
+    assert np.abs(journals).max() > 1e-4  # the drop's journals still move
+    ratio = 0.8
+    omega = ratio * float(session.y[cm.OMEGA])
+    session.set_speeds(omega, [0.0, 0.0], driven=[True, True])
+    assert _journal_velocities(session) == pytest.approx(ratio * journals, rel=1e-12, abs=1e-15)
+    for k in range(2):
+        assert _plane_velocities(session, k) == pytest.approx(ratio * planes[k], rel=1e-12, abs=1e-15)
+    kin = cm.rotor_kinematics(session.y, rotor)
+    assert np.array([session.y[cm.VX] + kin[0] * omega, session.y[cm.VY] + kin[1] * omega]) == pytest.approx(
+        ratio * centre, rel=1e-12, abs=1e-15)
+
+
+def test_a_handover_leaves_a_resting_journal_its_swing_beside_a_driven_one():
+    """Drive end driven, non-drive end at rest: each journal takes its own rule's velocity."""
+    from auxbearing.core import machine as cm
+
+    driven, resting = _blower_session(), _blower_session()
+    journals, planes = _journal_velocities(driven), [_plane_velocities(driven, k) for k in range(2)]
+    omega = 0.8 * float(driven.y[cm.OMEGA])
+    driven.set_speeds(omega, [0.0, 0.0], driven=[True, False])
+    resting.set_speeds(omega, [0.0, 0.0], driven=[False, False])  # the old rule on both planes
+    assert _journal_velocities(driven)[0] == pytest.approx(0.8 * journals[0], rel=1e-12, abs=1e-15)
+    assert _journal_velocities(driven)[1] == pytest.approx(_journal_velocities(resting)[1], rel=1e-12, abs=1e-15)
+    assert _plane_velocities(driven, 0) == pytest.approx(0.8 * planes[0], rel=1e-12, abs=1e-15)
+    assert np.array_equal(_plane_velocities(driven, 1), planes[1])
