@@ -97,7 +97,8 @@ def test_a_handover_gives_a_driven_journal_the_new_speeds_pace():
     rotor = session.core.rotor
     journals, planes = _journal_velocities(session), [_plane_velocities(session, k) for k in range(2)]
     kin = cm.rotor_kinematics(session.y, rotor)
-    centre = np.array([session.y[cm.VX] + kin[0] * session.y[cm.OMEGA], session.y[cm.VY] + kin[1] * session.y[cm.OMEGA]])
+    om = session.y[cm.OMEGA]
+    centre = np.array([session.y[cm.VX] + kin[0] * om, session.y[cm.VY] + kin[1] * om])
     assert np.abs(journals).max() > 1e-4  # the drop's journals still move
     ratio = 0.8
     omega = ratio * float(session.y[cm.OMEGA])

@@ -21,12 +21,17 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   unchanged within 1 %: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`), a clearance
   has moved by :data:`CLEARANCE_STEP` or the speed reaches a pendulum passage,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
-  ``coastdown.settle_time`` of it after a stretch is run and booked but not judged. The motion only evolves
-  in the windows (a stretch resumes it as it was), so where it changes slowly with the clearances and the
-  speed it lags full dynamics' by tens of stretches; settling gives it time to follow (measured on the blower
-  before the contacts were carried across the clearance steps: the windows just after a stretch carried 2-6 %
-  less load than full dynamics at the same speed, and 150 ms of settling brought every non-chaotic example
-  within 1 %, at 2.5 times the cost). Each window's over-rolling load is the mean load of its varying bearing
+  ``coastdown.settle_time`` of it after a stretch is run and booked but not judged. A stretch hands the
+  motion back at its new speed: a journal whose motion is locked to the spin (rolling round its bore, whirling
+  backward on it or free of it, not yet at rest in its bore) runs the same path Omega_1 / Omega_0 as fast, so its
+  velocity, its race's and its ring's are scaled by that ratio; a journal at rest swings at its own frequency and
+  a rattling one as its impacts make it, and both keep their velocity
+  (:func:`~auxbearing.analysis.coastdown_phases.spin_locked`, :meth:`_Session.set_speeds`). Otherwise the motion
+  only evolves in the windows, so where it changes slowly with the clearances and the speed it lags full
+  dynamics' by tens of stretches; settling gives it time to follow (measured on the blower before the contacts
+  were carried across the clearance steps: the windows just after a stretch carried 2-6 % less load than full
+  dynamics at the same speed, and 150 ms of settling brought every non-chaotic example within 1 %, at 2.5 times
+  the cost). Each window's over-rolling load is the mean load of its varying bearing
   load, the cube mean (:mod:`auxbearing.analysis.coastdown_life`); a stretch's revolutions are charged at the
   load measured before it and the load the windows after it settle on (the next stretch's), the load taken
   linear over its revolutions and its cube averaged exactly (:class:`auxbearing.analysis.coastdown_phases.StretchEnd`,
@@ -60,26 +65,24 @@ full dynamics until the motion was steady caught it (blower +0.43 / -0.13 % of f
 for 5.3 times the windows (3163 against 601, 42 s of computing against 9 s).
 
 To standstill (or to a run-away) against full dynamics at unbalance phase 0, every example and candidate but the
-chaotic paper rigs (above), with the windows on the classical RK4 (:mod:`auxbearing.core.rk4`): standstill times
-within 0.15 % and run-aways within 0.6 % of their time, peak temperatures within 0.10 K, closest internal
-clearances within 0.13 um, damage per drop blower +3.21 / -0.29 %, 7208 DB pair -1.87 / -3.86 %, QJ208 hybrid
-+1.36 / +1.83 %, 6208 -2.36 / +2.23 %, compressor +0.42 / +1.19 %, vertical rotor -0.48 / -1.01 % (and the 7208,
-no candidate, -5.34 / +2.76 %; its non-drive end in steady backward rolling whirl). The blower's drive end owes
-its excess to 3000-6000 rpm, where the unbalance stops lifting the journal: the few windows after the stretches
-there carry -1 to +12 % of full dynamics' mean load over the same 500 rpm (the motion a stretch resumes still
-lifts), elsewhere within 1.4 % (2000-3000 rpm +2.8 %). With the windows on Dormand-Prince, as measured before:
-blower +2.60 / -0.37 %, 7208 DB pair -0.83 / -2.85 %, hybrid +2.97 / -0.21 %, 6208 -1.74 / +1.40 %, the 7208
--2.37 / +6.42 %: single runs of chaotic rattles, which move by that much with the arithmetic. Over three
-unbalance phases (0, 1e-9, 2e-9 rad), on Dormand-Prince, the blower's damage per drop was +1.51 +- 0.59 /
--0.17 +- 0.14 %, the hybrid's +1.28 +- 0.89 / +0.30 +- 0.24 %, standstill -0.17 and -0.16 %. Over four phases
-(0 to 3e-9 rad) on RK4: blower +1.53 +- 0.57 / -0.30 +- 0.08 %, 7208 DB pair -0.90 +- 0.33 / -2.96 +- 0.43 %,
-hybrid +2.13 +- 0.39 / +1.04 +- 0.20 %, 6208 -1.37 +- 0.49 / +1.57 +- 0.38 % (its run-away in every run), standstill
-times -0.12 to -0.16 %, peaks within 0.04 K. The reduced run
-cannot leave a motion that is unstable but grows over seconds: the 7208
-DB pair's small rattle turns unstable between 17 000 and 15 000 rpm and full dynamics switches to a larger one
-(2-4 % more load); the windows, 30 ms of motion per stretch, stay on the small one, and 50 or 150 ms of settling
-after each stretch does not change it. Full dynamics 3.3 and 10 times tighter in its tolerances moves the DB
-pair's damage by at most 0.04 %.
+chaotic paper rigs (above), with the windows on the classical RK4 (:mod:`auxbearing.core.rk4`) and the
+spin-locked journals handed back at the new pace: standstill times within 0.15 % and run-aways within 0.2 % of
+their time, peak temperatures within 0.10 K, closest internal clearances within 0.08 um, damage per drop blower
+-0.21 / -0.32 %, 7208 DB pair -1.87 / -3.86 %, QJ208 hybrid -0.04 / +1.96 %, 6208 -1.08 / +2.17 %, compressor
++0.42 / +1.19 %, vertical rotor +0.82 / +1.16 % (and the 7208, no candidate, -2.60 / +6.01 %; its non-drive end
+in steady backward rolling whirl). Over four unbalance phases (0 to 3e-9 rad; full dynamics' own damage moves by
+0.1 % between them on the blower, 0.4 / 0.8 % on the 7208): blower +0.93 +- 0.50 / -0.30 +- 0.09 %, 7208 DB pair
+-0.90 +- 0.33 / -2.96 +- 0.34 %, hybrid +0.92 +- 0.48 / +1.42 +- 0.37 %, 6208 -1.32 +- 0.13 / +1.57 +- 0.35 %
+(its run-away in every run), the 7208 -2.98 +- 0.43 / +4.61 +- 1.12 % (handed back unscaled -2.23 +- 1.41 /
++3.73 +- 0.71 %), standstill times -0.10 to -0.15 %. Before the handover scaled anything, the blower's drive end
+was +3.21 % at phase 0 and +1.53 +- 0.57 % over the phases: between 6000 and 3000 rpm, where the unbalance stops
+lifting the journal, the windows after each stretch resumed the lifted orbit at the old speed's pace and carried
+-1 to +12 % of full dynamics' mean load over the same 500 rpm; the hybrid's drive end was +2.13 +- 0.39 %.
+The reduced run cannot leave a motion that is unstable but grows over seconds: the 7208 DB pair's small rattle
+turns unstable between 17 000 and 15 000 rpm and full dynamics switches to a larger one (2-4 % more load); the
+windows, 30 ms of motion per stretch, stay on the small one, and 50 or 150 ms of settling after each stretch does
+not change it. Full dynamics 3.3 and 10 times tighter in its tolerances moves the DB pair's damage by at most
+0.04 %.
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
 (:func:`spent_tail`): the spin energy left could warm the smallest part by less than
@@ -136,6 +139,7 @@ from auxbearing.analysis.coastdown_phases import (
     resting,
     same_families,
     settled,
+    spin_locked,
     spin_model,
     stretch_growth,
     too_short,
@@ -328,18 +332,19 @@ class _Session:
     def set_speeds(self, omega: float, race_speeds, driven=None) -> None:
         """Set the rotor's and the races' spin speeds (the end of a reduced stretch).
 
-        ``driven``: per plane, whether its journal moves as the unbalance drives it (lifted or rattling; not yet
-        come to rest in its bore, :func:`auxbearing.analysis.coastdown_phases.resting`). Such a motion is locked
-        to the spin: at the speed Omega_1 it runs the same path as at Omega_0, Omega_1 / Omega_0 as fast (a
-        journal pressed round its bore by its unbalance whirls at the spin speed; its orbit is the clearance
-        circle at either speed). So that journal's lateral velocity, its race's and its ring's are scaled by
-        Omega_1 / Omega_0; carried unscaled, the orbit resumed at the old pace, its centrifugal load that of the
-        old speed, and the windows after every stretch charged a lift the speed no longer gives (measured on the
-        blower's drive end between 3000 and 6000 rpm). Scaling the geometric axis' velocity scales the mass
-        centre's with it, since the unbalance's turning offset moves at Omega.
+        ``driven``: per plane, whether its journal's motion is locked to the spin
+        (:func:`auxbearing.analysis.coastdown_phases.spin_locked`: rolling round its bore, whirling backward on it
+        or free of it, and not yet come to rest in its bore). Such a motion runs, at the speed Omega_1, the path
+        it ran at Omega_0, Omega_1 / Omega_0 as fast: a journal pressed round its bore by its unbalance whirls at
+        the spin speed on the clearance circle, one whirling backward at a speed rolling ties to the spin's and
+        the race's. So that journal's lateral velocity, its race's and its ring's are scaled by Omega_1 / Omega_0.
+        Carried unscaled, the orbit resumed at the old pace and with the old speed's centrifugal load, and the
+        windows after every stretch charged a lift the new speed no longer gives. Scaling the geometric axis'
+        velocity scales the mass centre's with it, since the unbalance's turning offset moves at Omega.
 
-        A journal at rest in its bore swings as a pendulum at its own frequency, which the spin does not set: its
-        velocity carries on, and only the unbalance terms change. The state holds the geometric axis, whose
+        A journal at rest in its bore swings as a pendulum at its own frequency, and a rattling one moves as its
+        impacts, its weight and its unbalance together make it; neither is set by the spin alone. Their velocity
+        carries on, and only the unbalance terms change. The state holds the geometric axis, whose
         velocity is the mass centre's less the unbalance's turning offset: G' = O' + e u' Omega and
         theta_p' = theta_g' + chi w' Omega (:mod:`auxbearing.core.machine`). Over the stretch the spin slowed
         while the mass centre's momentum and the principal axis' angular momentum carried on, so the axis'
@@ -733,7 +738,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth,
                                   next_passage_top(passages, session.y[cm.OMEGA]))
         backward.stretch(carried, session.t, stretch.duration)
-        session.set_speeds(stretch.rotor_speed, stretch.race_speeds, [not r for r in rested])
+        session.set_speeds(stretch.rotor_speed, stretch.race_speeds, spin_locked(carried, rested))
         for k in range(len(networks)):
             for j in range(3):
                 session.y[session.layout.heat(k, j)] += stretch.heat[k][j]
