@@ -124,3 +124,18 @@ def test_a_handover_leaves_a_resting_journal_its_swing_beside_a_driven_one():
     assert _journal_velocities(driven)[1] == pytest.approx(_journal_velocities(resting)[1], rel=1e-12, abs=1e-15)
     assert _plane_velocities(driven, 0) == pytest.approx(0.8 * planes[0], rel=1e-12, abs=1e-15)
     assert np.array_equal(_plane_velocities(driven, 1), planes[1])
+
+
+def test_a_single_plane_machine_scales_its_whole_rotor():
+    """One plane driven (the paper rig): the rotor's lateral and tilt velocities all take the ratio."""
+    from auxbearing.analysis.coastdown import _Session
+    from auxbearing.analysis.drop import integrate_machine
+    from auxbearing.core import machine as cm
+
+    machine = read_machine("paper_rig")
+    session = _Session(machine, integrate_machine(machine, 0.002, None, None))
+    lateral = [cm.VX, cm.VY, cm.WX, cm.WY]
+    before = session.y[lateral].copy()
+    assert np.abs(before[:2]).max() > 1e-4
+    session.set_speeds(0.7 * float(session.y[cm.OMEGA]), [0.0], driven=[True])
+    assert session.y[lateral] == pytest.approx(0.7 * before, rel=1e-12, abs=1e-15)

@@ -351,9 +351,9 @@ class _Session:
         velocities take the change of the unbalance terms (left as they were, the mass centre took a kick of
         e dOmega at every handover).
 
-        With both kinds of plane on one rotor, the rotor's lateral and tilt velocities are those (in least
-        squares beyond two planes) that give each journal its own rule's velocity; the elastic modes' rates are
-        scaled only when every plane is driven.
+        With both kinds of plane on one rotor (two planes or more), the rotor's lateral and tilt velocities are
+        those (in least squares beyond two planes) that give each journal its own rule's velocity; the elastic
+        modes' rates are scaled only when every plane is driven.
         """
         y = self.y
         planes = len(self.machine.planes)
@@ -363,7 +363,13 @@ class _Session:
         kin = cm.rotor_kinematics(y, self.core.rotor)
         slowed = old - omega
         carried = np.array([kin[0] * slowed, kin[1] * slowed, kin[4] * slowed, kin[5] * slowed])
-        if any(driven):
+        if all(driven):  # the whole rotor's lateral motion at the new pace, modes included
+            for i in (cm.VX, cm.VY, cm.WX, cm.WY):
+                y[i] *= ratio
+            if self.layout.modes:
+                rates = self.layout.modes_at + self.layout.modes
+                y[rates:rates + self.layout.modes] *= ratio
+        elif any(driven):  # two planes or more, each journal its own rule
             positions = np.asarray(self.core.planes.position[:planes], dtype=float)
             vx, vy, wx, wy = (float(y[i]) for i in (cm.VX, cm.VY, cm.WX, cm.WY))
             # journal k's rigid velocity: (VX + a_k WY, VY - a_k WX); each axis is its own 2-unknown fit
@@ -374,19 +380,16 @@ class _Session:
             (new_vx, new_wy), *_ = np.linalg.lstsq(design, tx, rcond=None)
             (new_vy, minus_wx), *_ = np.linalg.lstsq(design, ty, rcond=None)
             y[cm.VX], y[cm.VY], y[cm.WX], y[cm.WY] = new_vx, new_vy, -minus_wx, new_wy
-            for k in range(planes):
-                if driven[k]:
-                    b = self.layout.plane(k)
-                    for i in (cm.RVX, cm.RVY, cm.OVX, cm.OVY):
-                        y[b + i] *= ratio
-            if all(driven) and self.layout.modes:
-                rates = self.layout.modes_at + self.layout.modes
-                y[rates:rates + self.layout.modes] *= ratio
         else:
             y[cm.VX] += carried[0]
             y[cm.VY] += carried[1]
             y[cm.WX] += carried[2]
             y[cm.WY] += carried[3]
+        for k in range(planes):
+            if driven[k]:
+                b = self.layout.plane(k)
+                for i in (cm.RVX, cm.RVY, cm.OVX, cm.OVY):
+                    y[b + i] *= ratio
         y[cm.OMEGA] = omega
         for k in range(planes):
             y[self.layout.plane(k) + cm.ROMEGA] = race_speeds[k]
