@@ -63,10 +63,11 @@ CASES = ["paper_rig", "paper_rig_two_planes", "blower", "blower:7208", "blower:6
 #: not. The reduced run stays on the small rattle, whose windows (30 ms of motion per stretch) grow too slowly to
 #: leave it: -3.3 / -5.6 % over 30 s against full dynamics converged in its tolerances (at the default
 #: tolerances full dynamics' own damage is 1.2 / 2.4 % low; tolerances 3.3 and 10 times tighter agree within 0.04 %).
-#: The QJ208 hybrid's drive end is -2.2 % at this phase, -0.91 +- 0.40 % over six phases.
-DAMAGE_TOLERANCE = {**{(case, 1): 0.06 for case in ("blower", "blower:7208", "blower:6208", "blower:7208 DB light",
-                                                      "blower:QJ208 hybrid")}, ("blower:7208", 0): 0.03,
-                    ("blower:QJ208 hybrid", 0): 0.03}
+#: Since a stretch hands a spin-locked journal back at the new speed's pace
+#: (auxbearing.analysis.coastdown_phases.spin_locked), every drive end is within 1.2 % here (the QJ208 hybrid's
+#: +0.71 %, before -2.2 %; the 7208's -0.74 %) and held to the 2 %; the non-drive ends were -2.01 to +1.17 %.
+DAMAGE_TOLERANCE = {(case, 1): 0.06 for case in ("blower", "blower:7208", "blower:6208", "blower:7208 DB light",
+                                                 "blower:QJ208 hybrid")}
 
 
 #: The paper rigs' journals rest in their bores from the drop's end on (in contact all of every window), swinging
