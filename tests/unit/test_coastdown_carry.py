@@ -45,12 +45,9 @@ def test_an_unloaded_race_keeps_its_gap_to_the_balls():
 
 
 def test_a_handover_keeps_the_mass_centres_momentum_and_the_principal_axis_turning():
-    from auxbearing.analysis.coastdown import _Session
-    from auxbearing.analysis.drop import integrate_machine
     from auxbearing.core import machine as cm
 
-    machine = read_machine("blower")
-    session = _Session(machine, integrate_machine(machine, 0.002, None, None))
+    session = _blower_session()
     rotor = session.core.rotor
     rotor = rotor._replace(unbalance=2e-5, couple_unbalance=1e-4)  # both unbalances, large enough to see
     session.core = session.core._replace(rotor=rotor)

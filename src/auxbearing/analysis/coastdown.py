@@ -362,7 +362,8 @@ class _Session:
         ratio = omega / old if old != 0.0 else 1.0
         kin = cm.rotor_kinematics(y, self.core.rotor)
         slowed = old - omega
-        carried = np.array([kin[0] * slowed, kin[1] * slowed, kin[4] * slowed, kin[5] * slowed])
+        # the unbalance terms' change, which the old rule adds to the axis' velocities (VX, VY, WX, WY)
+        unbalance_shift = np.array([kin[0] * slowed, kin[1] * slowed, kin[4] * slowed, kin[5] * slowed])
         if all(driven):  # the whole rotor's lateral motion at the new pace, modes included
             for i in (cm.VX, cm.VY, cm.WX, cm.WY):
                 y[i] *= ratio
@@ -374,17 +375,17 @@ class _Session:
             vx, vy, wx, wy = (float(y[i]) for i in (cm.VX, cm.VY, cm.WX, cm.WY))
             # journal k's rigid velocity: (VX + a_k WY, VY - a_k WX); each axis is its own 2-unknown fit
             jx, jy = vx + positions * wy, vy - positions * wx
-            tx = np.where(driven, ratio * jx, jx + carried[0] + positions * carried[3])
-            ty = np.where(driven, ratio * jy, jy + carried[1] - positions * carried[2])
+            tx = np.where(driven, ratio * jx, jx + unbalance_shift[0] + positions * unbalance_shift[3])
+            ty = np.where(driven, ratio * jy, jy + unbalance_shift[1] - positions * unbalance_shift[2])
             design = np.column_stack([np.ones(planes), positions])
             (new_vx, new_wy), *_ = np.linalg.lstsq(design, tx, rcond=None)
             (new_vy, minus_wx), *_ = np.linalg.lstsq(design, ty, rcond=None)
             y[cm.VX], y[cm.VY], y[cm.WX], y[cm.WY] = new_vx, new_vy, -minus_wx, new_wy
         else:
-            y[cm.VX] += carried[0]
-            y[cm.VY] += carried[1]
-            y[cm.WX] += carried[2]
-            y[cm.WY] += carried[3]
+            y[cm.VX] += unbalance_shift[0]
+            y[cm.VY] += unbalance_shift[1]
+            y[cm.WX] += unbalance_shift[2]
+            y[cm.WY] += unbalance_shift[3]
         for k in range(planes):
             if driven[k]:
                 b = self.layout.plane(k)
