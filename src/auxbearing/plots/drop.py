@@ -14,6 +14,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from auxbearing.plots._axes import envelope
+
 _COLOURS = {"QJ202": "tab:red", "7202": "tab:blue"}
 _WHIRL_COLOURS = {"none": "0.85", "forward": "tab:green", "backward_rolling": "tab:orange", "dry_whip": "tab:red",
                   "backward": "tab:purple"}
@@ -91,7 +93,7 @@ def plot_contact_force(ds: xr.Dataset, plane: int | None = None, ax=None, paper_
     planes = range(_n_planes(ds)) if plane is None else [plane]
     for k in planes:
         name = _plane_name(ds, k)
-        ax.plot(t_ms, _plane(ds, k).normal_force.values, lw=0.7, label=f"collision force, {name}")
+        ax.plot(*envelope(t_ms, _plane(ds, k).normal_force.values), lw=0.7, label=f"collision force, {name}")
         peak = _plane_summary(summary, k).get("peak_contact_force_N")
         if peak is not None:
             ax.plot(_plane_summary(summary, k)["peak_force_time_ms"], peak, "kv", label=f"peak {peak:.0f} N")
@@ -126,9 +128,9 @@ def plot_speeds(ds: xr.Dataset, ax=None) -> Figure:
     """Spin speeds of the rotor and of each inner race [rad/s]."""
     fig, ax = _axes(ax, (7, 4))
     t_ms = ds.time.values * 1e3
-    ax.plot(t_ms, ds.rotor_speed.values, color="tab:red", label="rotor")
+    ax.plot(*envelope(t_ms, ds.rotor_speed.values), color="tab:red", label="rotor")
     for k in range(_n_planes(ds)):
-        ax.plot(t_ms, _plane(ds, k).race_speed.values, label=f"inner race, {_plane_name(ds, k)}")
+        ax.plot(*envelope(t_ms, _plane(ds, k).race_speed.values), label=f"inner race, {_plane_name(ds, k)}")
     ax.set_xlabel("Time [ms]")
     ax.set_ylabel("Spin speed [rad/s]")
     ax.legend(fontsize=8)
@@ -141,7 +143,7 @@ def plot_ball_stress(ds: xr.Dataset, ax=None, limit_MPa: float | None = None) ->
     fig, ax = _axes(ax, (7, 4))
     t_ms = ds.time.values * 1e3
     for k in range(_n_planes(ds)):
-        ax.plot(t_ms, _plane(ds, k).max_ball_stress.values / 1e6, lw=0.7, label=_plane_name(ds, k))
+        ax.plot(*envelope(t_ms, _plane(ds, k).max_ball_stress.values / 1e6), lw=0.7, label=_plane_name(ds, k))
     if limit_MPa is not None:
         ax.axhline(limit_MPa, color="tab:red", ls="--", lw=1.0, label=f"limit {limit_MPa:.0f} MPa")
     ax.set_xlabel("Time [ms]")
@@ -167,12 +169,12 @@ def plot_tilt(ds: xr.Dataset, ax=None) -> Figure:
     """Tilt of the journal axis [mrad] and its axial position [um]."""
     fig, ax = _axes(ax, (7, 4))
     t_ms = ds.time.values * 1e3
-    ax.plot(t_ms, ds.tilt_x.values * 1e3, label="tilt about x")
-    ax.plot(t_ms, ds.tilt_y.values * 1e3, label="tilt about y")
+    ax.plot(*envelope(t_ms, ds.tilt_x.values * 1e3), label="tilt about x")
+    ax.plot(*envelope(t_ms, ds.tilt_y.values * 1e3), label="tilt about y")
     ax.set_xlabel("Time [ms]")
     ax.set_ylabel("Tilt [mrad]")
     twin = ax.twinx()
-    twin.plot(t_ms, ds.rotor_z.values * 1e6, color="0.4", lw=0.8, ls="--", label="axial position")
+    twin.plot(*envelope(t_ms, ds.rotor_z.values * 1e6), color="0.4", lw=0.8, ls="--", label="axial position")
     twin.set_ylabel("Axial position [µm]")
     ax.legend(loc="upper left", fontsize=8)
     twin.legend(loc="upper right", fontsize=8)
@@ -257,15 +259,15 @@ def plot_magnetic_bearings(ds: xr.Dataset, summary: dict) -> Figure:
         for axis in ("x", "y", "z"):
             if f"amb_current_{axis}" not in ds or np.isnan(ds[f"amb_current_{axis}"].values[:, i]).all():
                 continue  # an axis this bearing has not
-            currents.plot(t_ms, ds[f"amb_current_{axis}"].values[:, i], lw=0.7, label=f"{name}, {axis}")
+            currents.plot(*envelope(t_ms, ds[f"amb_current_{axis}"].values[:, i]), lw=0.7, label=f"{name}, {axis}")
             if f"amb_force_{axis}" in ds:
-                forces.plot(t_ms, ds[f"amb_force_{axis}"].values[:, i], lw=0.7, label=f"{name}, {axis}")
+                forces.plot(*envelope(t_ms, ds[f"amb_force_{axis}"].values[:, i]), lw=0.7, label=f"{name}, {axis}")
     limits = {a["max_current_A"] for a in summary.get("amb", []) if a.get("max_current_A")}
     for limit in limits:
         for sign in (1, -1):
             currents.axhline(sign * limit, color="0.3", ls="--", lw=0.8)
     for k in range(_n_planes(ds)):
-        forces.plot(t_ms, _plane(ds, k).normal_force.values, lw=0.7, color="k", alpha=0.5 + 0.5 * k / max(
+        forces.plot(*envelope(t_ms, _plane(ds, k).normal_force.values), lw=0.7, color="k", alpha=0.5 + 0.5 * k / max(
             _n_planes(ds), 1), label=f"collision force, {_plane_name(ds, k)}")
     strike = (summary.get("scenario") or {}).get("time_ms")
     for ax in (currents, forces):
