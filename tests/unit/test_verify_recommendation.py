@@ -136,3 +136,47 @@ def test_the_bearing_as_it_stands_goes_out_with_the_grid(monkeypatch):
 
     angle = read_machine("paper_rig").planes[0].bearing.contact_angle
     assert rec["as_is"] == pytest.approx((3.0 - 4.0 * (angle - 0.40) ** 2) / 2.0 - 1.0)  # the stand-in's s0 margin
+
+
+def test_points_the_air_gap_already_rules_out_are_not_run(monkeypatch):
+    """The air-gap margin is known before a drop: a point it keeps below the best point run is left out."""
+    import auxbearing.verify.designs as designs
+
+    monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", _smooth_drop)
+    data, name, base = machine_table("paper_rig")
+    criteria = read_criteria({"min_s0": 2.0, "amb_air_gap": "0.5 mm"})
+    rec = recommend(data, name, base, criteria, quick=False)
+    low = rec["bounds"]["clearance_factor"][0]
+    # the smallest clearance's margin against the air gap binds there; the larger clearances' are already below it
+    assert rec["binding_criterion"] == "touchdown clearance against the magnetic air gap"
+    assert all(p["clearance_factor"] == pytest.approx(low) for p in rec["points"])
+    assert rec["left_out"] >= 18 and rec["evaluations"] <= 9 + 12
+    monkeypatch.setattr(designs, "cannot_beat", lambda bound, best: False)
+    whole = recommend(data, name, base, criteria, quick=False)
+    assert whole["left_out"] == 0 and whole["evaluations"] >= 27
+    assert rec["worst_margin"] >= whole["worst_margin"] - designs.TIE_MARGIN
+    assert rec["clearance_factor"] == pytest.approx(whole["clearance_factor"])
+
+
+def test_the_bearing_as_built_is_judged_on_the_drop_it_is_given(monkeypatch):
+    """The verification hands the search its own drop of the design: it is not run a second time."""
+    from auxbearing.machine.files import read_machine
+    from auxbearing.verify.cases import Immediate
+
+    monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", _smooth_drop)
+
+    class Counting(Immediate):
+        submitted = 0
+
+        def submit(self, fn, *args, **kwargs):
+            self.submitted += 1
+            return super().submit(fn, *args, **kwargs)
+
+    given = _smooth_drop(read_machine("paper_rig")).summary
+    data, name, base = machine_table("paper_rig")
+    alone, handed = Counting(), Counting()
+    ran = recommend(data, name, base, read_criteria({"min_s0": 2.0}), executor=alone)
+    reused = recommend(data, name, base, read_criteria({"min_s0": 2.0}), executor=handed,
+                       as_built=SimpleNamespace(result=lambda: given))
+    assert alone.submitted == ran["evaluations"] + 1 and handed.submitted == reused["evaluations"]
+    assert reused["as_is"] == ran["as_is"]

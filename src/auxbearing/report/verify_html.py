@@ -172,7 +172,9 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                      f"inner groove ratio {rec['bounds']['inner_groove_ratio'][0]:.3f}-"
                      f"{rec['bounds']['inner_groove_ratio'][1]:.3f} and {rec['bounds']['clearance_factor'][0]:.2f}-"
                      f"{rec['bounds']['clearance_factor'][1]:.2f} times the radial clearance "
-                     f"({rec['evaluations']} drops at the maximum speed):</p>")
+                     f"({rec['evaluations']} drops at the maximum speed"
+                     + (f"; {rec['left_out']} more points were not run, as their clearance alone keeps their margin "
+                        "against the air gap below the best point's" if rec.get("left_out") else "") + "):</p>")
         if not rec["passes"]:
             parts.append(f"<p class='fail'><b>No recommendation:</b> {_e(rec['note'])}. The table shows the least "
                          "bad point found, not a design to build.</p>")

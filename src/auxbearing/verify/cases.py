@@ -173,6 +173,16 @@ def submit_cases(cases: Cases, executor, lean: bool = False, coastdown: bool = T
     return futures
 
 
+def drop_summary(run: MachineRun | CoastdownRun) -> dict:
+    """The summary of a drop, given as its run or as the coast-down that starts with it (read where it ran)."""
+    return (run.drop if isinstance(run, CoastdownRun) else run).summary
+
+
+def max_speed_drop(futures: dict):
+    """Of :func:`submit_cases`'s futures, the one holding the drop at the maximum speed (its own, or the coast-down)."""
+    return futures.get(MAX_SPEED, futures.get("coast-down"))
+
+
 def submit_coastdown(cases: Cases, executor, futures: dict, lean: bool = False) -> None:
     """Add the coast-down of a planned design to ``futures`` (:func:`submit_cases`)."""
     futures["coast-down"] = executor.submit(_coastdown_task, cases.machine, cases.quick, lean)

@@ -14,12 +14,17 @@ verdict measures it), with leaving the model's range and sustained backward whir
 clearance stays between the levitated rotor's orbit over :data:`ORBIT_ZONE` (ISO 14839-2) and the
 air-gap limit less the clearance's fit tolerance, within 60-140 % of the file's. A grid over the box, then a
 compass search from its best point (:func:`_polish`), each point a drop of the machine, each round's points run
-side by side. The criterion with the smallest margin at the optimum binds. Geometries whose smallest margins
-agree (within :data:`TIE_MARGIN`) are told apart by their next smallest, and so on (:func:`better`): where one
-criterion depends on one variable alone (the clearance against the air gap), the others are not left to the
-order in which the grid was run. A variable at a bound of the box is said. A point that fails a criterion is
-never recommended; the recommended design is then verified in full (:func:`auxbearing.verify.run.verify`; its
-coast-down last, and only when its drops and campaign fail nothing) and its verdict shown.
+side by side. The margin against the air gap is known before a point's drop (its clearance sets it): the grid goes
+out one clearance level at a time, the widest margin first, and a point whose air-gap margin is already below the
+best point's smallest margin (:func:`cannot_beat`) is not run, in the grid or the polish, since no drop can make it
+better. On the blower, where the air gap binds at the smallest clearance, that leaves out the grid's two larger
+clearances (18 of its 27 drops) and the polish's steps towards them. The criterion with the smallest margin at the
+optimum binds. Geometries whose smallest margins agree (within :data:`TIE_MARGIN`) are told apart by their next
+smallest, and so on (:func:`better`): where one criterion depends on one variable alone (the clearance against the
+air gap), the others are not left to the order in which the grid was run. A variable at a bound of the box is
+said. A point that fails a criterion is never recommended; the recommended design is then verified in full
+(:func:`auxbearing.verify.run.verify`; its coast-down last, and only when its drops and campaign fail nothing) and
+its verdict shown.
 """
 
 from __future__ import annotations
@@ -90,10 +95,13 @@ def _point_summary(tables: dict, name: str, base: Path | None) -> dict:
 
 
 def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: bool = False,
-              progress=None, executor=None) -> dict:
+              progress=None, executor=None, as_built=None) -> dict:
     """The geometry of the machine's bearing family that maximises the worst drop margin (module docstring).
 
-    ``executor`` (``submit(fn, *args)``) runs the drops; the grid's points go to it all at once.
+    ``executor`` (``submit(fn, *args)``) runs the drops; the grid's points go to it a tier at a time
+    (:func:`_tiers`). ``as_built``: the summary of the machine's own drop at the maximum speed, as an object whose
+    ``result()`` gives it (the verification's drop of the design), which the bearing as it stands is judged on;
+    without it that drop is run here.
     """
     from auxbearing.machine.judging import verify_settings
     from auxbearing.machine.model import machine_from_mapping
@@ -123,6 +131,14 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     duration = {"duration": f"{float(min(machine.simulation.duration, QUICK_DROP))!r} s"} if quick else {}
     evaluated: list[dict] = []
 
+    def gap_margin(x) -> float | None:
+        """The margin against the air gap, known before the point's drop: the clearance alone sets it."""
+        if gap_limit is None:
+            return None
+        # rounded: at the box's upper bound the clearance sits on the limit, where the margin is 0 to rounding
+        return round(1.0 - max(p.radial_clearance * x[2] + tol for p, tol in zip(machine.planes, tolerances,
+                                                                                  strict=True)) / gap_limit, 12)
+
     def launch(x):
         x = np.clip(x, bounds[:, 0], bounds[:, 1])
         tables = _design_tables(data, machine, x)
@@ -146,10 +162,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
             out["journal excursion against the seal clearance"] = (
                 1.0 - summary["largest_excursion_m"] / criteria["seal_clearance"])
         if gap_limit is not None:
-            # rounded: at the box's upper bound the clearance sits on the limit, where the margin is 0 to rounding
-            out["touchdown clearance against the magnetic air gap"] = round(1.0 - max(
-                p.radial_clearance * x[2] + tol for p, tol in zip(machine.planes, tolerances, strict=True)) / gap_limit,
-                12)
+            out["touchdown clearance against the magnetic air gap"] = gap_margin(x)
         binding = min(out, key=out.get)
         point = {"x": x, "worst": out[binding], "binding": binding, "margins": out}
         evaluated.append(point)
@@ -160,13 +173,20 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     levels = 2 if quick else 3
     grids = [np.linspace(lo, hi, levels) if hi > lo else np.array([lo]) for lo, hi in bounds]
     # the bearing as it stands goes out with the grid, so that no drop of its own waits for the polish to end
-    as_is = launch(np.array([first.contact_angle, first.inner_groove_ratio, 1.0]))
-    pending = [launch(np.array([a, f, c])) for a in grids[0] for f in grids[1] for c in grids[2]]
-    for x, future in pending:
-        judged(x, future)
+    x_as_is = np.array([first.contact_angle, first.inner_groove_ratio, 1.0])
+    as_is = (x_as_is, as_built) if as_built is not None else launch(x_as_is)
+    left_out: list = []  # points not run: their clearance alone keeps them below the best point run
+    grid = [np.array([a, f, c]) for a in grids[0] for f in grids[1] for c in grids[2]]
+    tiers = _tiers(grid, gap_margin)
+    for i, tier in enumerate(tiers):
+        if cannot_beat(gap_margin(tier[0]), best_of(evaluated)):
+            left_out += [x for later in tiers[i:] for x in later]  # the tiers' bounds only fall
+            break
+        for x, future in [launch(x) for x in tier]:  # the tier's drops all out before the first is read
+            judged(x, future)
     best = best_of(evaluated)
     if not quick:
-        best = _polish(best, bounds, 0.5 / (levels - 1), evaluated, launch, judged)
+        best = _polish(best, bounds, 0.5 / (levels - 1), evaluated, launch, judged, gap_margin, left_out)
     x = best["x"]
     at_bound = [name for name, value, (lo, hi) in zip(("contact angle", "groove ratio", "clearance"), x, bounds,
                                                         strict=True)
@@ -188,6 +208,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         "clearance_factor": float(x[2]), "worst_margin": best["worst"], "binding_criterion": best["binding"],
         "tie_margin": TIE_MARGIN,
         "variables_at_bounds": at_bound, "margins": best["margins"], "evaluations": len(evaluated),
+        "left_out": len(left_out),
         "bounds": {"contact_angle_deg": [math.degrees(v) for v in bounds[0]], "inner_groove_ratio": list(bounds[1]),
                    "clearance_factor": list(bounds[2])},
         "points": [{"contact_angle_deg": math.degrees(p["x"][0]), "inner_groove_ratio": float(p["x"][1]),
@@ -195,6 +216,23 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
                    for p in evaluated],
         "as_is": judged(*as_is)["worst"],
     }
+
+
+def _tiers(points: list, bound) -> list[list]:
+    """``points`` grouped by ``bound(x)`` (a margin known before the drop), largest first; one group without one."""
+    if not points or bound(points[0]) is None:
+        return [points] if points else []
+    values = sorted({bound(x) for x in points}, reverse=True)
+    return [[x for x in points if bound(x) == value] for value in values]
+
+
+def cannot_beat(bound: float | None, best: dict | None) -> bool:
+    """Whether a point whose margin on one criterion is at most ``bound`` can never be :func:`better` than ``best``.
+
+    Its smallest margin is at most that bound; below the best's smallest by more than :data:`TIE_MARGIN`, the first
+    pair of margins :func:`better` compares already decides against it, whatever its drop shows.
+    """
+    return bound is not None and best is not None and bound < best["worst"] - TIE_MARGIN
 
 
 def better(a: dict, b: dict) -> bool:
@@ -220,12 +258,15 @@ def best_of(points: list) -> dict | None:
     return best
 
 
-def _polish(best: dict, bounds: np.ndarray, step: float, evaluated: list, launch, judged) -> dict:
+def _polish(best: dict, bounds: np.ndarray, step: float, evaluated: list, launch, judged, bound=None,
+            left_out: list | None = None) -> dict:
     """A compass search from the grid's best point; the best point found.
 
     Kolda, Lewis & Torczon, "Optimization by direct search", SIAM Review 45 (2003) 385-482, Sec. 3 (compass
     search, the coordinate directions +-e_i): each round polls the point one ``step`` (a share of each free
-    variable's range) along every direction from the best point, all of them side by side; it moves to the best
+    variable's range) along every direction from the best point, all of them side by side (a poll point that
+    ``bound``, a margin known before its drop, shows :func:`cannot_beat` the best point is not run but added to
+    ``left_out``); it moves to the best
     poll point if it is :func:`better` and halves the step otherwise, until the step falls below
     :data:`POLISH_STEP_MIN` or :data:`POLISH_POINTS` drops are spent. A poll point outside the box is taken at its
     bound; a point already run is not run again. (A Nelder-Mead polish from scipy started from a
@@ -251,6 +292,10 @@ def _polish(best: dict, bounds: np.ndarray, step: float, evaluated: list, launch
                 x = lo + u * span
                 if key(x) not in seen:
                     seen.add(key(x))
+                    if bound is not None and cannot_beat(bound(x), best):
+                        if left_out is not None:
+                            left_out.append(x)
+                        continue
                     polls.append(x)
         polls = polls[:POLISH_POINTS - spent]
         points = [judged(*pending) for pending in [launch(x) for x in polls]]  # all out before the first is read

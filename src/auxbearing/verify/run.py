@@ -26,6 +26,8 @@ from auxbearing.verify.cases import (
     Cases,
     campaign_size,
     collect_cases,
+    drop_summary,
+    max_speed_drop,
     plan_cases,
     run_campaign_of,
     submit_cases,
@@ -290,7 +292,11 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
     def search() -> dict | None:
         # a chain of steps that wait on each other: its tasks go ahead of the campaigns' batches
         ahead = executor.ahead()
-        rec = recommend(data, name, base, criteria, quick, say, ahead)
+        # the bearing as it stands is the design: its drop at the maximum speed is the design's own, read where
+        # it ran (the search would otherwise run the same drop again)
+        design_drop = max_speed_drop(planned["design"][1])
+        as_built = None if design_drop is None else ahead.submit(drop_summary, design_drop)
+        rec = recommend(data, name, base, criteria, quick, say, ahead, as_built)
         if rec is not None and rec["passes"]:
             _verify_recommendation(rec, data, name, base, criteria, quick, n, out_dir, ahead, address, say)
         return rec
