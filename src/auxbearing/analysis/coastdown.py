@@ -196,6 +196,11 @@ class CoastdownRun(NamedTuple):
     life: list
 
 
+def drop_of(run: MachineRun | CoastdownRun) -> MachineRun:
+    """A drop's run, given as itself or as the coast-down that starts with it."""
+    return run.drop if isinstance(run, CoastdownRun) else run
+
+
 # ----------------------------------------------------------------------------- the thermal side
 def plane_network(machine: Machine, k: int, contact_load: float):
     """The lumped thermal network of plane k (:func:`auxbearing.analysis.thermal.build_network`)."""

@@ -83,19 +83,13 @@ def _criteria_figures(criteria: list) -> list[tuple[str, str]]:
                       "a yes/no criterion is drawn at +-100 %, one not checked is named with no bar.")])
 
 
-def _run_of(source):
-    """A drop run, given as itself or as the coast-down whose drop it is."""
-    from auxbearing.analysis.coastdown import CoastdownRun
-
-    return source.drop if isinstance(source, CoastdownRun) else source
-
-
 def _drop_figures(machine, case: str, source, min_s0) -> list[tuple[str, str]]:
     """The figures of one drop case (the drop at the maximum speed has its orbits, stresses and tilt too)."""
+    from auxbearing.analysis.coastdown import drop_of
     from auxbearing.bearings.ratings import ISO76_BALL_STRESS
     from auxbearing.plots import drop as pd
 
-    run = _run_of(source)
+    run = drop_of(source)
     ds, summary = run.dataset, run.summary
     # ISO 76: s0 = (4200 MPa / sigma)^3 for a ball contact, so s0 >= min_s0 holds below 4200 / min_s0^(1/3) MPa
     stress_limit = None if not min_s0 else ISO76_BALL_STRESS / 1e6 / float(min_s0) ** (1.0 / 3.0)
@@ -116,9 +110,10 @@ def _drop_figures(machine, case: str, source, min_s0) -> list[tuple[str, str]]:
 
 
 def _scenario_figures(case: str, source) -> list[tuple[str, str]]:
+    from auxbearing.analysis.coastdown import drop_of
     from auxbearing.plots import drop as pd
 
-    run = _run_of(source)
+    run = drop_of(source)
     if "amb" not in run.dataset or "outcome" not in run.summary.get("scenario", {}):
         return []
     return rendered([(pd.plot_magnetic_bearings(run.dataset, run.summary), f"{case}: the magnetic bearings' "

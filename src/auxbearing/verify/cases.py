@@ -25,7 +25,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from auxbearing.analysis.coastdown import CoastdownRun, rattle_note, run_coastdown, tail_note
+from auxbearing.analysis.coastdown import CoastdownRun, drop_of, rattle_note, run_coastdown, tail_note
 from auxbearing.analysis.drop import MachineRun, run_machine
 from auxbearing.common.errors import InputError
 from auxbearing.machine.combinations import SEAT_TOLERANCE
@@ -174,8 +174,8 @@ def submit_cases(cases: Cases, executor, lean: bool = False, coastdown: bool = T
 
 
 def drop_summary(run: MachineRun | CoastdownRun) -> dict:
-    """The summary of a drop, given as its run or as the coast-down that starts with it (read where it ran)."""
-    return (run.drop if isinstance(run, CoastdownRun) else run).summary
+    """The summary of a drop, given as its run or as the coast-down that starts with it (a task: read where it ran)."""
+    return drop_of(run).summary
 
 
 def max_speed_drop(futures: dict):

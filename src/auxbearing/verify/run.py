@@ -336,8 +336,7 @@ def _draw_design_figures(cases: Cases, futures: dict, judged: list, criteria: di
 
     if executor.client is None:
         return {}
-    runs = dict(futures)
-    runs.setdefault(MAX_SPEED, futures["coast-down"])  # that drop is the coast-down's own
+    runs = {**futures, MAX_SPEED: max_speed_drop(futures)}  # that drop may be the coast-down's own
     drawing: dict[str, list] = {}
     for key, task, args in design_figure_tasks(cases, judged, {"criteria": criteria}, runs):
         drawing.setdefault(key, []).append(executor.submit(task, *args))
