@@ -320,9 +320,10 @@ def _needs_force_series(machine: Machine) -> bool:
     return bool(of_kind(machine.stations, "amb")) and machine.active_scenario().levitated
 
 
-def _at_end(sel: xr.Dataset, name: str) -> float:
-    """A contact diagnostic of one plane at the end of the run, from its series or a lean run's last instant."""
-    return float(sel[name].values[-1] if name in sel else sel[f"{name}_at_end"].values)
+def _at_end(ds: xr.Dataset, name: str, k: int) -> float:
+    """A contact diagnostic of plane ``k`` at the end of the run, from its series or a lean run's last instant."""
+    series = ds.variables
+    return float(series[name].values[-1, k] if name in series else series[f"{name}_at_end"].values[k])
 
 
 def machine_dataset(machine: Machine, model, grid: np.ndarray, out_step: float, lean: bool = False) -> xr.Dataset:
@@ -477,8 +478,13 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
     seen = verdict != INTEGRATION_FAILED
     planes = []
     n_windows = int(watch.window_count[0])
+    series = ds.variables  # read as arrays: a Dataset per plane costs as much as the rest of the summary
+
+    def of_plane(name: str, k: int) -> np.ndarray:
+        return series[name].values[:, k]
+
+    time_s = series["time"].values
     for k, plane in enumerate(machine.planes):
-        sel = ds.isel(plane=k)
         records = watch.whirl[:n_windows, k]
         support = _support_stiffness(plane)
         mass = _plane_mass(machine, k)
@@ -487,10 +493,10 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
                          natural)
         peak_stress = float(watch.peak[1, k])
         first = float(watch.first_contact[k])
-        pen = sel.penetration.values
-        after = ds.time.values >= (first if first >= 0.0 else np.inf)
-        rotor_surface = ds.rotor_speed.values * plane.journal_radius
-        race_surface = sel.race_speed.values * (plane.journal_radius + plane.radial_clearance)
+        pen = of_plane("penetration", k)
+        after = time_s >= (first if first >= 0.0 else np.inf)
+        rotor_surface = series["rotor_speed"].values * plane.journal_radius
+        race_surface = of_plane("race_speed", k) * (plane.journal_radius + plane.radial_clearance)
         spin = machine.rotor.speed
         rolling = (np.abs(rotor_surface) > 0) & (race_surface * np.sign(spin) >= 0.95 * np.abs(rotor_surface))
         spun = np.nonzero(rolling)[0]
@@ -504,25 +510,25 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
             "s0": static_safety_factor(peak_stress) if seen else None,
             "peak_journal_pressure_MPa": pressure / 1e6 if seen else None,
             "journal_contact_half_angle_deg": math.degrees(angle) if seen else None,
-            "final_contact_force_N": _at_end(sel, "normal_force"),
+            "final_contact_force_N": _at_end(ds, "normal_force", k),
             "peak_axial_force_N": float(watch.peak[2, k]) if seen else None,
-            "final_axial_force_N": _at_end(sel, "axial_force"),
+            "final_axial_force_N": _at_end(ds, "axial_force", k),
             "whirl": whirl["whirl"], "backward_whirl_onset_ms": whirl["backward_whirl_onset_ms"],
             "backward_whirl_at_end": whirl["backward_at_end"], "whirl_frequency_Hz": whirl["whirl_frequency_Hz"],
             "whirl_timeline": whirl["classes"], "whirl_window_ms": whirl_window(machine) * 1e3,
             "first_impact_ms": first * 1e3 if first >= 0.0 else None, "impacts": int(watch.onsets[k]),
             "largest_bounce_um": float(max(0.0, -pen[after].min())) * 1e6 if after.any() else 0.0,
             "contact_fraction": float(np.mean(pen[after] > 0.0)) if after.any() else 0.0,
-            "race_spin_up_ms": float(ds.time.values[spun[0]] * 1e3) if spun.size else None,
-            "final_race_speed_rad_s": float(sel.race_speed.values[-1]),
+            "race_spin_up_ms": float(time_s[spun[0]] * 1e3) if spun.size else None,
+            "final_race_speed_rad_s": float(of_plane("race_speed", k)[-1]),
             "peak_ball_load_N": float(watch.peak_load[k]) if seen else None,
             "shoulder_use": float(watch.shoulder_use[k]), "peaks_cover": "the whole run" if valid else
             f"the run up to its stop at {t_end * 1e3:.2f} ms",
             "peak_force_time_ms": float(watch.peak_time[0, k]) * 1e3,
             "peak_stress_time_ms": float(watch.peak_time[1, k]) * 1e3,
-            "max_mount_deflection_um": float(np.max(sel.mount_deflection.values)) * 1e6,
-            "max_excursion_um": float(np.max(np.hypot(sel.journal_x.values - sel.ring_x.values,
-                                                      sel.journal_y.values - sel.ring_y.values))) * 1e6,
+            "max_mount_deflection_um": float(np.max(of_plane("mount_deflection", k))) * 1e6,
+            "max_excursion_um": float(np.max(np.hypot(of_plane("journal_x", k) - of_plane("ring_x", k),
+                                                      of_plane("journal_y", k) - of_plane("ring_y", k)))) * 1e6,
             "line_stiffness_N_per_m10_9": plane.line_stiffness,
             "defaults_used": list(plane.defaults),
         })
@@ -534,7 +540,7 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
         "rhs_evaluations": int(memory.evaluations[0]),
         "energy_balance_error": float((accounted - energy_in) / max(scale, 1e-300)),
         "largest_energy_error": float(watch.energy_error[0]),
-        "final_rotor_speed_rad_s": float(ds.rotor_speed.values[-1]), "planes": planes,
+        "final_rotor_speed_rad_s": float(series["rotor_speed"].values[-1]), "planes": planes,
         "largest_excursion_m": max(p["max_excursion_um"] for p in planes) * 1e-6,
         "output_step_s": run.output_step, "output_decimated": run.decimated,
     }
