@@ -10,7 +10,8 @@ Each way gets an empty kernel cache of its own (``NUMBA_CACHE_DIR`` set to a fre
 
 Prints each wall time against the target (the first drop after the install within 30 s). Every drop is the
 default one (the paper rig, 0.15 s) run from the command line in a scratch folder, imports included; nothing
-is asserted. About five minutes on the 2-core machine.
+is asserted. About five minutes on the 2-core machine. ``bench_drop.py`` splits a compilation from an empty cache
+by stage (imports, the drop kernels, the outputs' kernels) inside one Python process.
 
     python benchmarks/bench_cold_start.py [--skip-make]
 """

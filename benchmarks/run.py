@@ -17,7 +17,7 @@ from pathlib import Path
 
 HERE = Path(__file__).parent
 BENCHMARKS = ("bench_hertz.py", "bench_static.py", "bench_machine.py", "bench_drop.py", "bench_coastdown.py",
-              "bench_windows.py", "bench_campaign.py", "bench_verify.py", "bench_stations.py")
+              "bench_windows.py", "bench_campaign.py", "bench_verify.py", "bench_stations.py", "bench_cold_start.py")
 
 
 def main() -> int:
