@@ -114,7 +114,7 @@ def _say_when_compiling(args: list[str]) -> None:
 
     folder = cache_folder()
     if not os.path.isdir(folder) or not any(os.scandir(folder)):
-        # measured on the 2-core machine: 94 s to the first drop, 109 s before a verification's first case
+        # benchmarks/bench_cold_start.py on the 2-core machine: 120.8 s to the end of the first drop from an empty cache
         click.echo("compiling the kernels, once after an install or an upgrade (about two minutes; later runs load "
                    "them from the cache in under a second)", err=True)
 
