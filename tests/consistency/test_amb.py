@@ -16,7 +16,6 @@ import math
 
 import numpy as np
 import pytest
-from scipy.signal import find_peaks
 
 from auxbearing.analysis.drop import run_machine
 from auxbearing.common.errors import InputError
@@ -56,6 +55,8 @@ def test_bearings_that_fail_at_the_drop_leave_the_drop_as_it_was():
 
 @pytest.mark.slow
 def test_a_pd_bearing_is_a_spring_and_a_damper():
+    from scipy.signal import find_peaks  # here, not at collection: scipy.signal takes 0.7 s to import
+
     ideal = {"sensor_bandwidth": "1 MHz", "amplifier_bandwidth": "1 MHz"}
     machine = _blower(amb=ideal, scenario=HELD, speed="0 rpm", unbalance="0 um", axial_force="0 N",
                       start_y="20 um").with_scenario("held").with_simulation(duration=0.08)

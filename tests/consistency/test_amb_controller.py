@@ -9,9 +9,9 @@ for the PID of tests/consistency/test_amb.py; the levitated start has the sensor
 """
 
 import copy
+import functools
 import math
 
-import control
 import numpy as np
 import pytest
 
@@ -21,7 +21,21 @@ from auxbearing.machine.files import machine_table
 from auxbearing.machine.model import machine_from_mapping
 
 KP, WZ, WP, KINT = 6000.0, 2 * math.pi * 60.0, 2 * math.pi * 600.0, 1e5
-LEAD_LAG = control.tf([KP / WZ, KP], [1 / WP, 1]) + control.tf([KINT], [1, 0])
+
+
+# python-control (with scipy.signal) takes about a second to import: built when a test runs, not at collection,
+# so that the quick loop's workers do not pay for it
+@functools.cache
+def _lead_lag():
+    import control
+
+    return control.tf([KP / WZ, KP], [1 / WP, 1]) + control.tf([KINT], [1, 0])
+
+
+def _discrete_first_order():
+    import control
+
+    return control.tf([1.0], [1.0, 1.0], 1e-3)
 
 
 def _blower(controller, **rotor):
@@ -39,7 +53,7 @@ def _blower(controller, **rotor):
 
 
 def test_the_levitated_orbit_under_a_lead_lag_is_the_linear_response():
-    machine = _blower(LEAD_LAG).with_simulation(duration=0.3)
+    machine = _blower(_lead_lag()).with_simulation(duration=0.3)
     bearing = machine.stations[0]
     assert bearing.order == 2
     run = run_machine(machine)
@@ -59,22 +73,25 @@ def test_the_levitated_orbit_under_a_lead_lag_is_the_linear_response():
 
 
 def test_the_same_controller_from_a_table_of_coefficients():
-    num, den = (np.asarray(v, float).ravel().tolist() for v in control.tfdata(LEAD_LAG)[:2])
+    import control
+
+    lead_lag = _lead_lag()
+    num, den = (np.asarray(v, float).ravel().tolist() for v in control.tfdata(lead_lag)[:2])
     table = _blower({"num": num, "den": den}).stations[0]
-    assert table.transfer(2j * math.pi * 300) == pytest.approx(complex(LEAD_LAG(2j * math.pi * 300)), rel=1e-9)
+    assert table.transfer(2j * math.pi * 300) == pytest.approx(complex(lead_lag(2j * math.pi * 300)), rel=1e-9)
 
 
 @pytest.mark.parametrize(("controller", "expected"), [
     ({"num": [5.0, 6000.0, 1e5], "den": [1.0, 0.0]}, "amb.0.controller = {'num': [5.0, 6000.0, 100000.0], 'den': "
                                                        "[1.0, 0.0]}: must be proper"),
     ({"num": [1.0]}, "amb.0.controller = {'num': [1.0]}: give {num"),
-    (control.tf([1.0], [1.0, 1.0], 1e-3), "amb.0.controller = "),
+    (_discrete_first_order, "amb.0.controller = "),
     ({"num": [6000.0], "den": [1.0]}, "amb.0.controller = {'num': [6000.0], 'den': [1.0]}: is a pure gain"),
     ({"A": [[0.0]], "B": [[1.0]], "C": [[float("nan")]], "D": [[0.0]]}, "amb.0.controller = "),
 ])
 def test_a_bad_controller_names_the_key(controller, expected):
     with pytest.raises(InputError) as err:
-        _blower(controller)
+        _blower(controller() if callable(controller) else controller)
     assert str(err.value).startswith(expected), str(err.value)
 
 

@@ -20,7 +20,6 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
-from scipy import signal
 
 from auxbearing.bearings.catalogue import load_bearing
 from auxbearing.bearings.geometry import BearingGeometry
@@ -105,6 +104,8 @@ def synthesize(bearing: str | BearingGeometry = "QJ202", rotor: Rotor | None = N
     x = np.r_[np.full(n_pre, case.start_x), ds.rotor_x.values]
     y = np.r_[np.full(n_pre, case.start_y), ds.rotor_y.values]
     speed = np.r_[np.full(n_pre, case.speed), ds.rotor_speed.values]
+    from scipy import signal  # here: 0.7 s to import, and most importers of this module want EXAMPLE_DIR only
+
     rng = np.random.default_rng(sensor.seed)
     sos = signal.butter(4, sensor.cutoff, fs=fine, output="sos")
     # start the filter in its steady state at the levitated position, as a rig that was running
