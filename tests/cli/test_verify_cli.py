@@ -83,6 +83,19 @@ def test_verify_prints_the_verdict_and_its_reason_first(blower_verified):
 
 
 @pytest.mark.slow
+def test_a_recommendation_whose_own_verification_is_no_pass_says_so_on_the_command_line(blower_verified):
+    out, output = blower_verified
+    rec = json.loads((out / "verify.json").read_text())["recommendation"]
+    text = " ".join(output.split())
+    if rec["passes"]:
+        # a quick run's own verification of the recommended geometry cannot pass either (its coast-down is cut)
+        assert rec["verification"]["verdict"] in ("incomplete", "fail")
+        assert f"its own verification: {rec['verification']['verdict'].upper()}, see the report" in text
+    else:
+        assert f"No recommendation: {' '.join(rec['note'].split())}" in text
+
+
+@pytest.mark.slow
 def test_verify_in_a_log_gives_one_line_a_criterion(blower_verified):
     # CliRunner's console is 80 columns wide, as a log is: no table wrapped over several lines a criterion
     out, output = blower_verified

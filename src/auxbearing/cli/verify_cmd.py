@@ -108,10 +108,15 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         if not rec["passes"]:
             console.print(f"No recommendation: {rec['note']}", highlight=False)
         else:
+            # the search judges drops only; a geometry whose own verification is not a pass says so here too,
+            # not only in the report (a --quick run's never is)
+            checked = rec.get("verification")
+            own = (f"; its own verification: {checked['verdict'].upper()}, see the report"
+                   if checked and checked["verdict"] != "pass" else "")
             console.print(f"Recommended {rec['family'].replace('_', ' ')} geometry: contact angle "
                           f"{rec['contact_angle_deg']:.1f} deg, groove ratios {rec['inner_groove_ratio']:.3f}/"
                           f"{rec['outer_groove_ratio']:.3f}, clearance x{rec['clearance_factor']:.2f}; binds: "
-                          f"{rec['binding_criterion']}", highlight=False)
+                          f"{rec['binding_criterion']}{own}", highlight=False)
     click.echo(f"Report: {out_dir / 'report.html'} ({result['wall_time_s']:.0f} s)")
     click.get_current_context().exit(EXIT_STATUS[result["verdict"]])
 
