@@ -91,7 +91,7 @@ def test_the_same_controller_from_a_table_of_coefficients():
 ])
 def test_a_bad_controller_names_the_key(controller, expected):
     with pytest.raises(InputError) as err:
-        _blower(controller() if callable(controller) else controller)
+        _blower(controller if isinstance(controller, dict) else controller())  # a factory: built when run
     assert str(err.value).startswith(expected), str(err.value)
 
 
