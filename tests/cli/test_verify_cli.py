@@ -52,16 +52,22 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
             assert math.isclose(c["margin"], 1.0 - c["found"] / c["required"])
         if c["margin"] is not None and c["pass"] is not None:
             assert c["pass"] == (c["margin"] >= 0.0)
-    # every input is given: what is left unchecked is what the quick run's short coast-down passed, which
-    # is no pass (the rest of the coast-down could still fail it), and a whirl probability whose 95 % bound
-    # the quick campaign's 8 drops cannot bring under 5 %
+    # every input is given: what is left unchecked is what the quick run's short coast-down and its drops, cut
+    # to their first 50 ms of 200, passed, which is no pass (the rest of them could still fail it), and a whirl
+    # probability whose 95 % bound the quick campaign's 8 drops cannot bring under 5 %
     unchecked = {c["name"]: c for c in data["criteria"] if c["pass"] is None}
     whirl = unchecked.pop("probability of backward whirl over the drop conditions, 95 % bound")
     assert whirl["found"] > whirl["required"] and "too few drops" in whirl["evidence"]
     assert "73 or more drops without whirl" in whirl["evidence"]
     assert set(unchecked) <= {"peak bearing temperature", "preload of a closing internal clearance",
                               "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap",
-                              "no sustained backward whirl or dry whip"}
+                              "no sustained backward whirl or dry whip",
+                              "static safety factor s0 of every ball contact",
+                              "no run leaves the model's range or a limit",
+                              "journal excursion against the seal clearance",
+                              "peak magnetic-bearing current against its amplifier's limit"}
+    drop_cut = "only the first 50 ms of each 200 ms drop ran (--quick): run without --quick, so this is not a pass"
+    assert unchecked["static safety factor s0 of every ball contact"]["evidence"].endswith(drop_cut)
     assert all("(--quick)" in c["evidence"] and (c["margin"] is None or c["margin"] >= 0.0) for c in unchecked.values())
     assert data["verdict"] == ("fail" if any(c["pass"] is False for c in data["criteria"]) else "incomplete")
     assert [c["bearing"] for c in data["candidates"]] == ["7208"]

@@ -8,11 +8,12 @@ from auxbearing.verify.judge import _static_safety, drops_cut_short
 CRITERIA = {"min_s0": 1.0, "given": []}
 
 
-def _cases(campaign=None, **drops):
-    """Drop case -> (verdict, s0 of its one plane)."""
+def _cases(campaign=None, partial_drops="", **drops):
+    """Drop case -> (verdict, s0 of its one plane); ``partial_drops``: why every drop ran only its first part."""
     return SimpleNamespace(drops={case: SimpleNamespace(summary={"verdict": verdict,
                                                                  "planes": [{"name": "QJ208", "s0": s0}]})
-                                  for case, (verdict, s0) in drops.items()}, campaign=campaign)
+                                  for case, (verdict, s0) in drops.items()}, campaign=campaign,
+                           partial_drops=partial_drops)
 
 
 def _judged(cases):
@@ -64,3 +65,17 @@ def test_a_campaign_drop_below_the_limit_fails_it():
     # above the limit the campaign keeps its figures to its own table: the drops' smallest is judged
     calm = {"ok": 120, "smallest_s0": 12.0, "p_s0_below_required": {"successes": 0}}
     assert _judged(_cases(campaign=calm, high=("ok", 16.0))).found == 16.0
+
+
+QUICK = "only the first 50 ms of each 500 ms drop ran (--quick): run without --quick"
+
+
+def test_drops_the_quick_look_cut_pass_nothing_but_fail_what_they_already_fail():
+    # the heavy rotor's quick look: s0 7.5 in its 50 ms drops, where the 500 ms drop reaches 1.16 and leaves the
+    # model's range at 66.9 ms
+    c = _judged(_cases(partial_drops=QUICK, high=("ok", 7.5), low=("ok", 16.0)))
+    assert c.passed is None and c.found == 7.5 and c.evidence.endswith(QUICK + ", so this is not a pass")
+    assert _judged(_cases(partial_drops=QUICK, high=("ok", 0.8))).passed is False
+    in_range = upper_bound("no run leaves the model's range or a limit", 0.0, 1.0, "-", "", "all ok")
+    assert drops_cut_short(_cases(partial_drops=QUICK, high=("ok", 7.5)), [in_range])[0].passed is None
+    assert drops_cut_short(_cases(high=("ok", 7.5)), [in_range])[0].passed is True

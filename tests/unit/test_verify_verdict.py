@@ -54,6 +54,17 @@ def test_ranking_puts_failing_designs_last_whatever_their_margins():
     assert math.isfinite(ranking_key(good)[2])
 
 
+def test_designs_whose_margins_are_all_unchecked_go_by_the_margins_they_show():
+    # a --quick look: every criterion with a margin is shown but not checked
+    def quick(s0):
+        return [lower_bound("s0", s0, 2.0, "-", "", "")._replace(passed=None, kind="not checked"),
+                upper_bound("whirl bound", 0.32, 0.05, "-", "", "")._replace(passed=None, kind="not checked"),
+                yes_no("stable", "stable", "stable", True, "", "")]
+
+    order = sorted([("thin", quick(3.0)), ("thick", quick(9.0))], key=lambda d: ranking_key(d[1]))
+    assert [name for name, _ in order] == ["thick", "thin"]
+
+
 def test_a_failing_verdict_names_the_criteria_it_could_not_check():
     # mending a failure does not make a pass while other criteria stay open: a FAIL's reason names them too
     from auxbearing.report.verify_html import verdict_reason

@@ -29,7 +29,8 @@ WIDE_TABLE = 110
               help="Comma-separated catalogue bearings or bearing TOML files to try in the same seats "
                    "(default: the file's [[candidate]] tables).")
 @click.option("--quick", is_flag=True, help="A first look in well under a minute: short drops, the first seconds "
-                                            "of the coast-down, 8 campaign drops, a coarse recommendation.")
+                                            "of the coast-down, 8 campaign drops, a coarse recommendation; what the "
+                                            "cut runs pass is not checked (INCOMPLETE at best).")
 @click.option("--campaign-samples", type=int, default=None, metavar="N",
               help="Drops of the campaign over the drop conditions (0: none); default verify.campaign_samples.")
 @click.option("--workers", type=int, default=None, metavar="N", help="Campaign worker processes (default: cores).")

@@ -162,7 +162,10 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     if result.get("candidates"):
         parts.append("<h2>Candidate bearings in the same seats</h2>")
         parts.append(_table(["rank", "bearing", "verdict", "worst margin", "failing criteria"],
-                            result["candidate_rows"], "Ranked by the worst margin of the checked criteria."))
+                            result["candidate_rows"],
+                            "Ranked by the criteria failed, then those not checked, then the worst margin of the "
+                            "checked ones; designs alike in all three by the margins their unchecked findings show, "
+                            "worst first."))
         parts += [_figure(f, c) for f, c in figures.get("candidates", [])]
     if result.get("recommendation"):
         rec = result["recommendation"]

@@ -66,6 +66,8 @@ class Cases:
     tables: tuple[str, ...] = ()  #: the tables the machine file gives (to say where a value came from)
     #: why the coast-down stopped short of standstill (--quick, a budget, a limit that ended it); empty: it did not
     partial_coastdown: str = ""
+    #: why every drop ran only its first part (--quick, on a machine whose drop is longer); empty: they ran whole
+    partial_drops: str = ""
     quick: bool = False  #: the quick look's shorter cases
 
 
@@ -132,6 +134,9 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
             data, name, base, drop={"duration": f"{float(scenario.time + span)!r} s"}).with_scenario(scenario.name)
     cases.spreads = campaign_spreads(cases.machine, settings)
     cases.quick = quick
+    if after < machine.simulation.duration:
+        cases.partial_drops = (f"only the first {after * 1e3:g} ms of each {machine.simulation.duration * 1e3:g} ms "
+                               "drop ran (--quick): run without --quick")
     return cases
 
 

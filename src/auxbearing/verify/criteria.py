@@ -120,10 +120,16 @@ def overall_verdict(criteria: list[Criterion]) -> str:
 
 
 def ranking_key(criteria: list[Criterion]) -> tuple:
-    """Sort key of a design: fewer failing criteria first, then fewer unchecked, then the larger worst margin."""
+    """Sort key of a design: fewer failing criteria first, then fewer unchecked, then the larger worst margin.
+
+    Designs alike in all three (a --quick look, whose cut runs check nothing that has a margin) go by the margins
+    their unchecked findings show, worst first (a margin they all share, such as a small campaign's, decides
+    nothing).
+    """
     margin = worst_margin(criteria)
+    shown = sorted(c.margin for c in criteria if c.passed is None and c.margin is not None)
     return (sum(c.passed is False for c in criteria), sum(c.passed is None for c in criteria),
-            -margin if math.isfinite(margin) else math.inf)
+            -margin if math.isfinite(margin) else math.inf, tuple(-m for m in shown))
 
 
 def whirl_fails_whatever_follows(whirled: int, ended_ok: int, left: int, limit: float) -> bool:

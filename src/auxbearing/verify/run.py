@@ -159,7 +159,8 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     candidates : list, optional
         Catalogue names, bearing TOML paths or ``[[candidate]]`` tables; default the file's ``[[candidate]]``.
     quick : bool
-        A first look: short drops, a few seconds of coast-down, a small campaign, a coarse recommendation.
+        A first look: short drops, a few seconds of coast-down, a small campaign, a coarse recommendation;
+        what the cut runs pass is not checked, so its verdict is INCOMPLETE at best.
     samples : int, optional
         Campaign size (0: no campaign); default ``verify.campaign_samples``.
     report_figures : bool
