@@ -75,3 +75,18 @@ def test_a_failing_verdict_names_the_criteria_it_could_not_check():
     assert reason.startswith("fails on x (2 against 1: case a)")
     assert reason.endswith("besides, 1 of 5 are not checked: air gap")
     assert "not checked" not in verdict_reason([*_held(), upper_bound("x", 2.0, 1.0, "", "", "")])
+
+
+def test_an_incomplete_verdict_names_the_criteria_one_cut_left_open_together():
+    # a --quick look: the criteria its cut drops passed share one clause, the cut said once
+    from auxbearing.report.verify_html import verdict_reason
+
+    cut = "only the first 50 ms of each 200 ms drop ran (--quick): run without --quick"
+    passed = (lower_bound("s0", 9.0, 2.0, "-", "", "drive end"), upper_bound("seal", 0.1, 0.3, "mm", "", "NDE"))
+    quick = [c._replace(passed=None, kind="not checked", evidence=f"{c.evidence}; {cut}, so this is not a pass")
+             for c in passed]
+    alone = not_checked("air gap", "give criteria.amb_air_gap", "")
+    reason = verdict_reason([*quick, alone, *_held()])
+    assert reason == ("no checked criterion fails, but 3 of 6 are not checked: s0, seal "
+                      f"({cut}, so none of them is a pass); air gap (give criteria.amb_air_gap)")
+    assert verdict_reason([quick[0], *_held()]).endswith(f"s0 (drive end; {cut}, so this is not a pass)")

@@ -80,8 +80,34 @@ def verdict_reason(criteria: list) -> str:
         return reason
     if unchecked:
         return (f"no checked criterion fails, but {len(unchecked)} of {len(criteria)} are not checked: "
-                + "; ".join(f"{c.name} ({c.evidence})" for c in unchecked))
+                + "; ".join(_unchecked_clauses(unchecked)))
     return f"all {len(criteria)} criteria hold"
+
+
+#: How the evidence of a criterion that a cut run passed ends (auxbearing.verify.judge._unsettled): "; " + the cut.
+_NOT_A_PASS = ", so this is not a pass"
+
+
+def _unchecked_clauses(unchecked: list) -> list[str]:
+    """A clause a criterion not checked, with its evidence; those that one cut run passed as one clause.
+
+    A --quick look cuts its drops and its coast-down: nine criteria would each repeat one of the two cuts. They are
+    named together, with the cut once (each one's own finding stays in the table).
+    """
+    shared: dict[str, list] = {}
+    for c in unchecked:
+        _, sep, cut = c.evidence.rpartition("; ")
+        if sep and cut.endswith(_NOT_A_PASS):
+            shared.setdefault(cut.removesuffix(_NOT_A_PASS), []).append(c)
+    clauses, done = [], set()
+    for c in unchecked:
+        cut = next((cut for cut, group in shared.items() if c in group and len(group) > 1), None)
+        if cut is None:
+            clauses.append(f"{c.name} ({c.evidence})")
+        elif cut not in done:
+            done.add(cut)
+            clauses.append(f"{', '.join(g.name for g in shared[cut])} ({cut}, so none of them is a pass)")
+    return clauses
 
 
 def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
