@@ -66,3 +66,18 @@ def test_iso76_safety_factor_is_one_at_4200_mpa_and_falls_with_load():
     ds = an.load_distribution(QJ202, radial=[1000.0, 2000.0])
     s0 = ds["safety_factor_s0"].values
     assert s0[0] / s0[1] == pytest.approx(2.0, rel=0.03)  # not exact: the load zone shifts with load
+
+
+@pytest.mark.parametrize("name", ["QJ202", "QJ208", "7208", "6208", "209"])
+@pytest.mark.parametrize("load", [100.0, 550.0, 5000.0])
+def test_radial_approach_is_the_batch_solvers_equilibrium(name, load):
+    """The one-equation radial solve behind a drop's support stiffness (held axially and square, y left at zero
+    by the ball set's symmetry) lands where the 5-DOF batch Newton with y free does: both stop at a residual
+    of 1e-9 of the load, so their displacements agree to about that (measured: within 2.2e-10)."""
+    from auxbearing.bearings.ballset import ballset_params
+
+    params = ballset_params(get_bearing(name))
+    sol = an.solve_cases([[0.0, load, 0.0, 0.0, 0.0]], params, free=(False, True, True, False, False))
+    assert abs(sol.displacement[0, 2]) < 1e-15  # y stays at zero
+    assert an.radial_approach(params, load) == pytest.approx(sol.displacement[0, 1], rel=1e-8)
+

@@ -431,19 +431,14 @@ def _stack_rows(rows):
 
 def _support_stiffness(plane) -> float:
     """Radial stiffness of ball set and mount in series near the rated load [N/m] (for the whip frequency)."""
-    from auxbearing.analysis.statics import solve_cases
+    from auxbearing.analysis.statics import radial_approach
+    from auxbearing.bearings.ballset import ballset_params
 
     bs = plane.bearing
     load = max(100.0, 0.05 * bs.ball_count * 1e3)
-    try:
-        from auxbearing.bearings.ballset import ballset_params
-
-        params = ballset_params(bs, plane.ball_constant)
-        sol = solve_cases([[0.0, load, 0.0, 0.0, 0.0]], params, free=(False, True, True, False, False))
-        dx = float(sol.displacement[0, 1])
-        k_ball = 1.5 * load / dx if dx > 0.0 else 0.0
-    except Exception:  # a bearing the solver cannot carry radially alone: no estimate
-        return 0.0
+    dx = radial_approach(ballset_params(bs, plane.ball_constant), load)
+    # a ball set that cannot carry the load radially alone (NaN) gives no estimate
+    k_ball = 1.5 * load / dx if dx > 0.0 else 0.0
     if plane.mount is not None and k_ball > 0.0:
         return 1.0 / (1.0 / k_ball + 1.0 / plane.mount.mount_stiffness)
     return k_ball

@@ -125,6 +125,51 @@ def solve_cases(
     return StaticSolution(u, res, rel, its, status)
 
 
+def radial_approach(params: BallSet, load: float, tol: float = DEFAULT_TOL) -> float:
+    """Radial displacement [m] of an inner ring held axially and square under a radial load ``load`` [N] along +x.
+
+    The same equilibrium as ``solve_cases([[0, load, 0, 0, 0]], params, free=(False, True, True, False,
+    False))`` (source paper Eq. 14 and 16): the ball azimuths are symmetric about x, so y stays at zero and
+    load + F_x(dx) = 0 is one equation in dx, solved here by Newton's method inside a bracket (bisection where
+    a Newton step leaves it) on :func:`auxbearing.bearings.ballset.ballset_state`. That is the kernel a drop's
+    outputs compile anyway; the batch solver took 24 s more to compile on a first drop after an install.
+    Converged when |load + F_x| <= ``tol`` * load, as the batch solver; NaN when no displacement carries it.
+
+    Examples
+    --------
+    >>> from auxbearing import get_bearing
+    >>> params = ballset.ballset_params(get_bearing("QJ202"))
+    >>> sol = solve_cases([[0.0, 1000.0, 0.0, 0.0, 0.0]], params, free=(False, True, True, False, False))
+    >>> bool(abs(radial_approach(params, 1000.0) / sol.displacement[0, 1] - 1.0) < 1e-9)
+    True
+    """
+    def residual(dx: float) -> tuple[float, float]:
+        state = ballset.ballset_state([0.0, dx, 0.0, 0.0, 0.0], params)
+        return load + float(state.force[1]), float(state.jacobian[1, 1])
+
+    low, high = 0.0, 0.5 * max(params.clearance, 0.0) + 1e-7  # load + F_x falls from load > 0 as dx grows
+    for _ in range(60):
+        if residual(high)[0] < 0.0:
+            break
+        low, high = high, 2.0 * high
+    else:
+        return math.nan
+    dx = high
+    for _ in range(200):
+        g, slope = residual(dx)
+        if abs(g) <= tol * load:
+            return dx
+        if g > 0.0:
+            low = dx
+        else:
+            high = dx
+        step = dx - g / slope if slope < 0.0 else math.nan
+        dx = step if low < step < high else 0.5 * (low + high)
+        if high - low <= 1e-15 * high:
+            return dx
+    return math.nan
+
+
 #: Largest neglected second-order tilt displacement r_ic theta^2 / 2, as a fraction of the largest
 #: pair compression, before a result is flagged: the ball-set kinematics are linear in the tilt.
 SMALL_TILT_LIMIT = 0.01
