@@ -154,6 +154,8 @@ def radial_approach(params: BallSet, load: float, tol: float = DEFAULT_TOL) -> f
         low, high = high, 2.0 * high
     else:
         return math.nan
+    # Newton inside the bracket, bisecting where a step leaves it (scipy has no bracketed method that uses the
+    # Jacobian): brentq took 2.3-2.6 ms a solve over the catalogue against 0.3 ms, flat across the clearance
     dx = high
     for _ in range(200):
         g, slope = residual(dx)
