@@ -149,16 +149,17 @@ def radial_approach(params: BallSet, load: float, tol: float = DEFAULT_TOL) -> f
 
     low, high = 0.0, 0.5 * max(params.clearance, 0.0) + 1e-7  # load + F_x falls from load > 0 as dx grows
     for _ in range(60):
-        if residual(high)[0] < 0.0:
+        g, slope = residual(high)
+        if g < 0.0:
             break
         low, high = high, 2.0 * high
     else:
         return math.nan
     # Newton inside the bracket, bisecting where a step leaves it (scipy has no bracketed method that uses the
-    # Jacobian): brentq took 2.3-2.6 ms a solve over the catalogue against 0.3 ms, flat across the clearance
+    # Jacobian): brentq took 2.3-2.6 ms a solve over the catalogue against 0.3 ms, flat across the clearance.
+    # It starts from the bracket's far end, whose residual the search has just evaluated.
     dx = high
     for _ in range(200):
-        g, slope = residual(dx)
         if abs(g) <= tol * load:
             return dx
         if g > 0.0:
@@ -169,6 +170,7 @@ def radial_approach(params: BallSet, load: float, tol: float = DEFAULT_TOL) -> f
         dx = step if low < step < high else 0.5 * (low + high)
         if high - low <= 1e-15 * high:
             return dx
+        g, slope = residual(dx)
     return math.nan
 
 
