@@ -114,8 +114,8 @@ def _say_when_compiling(args: list[str]) -> None:
 
     folder = cache_folder()
     if not os.path.isdir(folder) or not any(os.scandir(folder)):
-        # the 2-core machine: 98-102 s to the end of the first drop from an empty cache (README, "Compiled kernels")
-        click.echo("compiling the kernels, once after an install or an upgrade (under two minutes; later runs load "
+        # the 2-core machine: 52 s to the end of the first drop from an empty cache (README, "Compiled kernels")
+        click.echo("compiling the kernels, once after an install or an upgrade (about a minute; later runs load "
                    "them from the cache in under a second)", err=True)
 
 

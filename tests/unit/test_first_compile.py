@@ -1,0 +1,74 @@
+"""The first drop's side-by-side compilation: who compiles, when it is skipped, and that the helper does its part.
+
+The compilation itself is not timed here (benchmarks/bench_cold_start.py does that). With the kernels already
+cached, the helper only loads them, so the whole path runs in seconds.
+"""
+
+from __future__ import annotations
+
+import subprocess
+
+import pytest
+
+from auxbearing.analysis import first_compile
+from auxbearing.analysis.drop import _first_call
+from auxbearing.machine.pack import pack
+from auxbearing.planar import rig
+
+
+@pytest.fixture
+def model():
+    return pack(rig.paper_rig())
+
+
+@pytest.fixture
+def marker(tmp_path, monkeypatch):
+    path = tmp_path / "kernels" / "drop-kernel.compiled"
+    monkeypatch.setattr(first_compile, "_marker", lambda n_planes: str(path))
+    monkeypatch.setattr(first_compile, "cache_folder", lambda: str(path.parent))
+    monkeypatch.delenv(first_compile.ENV_SWITCH, raising=False)
+    return path
+
+
+def _no_helper(*args, **kwargs):
+    raise AssertionError("a helper process was started")
+
+
+def test_a_marked_kernel_is_warmed_up_here_without_a_helper(model, marker, monkeypatch):
+    marker.parent.mkdir()
+    marker.write_text("done\n")
+    monkeypatch.setattr(subprocess, "Popen", _no_helper)
+    calls = []
+    first_compile.compile_side_by_side(model, calls.append)
+    assert calls == [model]
+
+
+def test_the_switch_turns_the_helper_off(model, marker, monkeypatch):
+    monkeypatch.setenv(first_compile.ENV_SWITCH, "0")
+    monkeypatch.setattr(subprocess, "Popen", _no_helper)
+    calls = []
+    first_compile.compile_side_by_side(model, calls.append)
+    assert calls == [model]
+    assert not marker.exists()  # switched off is not "done": a later run with the helper still gets it
+
+
+@pytest.mark.slow
+def test_a_cold_kernel_gets_a_helper_that_compiles_the_observer_then_a_marker(model, marker, monkeypatch):
+    """The real path, with the cache warm: the helper reports the observer, the integrator runs, the marker is left."""
+    started = []
+    real_start = first_compile._start_helper
+
+    def start(m):
+        helper, blob = real_start(m)
+        started.append(helper)
+        return helper, blob
+
+    calls = []
+    monkeypatch.setattr(first_compile, "_start_helper", start)
+    first_compile.compile_side_by_side(model, lambda m: calls.append(_first_call(m)))
+    assert len(started) == 1 and started[0].returncode == 0
+    assert len(calls) == 1
+    assert marker.exists()
+    calls.clear()
+    first_compile.compile_side_by_side(model, calls.append)  # now marked: no second helper
+    assert calls == [model] and len(started) == 1
