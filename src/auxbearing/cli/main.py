@@ -114,9 +114,10 @@ def _say_when_compiling(args: list[str]) -> None:
 
     folder = cache_folder()
     if not os.path.isdir(folder) or not any(os.scandir(folder)):
-        # the 2-core machine: 52 s to the end of the first drop from an empty cache (README, "Compiled kernels")
-        click.echo("compiling the kernels, once after an install or an upgrade (about a minute; later runs load "
-                   "them from the cache in under a second)", err=True)
+        # the 2-core machine from an empty cache: the first drop 52 s, a quick verification of the blower 133 s
+        # where a warm one takes 33 s (README, "Compiled kernels")
+        click.echo("compiling the kernels, once after an install or an upgrade (about a minute for a drop, two for "
+                   "a verification; later runs load them from the cache in under a second)", err=True)
 
 
 def _named_as_typed(message: str, args: list[str]) -> str:
