@@ -72,3 +72,57 @@ def test_a_cold_kernel_gets_a_helper_that_compiles_the_observer_then_a_marker(mo
     calls.clear()
     first_compile.compile_side_by_side(model, calls.append)  # now marked: no second helper
     assert calls == [model] and len(started) == 1
+
+
+def test_a_cache_folder_that_cannot_be_written_leaves_numba_alone(model, marker, monkeypatch):
+    monkeypatch.setattr(first_compile, "cache_folder", lambda: "/proc/no-such-folder")
+    monkeypatch.setattr(subprocess, "Popen", _no_helper)
+    calls = []
+    first_compile.compile_side_by_side(model, calls.append)
+    assert calls == [model]
+
+
+def test_a_helper_that_cannot_start_costs_only_time(model, marker, monkeypatch):
+    def cannot(*args, **kwargs):
+        raise OSError("no processes left")
+
+    monkeypatch.setattr(subprocess, "Popen", cannot)
+    calls = []
+    first_compile.compile_side_by_side(model, calls.append)
+    assert calls == [model] and marker.exists()
+
+
+class _SlowHelper:
+    """A helper still compiling: it has said nothing and not ended."""
+
+    def __init__(self, *args, **kwargs):
+        self.killed = False
+        self.stdout = self
+
+    def readline(self):
+        return "observer compiled\n"
+
+    def poll(self):
+        return -9 if self.killed else None
+
+    def kill(self):
+        self.killed = True
+
+    def wait(self):
+        return -9
+
+
+def test_an_interrupted_first_drop_stops_its_helper_and_leaves_no_marker(model, marker, monkeypatch):
+    helpers = []
+
+    def start(*args, **kwargs):
+        helpers.append(_SlowHelper())
+        return helpers[-1]
+
+    def interrupted(m):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(subprocess, "Popen", start)
+    with pytest.raises(KeyboardInterrupt):
+        first_compile.compile_side_by_side(model, interrupted)
+    assert helpers[0].killed and not marker.exists()

@@ -70,16 +70,20 @@ def _output_kernels(model) -> None:
 @contextlib.contextmanager
 def _first_in_line(n_planes: int):
     """True for the one process that compiles side by side; False where a marker, a lock or the switch says no."""
-    if os.environ.get(ENV_SWITCH, "1") == "0" or os.path.exists(_marker(n_planes)):
+    try:
+        import fcntl
+    except ImportError:  # not on POSIX: numba compiles on its own, on one core
+        fcntl = None
+    if fcntl is None or os.environ.get(ENV_SWITCH, "1") == "0" or os.path.exists(_marker(n_planes)):
         yield False
         return
     try:
-        import fcntl
-    except ImportError:  # not on POSIX: numba compiles on its own, one core
+        os.makedirs(cache_folder(), exist_ok=True)
+        lock = open(_marker(n_planes) + ".lock", "w")
+    except OSError:  # a cache folder that cannot be written: numba cannot share kernels through it either
         yield False
         return
-    os.makedirs(cache_folder(), exist_ok=True)
-    with open(_marker(n_planes) + ".lock", "w") as lock:
+    with lock:
         try:
             fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
@@ -105,25 +109,36 @@ def compile_side_by_side(model, warm_up) -> None:
             if helper is not None:
                 helper.stdout.readline()  # the observer is in the cache (or the helper ended: compiled below)
             warm_up(model)
-        finally:
             if helper is not None:
-                helper.communicate()
-            with contextlib.suppress(OSError):
-                os.remove(blob)
-        with open(_marker(n_planes), "w") as done:
+                helper.communicate()  # the outputs' kernels, compiled while the integrator compiled here
+        finally:
+            if helper is not None and helper.poll() is None:
+                helper.kill()  # stopped by an error or Ctrl-C: numba's cache files are written whole or not at all
+                helper.wait()
+            if blob is not None:
+                with contextlib.suppress(OSError):
+                    os.remove(blob)
+        with contextlib.suppress(OSError), open(_marker(n_planes), "w") as done:
             done.write("the drop kernel for this plane count was compiled side by side once\n")
 
 
 def _start_helper(model):
-    """A Python process compiling the observer then the outputs' kernels for ``model``'s types; None if it cannot."""
-    handle, blob = tempfile.mkstemp(suffix=".pickle", prefix="auxbearing-model-")
+    """A Python process compiling the observer then the outputs' kernels for ``model``'s types, and its input file.
+
+    (None, None) when it cannot be started; the integrator then compiles the observer itself.
+    """
+    blob = None
     try:
+        handle, blob = tempfile.mkstemp(suffix=".pickle", prefix="auxbearing-model-")
         with os.fdopen(handle, "wb") as out:
             pickle.dump(model, out)
         helper = subprocess.Popen([sys.executable, "-m", __name__, blob], stdout=subprocess.PIPE,
                                   stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL, text=True)
     except (OSError, pickle.PicklingError):
-        return None, blob
+        if blob is not None:
+            with contextlib.suppress(OSError):
+                os.remove(blob)
+        return None, None
     return helper, blob
 
 
