@@ -126,3 +126,13 @@ def test_an_interrupted_first_drop_stops_its_helper_and_leaves_no_marker(model, 
     with pytest.raises(KeyboardInterrupt):
         first_compile.compile_side_by_side(model, interrupted)
     assert helpers[0].killed and not marker.exists()
+
+
+def test_no_helper_when_numba_does_not_compile(model, marker, monkeypatch):
+    import numba
+
+    monkeypatch.setattr(numba.config, "DISABLE_JIT", True)
+    monkeypatch.setattr(subprocess, "Popen", _no_helper)
+    calls = []
+    first_compile.compile_side_by_side(model, calls.append)
+    assert calls == [model]

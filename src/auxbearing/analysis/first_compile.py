@@ -24,6 +24,7 @@ import subprocess
 import sys
 import tempfile
 
+import numba
 import numpy as np
 from numba import typeof
 
@@ -74,7 +75,8 @@ def _first_in_line(n_planes: int):
         import fcntl
     except ImportError:  # not on POSIX: numba compiles on its own, on one core
         fcntl = None
-    if fcntl is None or os.environ.get(ENV_SWITCH, "1") == "0" or os.path.exists(_marker(n_planes)):
+    if (fcntl is None or numba.config.DISABLE_JIT or os.environ.get(ENV_SWITCH, "1") == "0"
+            or os.path.exists(_marker(n_planes))):
         yield False
         return
     try:
