@@ -3,7 +3,8 @@
 Each way gets an empty kernel cache of its own (``NUMBA_CACHE_DIR`` set to a fresh folder, which
 :mod:`auxbearing.core` honours), so the installed cache is neither used nor touched:
 
-1. installed with pip only: the first ``auxbearing drop`` compiles what it runs, then a second one loads it;
+1. installed with pip only: the first ``auxbearing drop`` compiles what it runs (on two cores, through
+   :mod:`auxbearing.analysis.first_compile`), then a second one loads it;
 2. installed with the README's ``make``: its ``kernels`` step (the Makefile's recipe, run again here with
    ``make -B`` and the install step taken as done) compiles the kernels right after the install, two
    processes side by side; then the first ``auxbearing drop``.
@@ -13,7 +14,10 @@ default one (the paper rig, 0.15 s) run from the command line in a scratch folde
 is asserted. About five minutes on the 2-core machine. ``bench_drop.py`` splits a compilation from an empty cache
 by stage (imports, the drop kernels, the outputs' kernels) inside one Python process.
 
-    python benchmarks/bench_cold_start.py [--skip-make]
+With ``--without-helper`` the pip way's first drop runs once more from another empty cache with
+:mod:`auxbearing.analysis.first_compile` switched off, and the ratio of the two is printed.
+
+    python benchmarks/bench_cold_start.py [--skip-make] [--without-helper]
 """
 
 from __future__ import annotations
@@ -25,6 +29,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from auxbearing.analysis import first_compile
 
 ROOT = Path(__file__).resolve().parents[1]
 BIN = Path(sys.executable).parent
@@ -44,6 +50,8 @@ def timed(command: list[str], env: dict, cwd: Path) -> float:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--skip-make", action="store_true", help="only the pip way")
+    parser.add_argument("--without-helper", action="store_true",
+                        help="also the pip way's first drop with the compile helper switched off (about 2 minutes)")
     args = parser.parse_args()
     drop = [str(BIN / "auxbearing"), "drop", "--quiet"]
     with tempfile.TemporaryDirectory() as scratch:
@@ -54,6 +62,11 @@ def main() -> None:
         warm = timed(drop, env, scratch)
         print(f"installed with pip: first drop {cold:.1f} s (compiling), the next {warm:.1f} s; "
               f"target {TARGET:g} s for the first")
+        if args.without_helper:
+            alone = {**env, "NUMBA_CACHE_DIR": str(scratch / "alone-cache"), first_compile.ENV_SWITCH: "0"}
+            single = timed(drop, alone, scratch)
+            print(f"  the same without the compile helper ({first_compile.ENV_SWITCH}=0): {single:.1f} s, "
+                  f"{single / cold:.2f} times the first drop with it")
         if args.skip_make:
             return
         env["NUMBA_CACHE_DIR"] = str(make_cache)
