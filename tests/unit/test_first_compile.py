@@ -24,7 +24,7 @@ def model():
 @pytest.fixture
 def marker(tmp_path, monkeypatch):
     path = tmp_path / "kernels" / "drop-kernel.compiled"
-    monkeypatch.setattr(first_compile, "_marker", lambda n_planes: str(path))
+    monkeypatch.setattr(first_compile, "_marker", lambda model: str(path))
     monkeypatch.setattr(first_compile, "cache_folder", lambda: str(path.parent))
     monkeypatch.delenv(first_compile.ENV_SWITCH, raising=False)
     return path
@@ -136,3 +136,14 @@ def test_no_helper_when_numba_does_not_compile(model, marker, monkeypatch):
     calls = []
     first_compile.compile_side_by_side(model, calls.append)
     assert calls == [model]
+
+
+def test_the_marker_is_named_after_the_kernel_signature(model):
+    """Machines compiled for the same types share a marker; another plane count gets its own."""
+    from auxbearing.machine.files import read_machine
+    from tests.consistency.test_open_machine import FAR_PLANE, _blower
+
+    blower = pack(read_machine("blower"))
+    three_planes = pack(_blower(FAR_PLANE, duration="0.1 ms"))
+    assert first_compile._marker(blower) == first_compile._marker(model)
+    assert first_compile._marker(three_planes) != first_compile._marker(model)

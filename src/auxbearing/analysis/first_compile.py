@@ -6,18 +6,20 @@ largest callees one after the other: the machine's right-hand side (:func:`auxbe
 Neither is inlined into the integrator, and both are cached on disk. So a helper process compiles the observer
 into the shared cache while this one compiles the right-hand side and the small kernels a drop's summary uses;
 the integrator then finds both callees in the cache (about 14 s for what is left), and the helper goes on to
-the outputs' kernels. Measured on the paper rig's first drop: 85.7 s to 56.2 s of wall, the same CPU
-(README, "Compiled kernels").
+the outputs' kernels. The default drop from the command line, from an empty cache on the 2-core machine: 51.7-51.8 s
+against 104.8-110.4 s without the helper, with less CPU (84-85 s against 95-99 s; README, "Compiled kernels").
 
-It runs only once per installation and plane count: a marker beside the cached kernels says it has been done,
-and a lock makes a second process that needs the same kernel at the same time (a verification's other worker)
-wait for it and load it from the cache, instead of compiling it again on the same cores. Anything that goes
-wrong in the helper only costs time: the integrator then compiles what is missing itself, as it always did.
+It runs once per installation and kernel signature (the shipped examples share one; another plane count makes
+another): a marker beside the cached kernels says it has been done, and a lock makes a second process that needs
+the same kernel at the same time (a verification's other worker) wait for it and load it from the cache, instead
+of compiling it again on the same cores. Anything that goes wrong in the helper only costs time: the integrator
+then compiles what is missing itself, as it always did.
 """
 
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import os
 import pickle
 import subprocess
@@ -36,8 +38,10 @@ from auxbearing.core import watch as cw
 ENV_SWITCH = "AUXBEARING_COMPILE_HELPER"
 
 
-def _marker(n_planes: int) -> str:
-    return os.path.join(cache_folder(), f"drop-kernel-{n_planes}-planes.compiled")
+def _marker(model) -> str:
+    """The file that says this model's drop kernel was compiled, named after the types it is compiled for."""
+    digest = hashlib.sha256(repr(_observe_types(model)).encode()).hexdigest()[:16]
+    return os.path.join(cache_folder(), f"drop-kernel-{digest}.compiled")
 
 
 def _observe_types(model) -> tuple:
@@ -69,19 +73,19 @@ def _output_kernels(model) -> None:
 
 
 @contextlib.contextmanager
-def _first_in_line(n_planes: int):
+def _first_in_line(model):
     """True for the one process that compiles side by side; False where a marker, a lock or the switch says no."""
     try:
         import fcntl
     except ImportError:  # not on POSIX: numba compiles on its own, on one core
         fcntl = None
     if (fcntl is None or numba.config.DISABLE_JIT or os.environ.get(ENV_SWITCH, "1") == "0"
-            or os.path.exists(_marker(n_planes))):
+            or os.path.exists(_marker(model))):
         yield False
         return
     try:
         os.makedirs(cache_folder(), exist_ok=True)
-        lock = open(_marker(n_planes) + ".lock", "w")
+        lock = open(_marker(model) + ".lock", "w")
     except OSError:  # a cache folder that cannot be written: numba cannot share kernels through it either
         yield False
         return
@@ -94,13 +98,12 @@ def _first_in_line(n_planes: int):
             fcntl.flock(lock, fcntl.LOCK_EX)
             yield False
             return
-        yield not os.path.exists(_marker(n_planes))
+        yield not os.path.exists(_marker(model))
 
 
 def compile_side_by_side(model, warm_up) -> None:
     """Run ``warm_up(model)`` (the integrator's first call), with its callees compiled on two cores if still cold."""
-    n_planes = len(model.machine.planes.active)
-    with _first_in_line(n_planes) as first:
+    with _first_in_line(model) as first:
         if not first:
             warm_up(model)
             return
@@ -120,8 +123,8 @@ def compile_side_by_side(model, warm_up) -> None:
             if blob is not None:
                 with contextlib.suppress(OSError):
                     os.remove(blob)
-        with contextlib.suppress(OSError), open(_marker(n_planes), "w") as done:
-            done.write("the drop kernel for this plane count was compiled side by side once\n")
+        with contextlib.suppress(OSError), open(_marker(model), "w") as done:
+            done.write(f"the drop kernel was compiled side by side once for {_observe_types(model)}\n")
 
 
 def _start_helper(model):
