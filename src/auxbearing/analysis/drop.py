@@ -22,6 +22,7 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
+from auxbearing.analysis.first_compile import compile_side_by_side, first_call_state
 from auxbearing.analysis.scenario_outcome import outcome
 from auxbearing.analysis.whirl import natural_frequency, timeline
 from auxbearing.bearings.ballset import ballset_state
@@ -72,8 +73,6 @@ def _warm_up(model) -> float:
     key = ("machine", len(model.machine.planes.active))  # one specialisation per plane count
     if key in _WARM:
         return 0.0
-    from auxbearing.analysis.first_compile import compile_side_by_side
-
     start = time.perf_counter()
     compile_side_by_side(model, _first_call)
     _WARM.add(key)
@@ -82,9 +81,8 @@ def _warm_up(model) -> float:
 
 def _first_call(model) -> None:
     """The integrator's and the probes' first call: compiles them, or loads them from the disk cache."""
-    y = model.y0.copy()
+    y, watch = first_call_state(model)
     memory = ig.new_memory(0.0, 1e-7, y.size)
-    watch = cw.new_watch(y.size, len(model.machine.planes.active), 1.0, 1, model.energy0)
     drive.advance(model.machine, watch, y, 1e-6, model.settings, memory, np.empty((0, y.size)))
     probes.series(np.zeros((1, y.size)), model.machine, True)
 

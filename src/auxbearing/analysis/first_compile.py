@@ -44,14 +44,19 @@ def _marker(model) -> str:
     return os.path.join(cache_folder(), f"drop-kernel-{digest}.compiled")
 
 
-def _observe_types(model) -> tuple:
+def first_call_state(model):
+    """(state, observer memory) of ``model`` at its start: what its drop kernel is first called and typed with."""
     y = model.y0.copy()
-    watch = cw.new_watch(y.size, len(model.machine.planes.active), 1.0, 1, model.energy0)
+    return y, cw.new_watch(y.size, len(model.machine.planes.active), 1.0, 1, model.energy0)
+
+
+def _observe_types(model) -> tuple:
+    y, watch = first_call_state(model)
     return tuple(typeof(a) for a in (0.0, 1e-7, y, y.copy(), np.empty((5, y.size)), model.machine, watch))
 
 
 def _rhs_types(model) -> tuple:
-    y = model.y0.copy()
+    y, _ = first_call_state(model)
     return tuple(typeof(a) for a in (0.0, y, model.machine, np.empty(y.size)))
 
 
