@@ -147,3 +147,26 @@ def test_the_marker_is_named_after_the_kernel_signature(model):
     three_planes = pack(_blower(FAR_PLANE, duration="0.1 ms"))
     assert first_compile._marker(blower) == first_compile._marker(model)
     assert first_compile._marker(three_planes) != first_compile._marker(model)
+
+
+def test_a_switch_value_other_than_0_or_1_is_bad_input_named_as_written(model, marker, monkeypatch):
+    from auxbearing.common.errors import InputError
+
+    monkeypatch.setenv(first_compile.ENV_SWITCH, "off")
+    with pytest.raises(InputError, match=r"^AUXBEARING_COMPILE_HELPER = 'off': must be 0 .* or 1 "):
+        first_compile.compile_side_by_side(model, lambda m: None)
+
+
+def test_the_command_line_refuses_a_bad_switch_before_any_work(tmp_path):
+    """One line naming the variable as written, exit 2, nothing written; a verification's workers never see it."""
+    import os
+    import sys
+
+    env = {**os.environ, first_compile.ENV_SWITCH: "yes", "MPLBACKEND": "Agg"}
+    done = subprocess.run([sys.executable, "-m", "auxbearing.cli.main", "verify", "--machine", "blower", "--out",
+                           "out"], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2
+    assert done.stderr.strip().splitlines() == [
+        "error: AUXBEARING_COMPILE_HELPER = 'yes': must be 0 (compile in one process, as numba does on its own) or 1 "
+        "(the default: a helper process compiles beside the first drop)"]
+    assert not any(tmp_path.iterdir())

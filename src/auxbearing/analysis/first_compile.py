@@ -30,12 +30,26 @@ import numba
 import numpy as np
 from numba import typeof
 
+from auxbearing.common.errors import InputError
 from auxbearing.core import cache_folder, probes
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
 
-#: Set to 0 to compile in this process only, as numba does on its own.
+#: Environment variable: 0 compiles in this process only, as numba does on its own; 1 (the default) uses the helper.
 ENV_SWITCH = "AUXBEARING_COMPILE_HELPER"
+
+
+def helper_switched_on() -> bool:
+    """The environment's :data:`ENV_SWITCH`: unset or 1 on, 0 off; any other value is bad input.
+
+    >>> helper_switched_on() in (True, False)
+    True
+    """
+    value = os.environ.get(ENV_SWITCH, "1")
+    if value.strip() not in ("0", "1"):
+        raise InputError.for_field(ENV_SWITCH, value, "must be 0 (compile in one process, as numba does on its own) "
+                                   "or 1 (the default: a helper process compiles beside the first drop)")
+    return value.strip() == "1"
 
 
 def _marker(model) -> str:
@@ -84,8 +98,7 @@ def _first_in_line(model):
         import fcntl
     except ImportError:  # not on POSIX: numba compiles on its own, on one core
         fcntl = None
-    if (fcntl is None or numba.config.DISABLE_JIT or os.environ.get(ENV_SWITCH, "1") == "0"
-            or os.path.exists(_marker(model))):
+    if fcntl is None or numba.config.DISABLE_JIT or not helper_switched_on() or os.path.exists(_marker(model)):
         yield False
         return
     try:

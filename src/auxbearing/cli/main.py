@@ -73,6 +73,7 @@ class _Group(click.Group):
             warnings.showwarning = _one_line_warning
             try:
                 _refuse_empty_paths(self, ctx)
+                _check_compile_switch(raw)
                 _say_when_compiling(raw)
                 return super().invoke(ctx)
             except InputError as err:
@@ -100,6 +101,17 @@ class _Group(click.Group):
 #: Commands that run the compiled kernels (the rest answer without them).
 _KERNEL_COMMANDS = ("drop", "coastdown", "campaign", "verify", "study", "static", "static-cases", "contact",
                     "experiment")
+
+
+def _check_compile_switch(args: list[str]) -> None:
+    """A bad AUXBEARING_COMPILE_HELPER before any work (a verification's workers would meet it only in a case)."""
+    import os
+
+    # the name is auxbearing.analysis.first_compile.ENV_SWITCH, imported (numba with it) only when it is set
+    if args and args[0] in _KERNEL_COMMANDS and "--help" not in args and "AUXBEARING_COMPILE_HELPER" in os.environ:
+        from auxbearing.analysis.first_compile import helper_switched_on
+
+        helper_switched_on()
 
 
 def _say_when_compiling(args: list[str]) -> None:
