@@ -123,6 +123,7 @@ def test_an_interrupted_first_drop_stops_its_helper_and_leaves_no_marker(model, 
         raise KeyboardInterrupt
 
     monkeypatch.setattr(subprocess, "Popen", start)
+    monkeypatch.setattr(first_compile, "_heard_from", lambda helper: True)  # the stand-in has no pipe to wait on
     with pytest.raises(KeyboardInterrupt):
         first_compile.compile_side_by_side(model, interrupted)
     assert helpers[0].killed and not marker.exists()
@@ -170,3 +171,22 @@ def test_the_command_line_refuses_a_bad_switch_before_any_work(tmp_path):
         "error: AUXBEARING_COMPILE_HELPER = 'yes': must be 0 (compile in one process, as numba does on its own) or 1 "
         "(the default: a helper process compiles beside the first drop)"]
     assert not any(tmp_path.iterdir())
+
+
+def test_a_helper_that_never_reports_is_stopped_after_its_patience(model, marker, monkeypatch):
+    """The wait decides only who compiles: past it the helper is killed and the integrator compiles here."""
+    import sys
+
+    started = []
+    real_popen = subprocess.Popen
+
+    def silent(*args, **kwargs):
+        started.append(real_popen([sys.executable, "-c", "import time; time.sleep(60)"], stdout=subprocess.PIPE,
+                                  text=True))
+        return started[-1]
+
+    monkeypatch.setattr(subprocess, "Popen", silent)
+    monkeypatch.setattr(first_compile, "HELPER_PATIENCE", 0.5)
+    calls = []
+    first_compile.compile_side_by_side(model, calls.append)
+    assert calls == [model] and started[0].poll() is not None and marker.exists()

@@ -22,6 +22,7 @@ import contextlib
 import hashlib
 import os
 import pickle
+import select
 import subprocess
 import sys
 import tempfile
@@ -35,6 +36,9 @@ from auxbearing.core import cache_folder, probes
 from auxbearing.core import machine as cm
 from auxbearing.core import watch as cw
 
+#: Longest wait for the helper [s]: about ten times its compile on the 2-core machine. It decides only which process
+#: compiles the observer, never a result; a helper past it is stopped and this process compiles on its own.
+HELPER_PATIENCE = 300.0
 #: Environment variable: 0 compiles in this process only, as numba does on its own; 1 (the default) uses the helper.
 ENV_SWITCH = "AUXBEARING_COMPILE_HELPER"
 
@@ -129,11 +133,12 @@ def compile_side_by_side(model, warm_up) -> None:
         try:
             cm.rhs.compile(_rhs_types(model))
             _summary_kernels()
-            if helper is not None:
-                helper.stdout.readline()  # the observer is in the cache (or the helper ended: compiled below)
+            if helper is not None and not _heard_from(helper):
+                helper.kill()  # a helper that neither reports nor ends: the integrator compiles the observer itself
             warm_up(model)
             if helper is not None:
-                helper.communicate()  # the outputs' kernels, compiled while the integrator compiled here
+                with contextlib.suppress(subprocess.TimeoutExpired):
+                    helper.communicate(timeout=HELPER_PATIENCE)  # the outputs' kernels, compiled meanwhile
         finally:
             if helper is not None and helper.poll() is None:
                 helper.kill()  # stopped by an error or Ctrl-C: numba's cache files are written whole or not at all
@@ -143,6 +148,14 @@ def compile_side_by_side(model, warm_up) -> None:
                     os.remove(blob)
         with contextlib.suppress(OSError), open(_marker(model), "w") as done:
             done.write(f"the drop kernel was compiled side by side once for {_observe_types(model)}\n")
+
+
+def _heard_from(helper) -> bool:
+    """Whether the helper reported the observer compiled, or ended, within :data:`HELPER_PATIENCE`."""
+    ready, _, _ = select.select([helper.stdout], [], [], HELPER_PATIENCE)
+    if ready:
+        helper.stdout.readline()  # the observer is in the cache (or the helper ended: compiled by the integrator)
+    return bool(ready)
 
 
 def _start_helper(model):
