@@ -186,7 +186,25 @@ def test_a_helper_that_never_reports_is_stopped_after_its_patience(model, marker
         return started[-1]
 
     monkeypatch.setattr(subprocess, "Popen", silent)
-    monkeypatch.setattr(first_compile, "HELPER_PATIENCE", 0.5)
+    monkeypatch.setattr(first_compile, "HELPER_PATIENCE", 0.2)
     calls = []
     first_compile.compile_side_by_side(model, calls.append)
     assert calls == [model] and started[0].poll() is not None and marker.exists()
+
+
+def test_a_process_waits_for_another_compiling_then_compiles_itself_past_the_patience(model, marker, monkeypatch):
+    """The lock's holder (here: this test) never lets go; the waiter gives up after its patience and runs alone."""
+    import fcntl
+
+    marker.parent.mkdir()
+    monkeypatch.setattr(first_compile, "HELPER_PATIENCE", 0.2)
+    monkeypatch.setattr(first_compile, "LOCK_POLL", 0.05)
+    monkeypatch.setattr(subprocess, "Popen", _no_helper)
+    holder = open(str(marker) + ".lock", "w")  # another open file description: flock sees another holder
+    try:
+        fcntl.flock(holder, fcntl.LOCK_EX)
+        calls = []
+        first_compile.compile_side_by_side(model, calls.append)
+        assert calls == [model] and not marker.exists()
+    finally:
+        holder.close()

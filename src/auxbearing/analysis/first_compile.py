@@ -26,6 +26,7 @@ import select
 import subprocess
 import sys
 import tempfile
+import time
 
 import numba
 import numpy as np
@@ -39,6 +40,8 @@ from auxbearing.core import watch as cw
 #: Longest wait for the helper [s]: about ten times its compile on the 2-core machine. It decides only which process
 #: compiles the observer, never a result; a helper past it is stopped and this process compiles on its own.
 HELPER_PATIENCE = 300.0
+#: How often a process waiting for another's compilation looks whether it has ended [s].
+LOCK_POLL = 0.2
 #: Environment variable: 0 compiles in this process only, as numba does on its own; 1 (the default) uses the helper.
 ENV_SWITCH = "AUXBEARING_COMPILE_HELPER"
 
@@ -116,11 +119,25 @@ def _first_in_line(model):
             fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
             # Another process (a verification's other worker) is compiling the same kernel: wait for it, then
-            # load from the cache rather than compile it a second time on the same two cores.
-            fcntl.flock(lock, fcntl.LOCK_EX)
+            # load from the cache rather than compile it a second time on the same two cores (past the patience,
+            # compile here: the wait decides only who compiles).
+            _wait_for_lock(lock, fcntl)
             yield False
             return
         yield not os.path.exists(_marker(model))
+
+
+def _wait_for_lock(lock, fcntl) -> bool:
+    """Take ``lock`` once its holder lets it go, polling for at most :data:`HELPER_PATIENCE`; whether it was taken."""
+    waited = 0.0
+    while waited < HELPER_PATIENCE:
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            return True
+        except OSError:
+            time.sleep(LOCK_POLL)
+            waited += LOCK_POLL
+    return False
 
 
 def compile_side_by_side(model, warm_up) -> None:
