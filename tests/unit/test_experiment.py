@@ -228,6 +228,6 @@ def test_series_split_balances_and_grows(excursion, angle):
     disp = np.zeros((2, 5))
     disp[:, 1], disp[:, 2] = u * math.cos(angle), u * math.sin(angle)
     ball = -(ballset_state(disp, model.ballset).force[:, 1:3] @ [math.cos(angle), math.sin(angle)])
-    assert line == pytest.approx(ball, rel=1e-6)
+    assert line == pytest.approx(ball, rel=1e-10)  # the root to rounding (safeguarded Newton)
     assert c["elastic_force"][1] > c["elastic_force"][0]
     assert c["max_ball_stress"][1] > c["max_ball_stress"][0]
