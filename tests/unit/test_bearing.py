@@ -134,6 +134,10 @@ def test_7208_is_the_40_deg_b_design_and_sizes_cover_15_to_100():
 @pytest.mark.parametrize(("name", "fragment"), [
     ("7208 AC", "only the 40 deg B design"), ("6221", "bore code outside"), ("6205 DB", "needs an angular-contact row"),
     ("DB", "names no bearing"), ("7208 DT heavy", "cannot be preloaded"),
+    # a suffix that would change the physics is refused, not ignored as maker codes are
+    ("QJ208hybrid", "write the word 'hybrid' apart.*'QJ208 hybrid'"), ("QJ208 ceramic", "ball material"),
+    ("QJ208 Si3N4", "ball material"), ("6208 hybird", "ball material"), ("6208 C3", "clearance group C3"),
+    ("6305-2RS1 C4", "clearance group C4"), ("6208/C2", "clearance group C2"),
 ])
 def test_bad_names(name, fragment):
     with pytest.raises(InputError, match=fragment):

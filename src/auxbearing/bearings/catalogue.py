@@ -10,7 +10,9 @@ A name is read as ``[QJ]<type><series><bore code>[maker suffix][/HC5 | hybrid][D
 "6205", "6305-2RS", "7208", "7208 BECBP", "QJ 208 N2MA", "QJ208 hybrid", "7208 DB", "7208 BECBP/DB",
 "7208 DF medium", "7208 DT". Maker suffixes are ignored except that an angular-contact bearing must
 be the 40 deg B design (suffix starting with B, or none); "7202" is the source paper's 35 deg
-bearing, "7202 B..." its 40 deg variant "7202-40".
+bearing, "7202 B..." its 40 deg variant "7202-40". A suffix that would change the physics if it were read is
+refused rather than ignored: a ball material ("QJ208hybrid", "6208 ceramic") or an internal clearance group
+other than normal (C2-C5).
 """
 
 from __future__ import annotations
@@ -92,6 +94,44 @@ def _series_name(base: str) -> tuple[str | None, str]:
     return f"{prefix}{code}", suffix
 
 
+#: Suffix words that say what the balls are made of: ignored as maker codes, they would leave the balls steel.
+_MATERIAL_WORDS = ("hybrid", "ceramic", "si3n4", "nitride", "zirconia", "zro2")
+#: ISO 5753-1 internal clearance groups other than normal (CN): the catalogue's geometry has the normal one.
+_CLEARANCE_GROUP = re.compile(r"(?:^|[^A-Z0-9])C([2-5])(?![0-9])|(?<=[0-9])C([2-5])(?![0-9])")
+
+
+def _check_suffix(base: str, designation: str, suffix: str, field: str) -> None:
+    """Refuse a maker suffix that would change the physics if it were read, since suffixes are otherwise ignored.
+
+    A ball material written into the suffix ('QJ208hybrid', 'QJ208 ceramic', '6208 hybird') would silently
+    give an all-steel bearing; an internal clearance group (C2-C5) would silently give the normal clearance.
+
+    Examples
+    --------
+    >>> _check_suffix("7208 BECBP", "7208", "BECBP", "bearing")
+    >>> _check_suffix("6208 C3", "6208", "C3", "bearing")
+    Traceback (most recent call last):
+    ...
+    auxbearing.common.errors.InputError: bearing = '6208 C3': ...
+    """
+    import difflib
+
+    words = [w for w in re.split(r"[^a-z0-9]+", suffix.lower()) if w]
+    for word in words:
+        letters = re.sub(r"[0-9]", "", word)
+        near = difflib.get_close_matches(word, _MATERIAL_WORDS, n=1, cutoff=0.75)
+        if near or any(m in word for m in _MATERIAL_WORDS) or (letters and letters in ("ceramic", "hybrid")):
+            raise InputError.for_field(field, base, "a ball material is not read from a maker's suffix (the balls "
+                                       "would be steel); write the word 'hybrid' apart for silicon-nitride balls, "
+                                       f"e.g. '{designation} hybrid'")
+    group = _CLEARANCE_GROUP.search(suffix.upper())
+    if group:
+        c = group.group(1) or group.group(2)
+        raise InputError.for_field(field, base, f"internal clearance group C{c} is not in the catalogue's geometry "
+                                   "(it has the normal group, CN); give the bearing without it, or a bearing file "
+                                   "with its own diametral_clearance")
+
+
 def resolve_single(base: str, field: str = "bearing"):
     """The single bearing a base designation names (toml entries first, then the series).
 
@@ -108,6 +148,7 @@ def resolve_single(base: str, field: str = "bearing"):
     designation, suffix = _series_name(base)
     if designation is None:
         raise InputError.for_field(field, base, _unknown_text())
+    _check_suffix(base, designation, suffix, field)
     if designation[0] == "7" and suffix and not suffix.startswith("B"):
         raise InputError.for_field(field, base, "only the 40 deg B design of angular-contact bearings is in the "
                                    "catalogue (suffix B..., or none)")
