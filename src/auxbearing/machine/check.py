@@ -38,7 +38,7 @@ MACHINE_FILE_TABLES = ("machine", "rotor", "unbalance", "touchdown", *STATION_TA
                        "life",
                        "criteria", "candidate", "verify", "campaign")
 #: Keys of a ``[[candidate]]`` table.
-CANDIDATE_KEYS = ("name", "bearing")
+CANDIDATE_KEYS = ("name", "bearing", "preload")
 
 
 def check_machine_document(data: dict, name: str = "machine", base: Path | None = None) -> Machine:

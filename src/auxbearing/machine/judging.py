@@ -127,6 +127,8 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
             if not bearing:
                 raise InputError.for_field("--candidates", spec, "an empty name in the list")
             _check_bearing_name(bearing, "--candidates")
+            if Path(bearing).is_file():  # a file named on the command line is where the user is, not the machine's
+                bearing = str(Path(bearing).resolve())
         tables = copy.deepcopy(data)
         for plane in tables["touchdown"]:
             plane["bearing"] = bearing
@@ -144,8 +146,10 @@ def _check_bearing_name(spec: str, field: str) -> None:
     from auxbearing.bearings.catalogue import get_bearing
     from auxbearing.bearings.geometry import bearing_names
 
-    if spec.lower().endswith(".toml") or Path(spec).is_file():
+    if Path(spec).is_file():
         return
+    if spec.lower().endswith(".toml"):
+        raise InputError.for_field(field, spec, f"no such bearing file (looked in {Path.cwd()})")
     try:
         get_bearing(spec)
     except (InputError, KeyError, ValueError):
