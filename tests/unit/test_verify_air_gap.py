@@ -69,3 +69,14 @@ def test_a_plane_that_never_warmed_reads_no_growth_rather_than_a_rounding_residu
     planes = [_plane("middle", 0.25e-3)]
     c = _air_gap(_cases(planes, [8e-6], [[0.25e-3], [0.25e-3 + 5.6e-17]]), CRITERIA)
     assert "+ 0 um of thermal growth" in c.evidence
+
+
+@pytest.mark.parametrize("grade", [5, 7.5, 12])
+def test_a_fit_grade_outside_the_tabulated_it6_to_it7_is_refused(grade):
+    # issue: IT12 was quietly taken as IT7 (25 um at 40 mm where ISO 286-1 gives 250 um), the spread understated
+    from auxbearing.common.errors import InputError
+    from auxbearing.machine.judging import verify_settings
+
+    assert verify_settings({"verify": {"fit_grade": 6.5}})["fit_grade"] == 6.5
+    with pytest.raises(InputError, match=rf"^verify.fit_grade = {grade}: must be between 6 and 7"):
+        verify_settings({"verify": {"fit_grade": grade}})

@@ -102,9 +102,20 @@ VERIFY: tuple[Param, ...] = (
 VERIFY_TABLE = by_key(VERIFY, "verify")
 
 
+#: The ISO tolerance grades the clearance spread is tabulated for (``verify.fit_grade``).
+FIT_GRADES = (6.0, 7.0)
+
+
 def verify_settings(data: dict) -> dict:
     """The ``[verify]`` table in SI with defaults."""
     given = read_table(data.get("verify"), VERIFY_TABLE, "verify.")
+    grade = given.get("fit_grade")
+    if grade is not None and not FIT_GRADES[0] <= grade <= FIT_GRADES[1]:
+        # the tolerance table holds IT6 and IT7 only (auxbearing.verify.cases.IT_TABLE): another grade was
+        # quietly taken as the nearer of the two, understating a coarse fit's clearance spread tenfold at IT12
+        raise InputError.for_field("verify.fit_grade", data["verify"]["fit_grade"],
+                                   f"must be between {FIT_GRADES[0]:g} and {FIT_GRADES[1]:g} (ISO 286-1 IT6-IT7, "
+                                   "ground bores and journals); for another fit give verify.clearance_tolerance")
     return {p.key: given.get(p.key, p.default) for p in VERIFY}
 
 
