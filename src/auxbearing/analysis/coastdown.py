@@ -560,6 +560,20 @@ def _preload_stress(ballset, clearance: float) -> float:
     return float(max(st.stress_inner.max(), st.stress_outer.max()))
 
 
+def shortest_coastdown(machine: Machine) -> float:
+    """Shortest simulated time a coast-down takes [s].
+
+    Two output steps (to rounding): the drop's record it starts from (over-rolling, damage) needs two samples.
+    """
+    return 2.0 * machine.simulation.output_step * (1.0 - 1e-9)
+
+
+def shortest_coastdown_rule(machine: Machine) -> str:
+    """The rule :func:`shortest_coastdown` sets, as an error says it."""
+    return (f"must be at least {2e6 * machine.simulation.output_step:g} us (two of the drop's output steps, the "
+            "shortest record a coast-down starts from)")
+
+
 def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: float | str | None = None,
                   mode: str = "auto", progress: Callable[[float, str], None] | None = None) -> CoastdownRun:
     """Run a machine from its drop to standstill (or for ``duration`` seconds); see the module docstring.
@@ -583,7 +597,12 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     machine = as_machine(machine)
     coast = machine.coastdown
     if duration is not None:
+        given = duration
         duration = simulated_time(duration)
+        if duration < shortest_coastdown(machine):
+            raise InputError.for_field("duration", given, shortest_coastdown_rule(machine))
+    elif not until_stop:
+        raise InputError.for_field("until_stop", False, "needs a duration (or run to standstill)")
     t_end = coast.max_time if (until_stop and duration is None) else float(duration or coast.max_time)
     wall_start = time.perf_counter()
     drop_length = min(machine.simulation.duration, t_end)

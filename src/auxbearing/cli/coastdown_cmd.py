@@ -45,7 +45,7 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.analysis.coastdown import run_coastdown
+    from auxbearing.analysis.coastdown import run_coastdown, shortest_coastdown, shortest_coastdown_rule
     from auxbearing.analysis.coastdown_life import cycles_of_worst_contact
     from auxbearing.analysis.plausibility import plausibility
     from auxbearing.cli.common import read_machine_file
@@ -63,6 +63,8 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
         seconds = to_si("--duration", duration, "time", "s")
         if not 0.0 < seconds <= 1e6:
             raise InputError.for_field("--duration", duration, "must lie in (0, 1e6] s")
+        if seconds < shortest_coastdown(machine):
+            raise InputError.for_field("--duration", duration, shortest_coastdown_rule(machine))
         until_stop = False
     elif not until_stop:
         raise InputError.for_field("--duration-only", "given", "needs --duration TIME")
