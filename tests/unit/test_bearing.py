@@ -201,3 +201,15 @@ def test_bearings_command_filters(tmp_path):
     assert {"6006", "6206", "6306", "6012", "6212", "6312", "209"} <= names and "6005" not in names
     bad = CliRunner().invoke(cli, ["bearings", "--type", "tapered"])
     assert bad.exit_code == 2 and "--type = 'tapered'" in bad.output
+
+
+@pytest.mark.parametrize("bore", ["-5", "0", "30-", "1-2-3", "abc", "-30-60"])
+def test_a_bore_filter_that_is_not_a_bore_or_a_range_is_refused(bore):
+    # issue: '-5' and '0' listed nothing with exit 0, and '30-' was read as 30 mm
+    from click.testing import CliRunner
+
+    from auxbearing.cli.main import cli
+
+    bad = CliRunner().invoke(cli, ["bearings", "--bore", bore])
+    assert bad.exit_code == 2
+    assert f"--bore = '{bore}': must be a bore or a range, each above 0" in bad.output

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import click
 
 from auxbearing.cli.common import echo_json, json_option
@@ -22,22 +24,31 @@ Examples:
 """
 
 
+_BORE = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:(?:-|\.\.)\s*(\d+(?:\.\d*)?|\.\d+)\s*)?([a-zA-Z]+)?\s*$")
+
+
 def _bore_range(text: str | None):
-    """'40', '40 mm', '30-60', '30-60 mm', '30..60mm' -> (low, high) in m; plain numbers are mm."""
+    """'40', '40 mm', '30-60', '30-60 mm', '30..60mm' -> (low, high) in m; plain numbers are mm.
+
+    >>> _bore_range("30-60"), _bore_range("40 mm")
+    ((0.03, 0.06), (0.04, 0.04))
+    """
     if text is None:
         return None
     from auxbearing.common.errors import InputError
     from auxbearing.common.units import to_si
 
-    raw = str(text).strip().replace("..", "-")
-    unit = "".join(ch for ch in raw if ch.isalpha()) or "mm"
-    numbers = raw.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ ").split("-")
+    rule = "must be a bore or a range, each above 0 (mm unless a unit is given), e.g. 40 or 30-60"
+    match = _BORE.match(str(text))
+    if match is None:  # '-5', '30-' or '30-60-90' would otherwise read as some other bore
+        raise InputError.for_field("--bore", text, rule)
+    low, high, unit = match.groups()
     try:
-        values = [to_si("--bore", f"{float(n)} {unit}", "length") for n in numbers if n.strip()]
+        values = [to_si("--bore", f"{float(n)} {unit or 'mm'}", "length") for n in (low, high) if n is not None]
     except ValueError:
-        raise InputError.for_field("--bore", text, "must be a bore or a range in mm, e.g. 40 or 30-60") from None
-    if len(values) not in (1, 2) or any(v < 0.0 for v in values):
-        raise InputError.for_field("--bore", text, "must be a bore or a range in mm, e.g. 40 or 30-60")
+        raise InputError.for_field("--bore", text, rule) from None
+    if any(v <= 0.0 for v in values):
+        raise InputError.for_field("--bore", text, rule)
     low, high = (values[0], values[0]) if len(values) == 1 else sorted(values)
     return low, high
 
