@@ -26,3 +26,18 @@ def test_an_error_names_the_field_it_was_asked_for_each_time():
 def test_a_number_in_another_default_unit_is_not_taken_for_the_same_conversion():
     assert convert("clearance", 0.2, "length", "mm") == pytest.approx(2e-4)
     assert convert("clearance", 0.2, "length") == 0.2
+
+
+def test_a_temperature_below_absolute_zero_is_refused_in_terms_of_absolute_zero():
+    # issue: '-273.15 degC' was refused as "must be > 0" while '-10 degC' passed, a rule a person reads in degC
+    from auxbearing.common.errors import InputError
+    from auxbearing.machine.model import machine_from_mapping
+
+    data = {"rotor": {"mass": "10 kg", "polar_inertia": "0.015 kg*m^2", "speed": "3000 rpm"},
+            "touchdown": [{"bearing": "QJ208", "radial_clearance": "0.15 mm"}],
+            "coastdown": {"ambient_temperature": "-273.15 degC"}}
+    with pytest.raises(InputError, match=r"^coastdown.ambient_temperature = '-273.15 degC': must be above absolute "
+                                         r"zero \(0 K, -273.15 degC\)$"):
+        machine_from_mapping(data)
+    data["coastdown"]["ambient_temperature"] = "-10 degC"
+    assert machine_from_mapping(data).coastdown.ambient_temperature == pytest.approx(263.15)

@@ -161,7 +161,9 @@ def check(param: Param, value: object, field: str | None = None, typed: object =
         raise InputError.for_field(name, shown, "must be finite")
     rule = param.rule
     if rule in ("positive", "optional_positive") and value <= 0.0:
-        raise InputError.for_field(name, shown, "must be > 0")
+        # a temperature is held in kelvin: "> 0" would read as above 0 degC to a person who typed degC
+        raise InputError.for_field(name, shown, "must be above absolute zero (0 K, -273.15 degC)"
+                                   if param.dimension == "temperature" else "must be > 0")
     if rule in ("nonnegative", "optional_nonnegative") and value < 0.0:
         raise InputError.for_field(name, shown, "must be >= 0")
     if rule == "unit_interval" and not 0.0 <= value <= 1.0:
