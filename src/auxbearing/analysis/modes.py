@@ -188,8 +188,46 @@ def linear_matrices(machine: Machine, state: str = "free") -> tuple[np.ndarray, 
     return mass, damp, gyro, stiff, tuple(springs)
 
 
+#: Most speeds a diagram is computed at (each is one eigenproblem of the linear model).
+MAX_SPEEDS = 1000
+
+
+def spin_speeds(speeds, field: str = "speeds") -> np.ndarray:
+    """Spin speeds [rad/s] from numbers in rad/s, strings with units, or one text listing them.
+
+    The text has one unit at its end ("0, 9000, 18000 rpm"; rpm when none is given), as the command line reads
+    it. ``field`` names the speeds in an error.
+
+    >>> spin_speeds("0, 9000 rpm").round(1).tolist(), spin_speeds([0.0, "100 rad/s"]).tolist()
+    ([0.0, 942.5], [0.0, 100.0])
+    """
+    from auxbearing.common.units import to_si
+
+    if isinstance(speeds, str):
+        parts = [p.strip() for p in speeds.split(",") if p.strip()]
+        unit = parts[-1].split()[-1] if parts and len(parts[-1].split()) > 1 else "rpm"
+        items, default = [p if len(p.split()) > 1 else f"{p} {unit}" for p in parts], "rpm"
+    else:
+        items, default = list(np.atleast_1d(np.asarray(speeds, dtype=object)).ravel()), "rad/s"
+    values = []
+    for item in items:
+        try:
+            values.append(to_si(field, item, "angular_speed", default))
+        except InputError as err:  # named with the whole list as given
+            raise InputError.for_field(field, speeds, f"{item!r}: {str(err).split(': ', 1)[-1]}") from None
+    if not values or len(values) > MAX_SPEEDS:
+        raise InputError.for_field(field, speeds, f"give 1 to {MAX_SPEEDS} speeds, e.g. '0, 9000, 18000 rpm'")
+    if not all(0.0 <= v < 1e6 for v in values):
+        raise InputError.for_field(field, speeds, "each speed must be at least 0 and below 1e6 rad/s")
+    return np.array(sorted(values))
+
+
 def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
-    """Damped natural frequencies of ``machine`` at each spin speed in ``speeds`` [rad/s] (module docstring)."""
+    """Damped natural frequencies of ``machine`` at each spin speed in ``speeds`` (module docstring).
+
+    ``speeds``: numbers in rad/s, strings with units, or one text as the command line takes (:func:`spin_speeds`).
+    """
+    speeds = spin_speeds(speeds)
     mass, damp, gyro, stiff, springs = linear_matrices(machine, state)
     size = mass.shape[0]
     locked = () if machine.tilt_free else (2, 3)
@@ -199,7 +237,7 @@ def campbell(machine: Machine, speeds, state: str = "free") -> Campbell:
     freqs, ratios, forwards = [], [], []
     above = _natural_below(machine)
     inverse = np.linalg.inv(mass)
-    for omega in np.asarray(speeds, float):
+    for omega in speeds:
         a = np.block([[np.zeros((size, size)), np.eye(size)],
                       [-inverse @ stiff, -inverse @ (damp + omega * gyro)]])
         values, vectors = eig(a)

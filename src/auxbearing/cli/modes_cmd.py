@@ -12,34 +12,20 @@ from pathlib import Path
 import click
 
 from auxbearing.cli.common import checked_out_dir, echo_json, json_option, option_named
-from auxbearing.common.errors import InputError
 
-#: Most speeds a diagram is computed at (each is one eigenproblem of the linear model).
+#: Most speeds of the default range: as many as a listed one may have (auxbearing.analysis.modes.MAX_SPEEDS; not
+#: imported here, so that --help answers without scipy).
 MAX_SPEEDS = 1000
 
 
 def _speeds(text: str | None, operating: float, points: int) -> list[float]:
     """Spin speeds [rad/s]: the listed ones ("0, 9000, 18000 rpm"), or 0 to 1.2 x the operating speed."""
-    from auxbearing.common.units import to_si
+    from auxbearing.analysis.modes import spin_speeds
 
     if text is None:
         top = 1.2 * abs(operating)
         return [top * i / (points - 1) for i in range(points)]
-    parts = [p.strip() for p in text.split(",") if p.strip()]
-    unit = parts[-1].split()[-1] if parts and len(parts[-1].split()) > 1 else "rpm"
-    values = []
-    for part in parts:
-        written = part if len(part.split()) > 1 else f"{part} {unit}"
-        try:
-            value = to_si("--speeds", written, "angular_speed", "rpm")
-        except InputError as err:  # named with the whole list as typed
-            raise InputError.for_field("--speeds", text, f"{written!r}: {str(err).split(': ', 1)[-1]}") from None
-        if not 0.0 <= value < 1e6:
-            raise InputError.for_field("--speeds", text, "each speed must be at least 0 and below 1e6 rad/s")
-        values.append(value)
-    if not values or len(values) > MAX_SPEEDS:
-        raise InputError.for_field("--speeds", text, f"give 1 to {MAX_SPEEDS} speeds, e.g. '0, 9000, 18000 rpm'")
-    return sorted(values)
+    return spin_speeds(text, "--speeds").tolist()
 
 
 def _by_speed(diagram) -> list[dict]:

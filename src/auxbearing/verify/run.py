@@ -168,6 +168,10 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         :meth:`Verification.to_html` draws them all in this process when the report is written).
     """
     start = time.perf_counter()
+    # the command line checks its options under their own names first; the API gets the same rules
+    for key, value, low, high in (("samples", samples, 0, 100000), ("workers", workers, 1, 256)):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high):
+            raise InputError.for_field(key, value, f"must be a whole number in [{low}, {high}]")
     data, name, base = machine_table(spec)
     if "campaign" in data:  # the file is one document: its [campaign] table is checked too
         from auxbearing.campaign.config import campaign_from_mapping
