@@ -213,3 +213,11 @@ def test_a_bore_filter_that_is_not_a_bore_or_a_range_is_refused(bore):
     bad = CliRunner().invoke(cli, ["bearings", "--bore", bore])
     assert bad.exit_code == 2
     assert f"--bore = '{bore}': must be a bore or a range, each above 0" in bad.output
+
+
+def test_a_pair_takes_its_preload_as_a_force_or_an_offset_in_its_name():
+    # issue: '7208 DB 8 um' was read as a bearing '7208 8 um' and refused for not being the 40 deg B design
+    assert get_bearing("7208 DB 8 um").preload_offset == pytest.approx(8e-6)
+    assert get_bearing("7208 DB 500 N").preload_force == pytest.approx(500.0)
+    with pytest.raises(InputError, match=r"^bearing = '7208 DB ultra': its preload 'ultra': cannot read it"):
+        get_bearing("7208 DB ultra")

@@ -54,12 +54,14 @@ def split_name(name: str) -> NameParts:
     NameParts(base='7208 BECBP', hybrid=False, arrangement='DB', preload='medium')
     >>> split_name("QJ208 hybrid")
     NameParts(base='QJ208', hybrid=True, arrangement=None, preload=None)
+    >>> split_name("7208 DB 8 um")
+    NameParts(base='7208', hybrid=False, arrangement='DB', preload='8 um')
     """
     text = " ".join(str(name).replace("/", " /").split())
     tokens = text.split(" ")
     hybrid, arrangement, preload = False, None, None
     kept: list[str] = []
-    for token in tokens:
+    for i, token in enumerate(tokens):
         bare = token.lstrip("/").lower()
         if bare in HYBRID_WORDS:
             hybrid = True
@@ -67,6 +69,10 @@ def split_name(name: str) -> NameParts:
             arrangement = bare.upper()
         elif bare in PRELOAD_WORDS and arrangement is not None:
             preload = bare
+        elif arrangement is not None and preload is None:
+            # everything after the arrangement is its preload ("8 um", "500 N"), checked where the set is made
+            preload = " ".join(tokens[i:])
+            break
         else:
             kept.append(token)
     base = " ".join(kept).replace(" /", "/").strip().rstrip("/")
@@ -198,7 +204,10 @@ def lookup(name: str, field: str = "bearing"):
                                    f"{bearing.name} is {bearing.label}")
     preload = parts.preload
     label = f"{bearing.name} {parts.arrangement}" + (f" {parts.preload}" if parts.preload else "")
-    return duplex_set(bearing, parts.arrangement, preload=preload, name=label)
+    try:
+        return duplex_set(bearing, parts.arrangement, preload=preload, name=label)
+    except InputError as err:  # named as the user wrote it: the preload is part of the name
+        raise InputError.for_field(field, name, f"its preload {str(err).split(' = ', 1)[-1]}") from None
 
 
 #: Bearing types the listing filters on, with the words a person may type for them.
