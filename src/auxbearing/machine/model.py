@@ -325,6 +325,10 @@ class Machine:
             if any(abs(other.position - plane.position) < 1e-6 for other in self.planes[:j]):
                 raise InputError.for_field(f"touchdown.{j}.position", f"{plane.position * 1e3:g} mm",
                                            "touchdown planes must sit at different axial positions")
+            if any(other.name == plane.name for other in self.planes[:j]):
+                # results and reports tell the planes apart by name
+                raise InputError.for_field(f"touchdown.{j}.name", plane.name, "touchdown planes must have "
+                                           "different names")
         modal = self.rotor.modal()
         if modal is not None and modal.n_modes:  # a rigid structure's planes may sit anywhere
             for j, plane in enumerate(self.planes):
@@ -727,6 +731,8 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     if not isinstance(tables, list) or not tables or not all(isinstance(t, dict) for t in tables):
         raise InputError.for_field("touchdown", tables, "give one or more [[touchdown]] tables")
     planes = []
+    positions: list[float] = []  # in the file's own frame, as written: an error quotes the user's text
+    names: dict[str, int] = {}
     for k, table in enumerate(tables):
         where = f"touchdown.{k}."
         for key in table:
@@ -746,11 +752,28 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         if "preload" in table:
             bearing = with_preload(bearing, table["preload"], where + "preload")
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
+        if "position" not in values and len(tables) >= 2:
+            raise InputError(f"{where}position: missing; required with two planes or more")
+        if "position" in values:
+            for j, other in enumerate(positions):
+                if abs(other - values["position"]) < 1e-6:
+                    raise InputError.for_field(where + "position", table["position"], "touchdown planes must sit at "
+                                               f"different axial positions (touchdown.{j} sits there too)")
+            positions.append(values["position"])
+        name = _text(table, "name", where, f"plane {k}")
+        if name in names:
+            # blame the name the user wrote, not the default an unnamed plane took
+            j = names[name]
+            written, other = (k, j) if "name" in table else (j, k)
+            raise InputError.for_field(f"touchdown.{written}.name", name, f"touchdown.{other} has this name too"
+                                       + ("" if "name" in tables[other] else ", the default of a plane without one")
+                                       + "; give each plane its own name")
+        names[name] = k
         if structure is not None:  # the file's node coordinates, from the mass centre inside
             if "position" not in values:
                 raise InputError(f"{where}position: missing; with rotor.matrices every plane sits on a node")
             values["position"] -= centre
-        planes.append(make_plane(bearing, values, _text(table, "name", where, f"plane {k}"), k))
+        planes.append(make_plane(bearing, values, name, k))
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")
     if not isinstance(data.get("coastdown") or {}, dict):
         raise InputError.for_field("coastdown", data["coastdown"], "must be a table of keys")

@@ -13,6 +13,11 @@ ROSS is imported only here, and only when a rotor comes from it: it is an option
 
 from __future__ import annotations
 
+import contextlib
+import io
+import os
+import sys
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +32,46 @@ LATERAL = (0, 1, 3, 4)
 BEARINGS = ("keep", "drop")
 
 
+def import_ross():
+    """The ``ross`` module, imported without a word on stdout.
+
+    ROSS imports ccp, which probes for REFPROP on import and prints its findings from compiled code straight onto
+    file descriptor 1 (and warns). A command's stdout must hold its own output alone (``--json`` is parsed), and
+    this project never uses REFPROP, so that notice is dropped: Python's and the C library's stdout both go to
+    the null device for the import.
+    """
+    if "ross" in sys.modules:
+        return sys.modules["ross"]
+    if sys.stdout is not None:
+        sys.stdout.flush()
+    try:
+        saved = os.dup(1)
+    except OSError:  # no descriptor 1 at all: nothing to keep clean
+        saved = None
+    try:
+        with open(os.devnull, "w") as sink, contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
+            warnings.filterwarnings("ignore", category=UserWarning, module=r"ccp(\.|$)")
+            if saved is not None:
+                os.dup2(sink.fileno(), 1)
+            try:
+                import ross
+            finally:
+                _flush_c_stdout()
+    finally:
+        if saved is not None:
+            os.dup2(saved, 1)
+            os.close(saved)
+    return ross
+
+
+def _flush_c_stdout() -> None:
+    # the C library buffers a pipe's output: unflushed, the notice would come out once descriptor 1 is back
+    import ctypes
+
+    with contextlib.suppress(OSError, AttributeError, TypeError):
+        ctypes.CDLL(None).fflush(None)
+
+
 def lateral_indices(n_nodes: int) -> np.ndarray:
     """Indices of x, y, alpha, beta of every node in ROSS's six-per-node ordering."""
     return np.array([ROSS_DOFS * n + d for n in range(n_nodes) for d in LATERAL])
@@ -34,8 +79,7 @@ def lateral_indices(n_nodes: int) -> np.ndarray:
 
 def structure_from_ross(rotor, source: str = "ROSS rotor") -> RotorStructure:
     """The free-free structure of a ``ross.Rotor``: its shaft and disks, without its bearings and seals."""
-    import ross
-
+    ross = import_ross()
     free = ross.Rotor(rotor.shaft_elements, rotor.disk_elements, [])
     nodes = np.asarray(rotor.nodes_pos, float)
     pick = np.ix_(lateral_indices(len(nodes)), lateral_indices(len(nodes)))
@@ -70,7 +114,7 @@ def read_ross_file(spec: str, base: Path | None, field: str):
     if not path.is_file():
         raise InputError.for_field(field, spec, "no such file (a rotor saved by ROSS's Rotor.save)")
     try:
-        import ross
+        ross = import_ross()
     except ImportError:
         raise InputError.for_field(field, spec, "needs ROSS: pip install 'auxbearing[ross]'") from None
     try:

@@ -25,6 +25,8 @@ Here: SI floats and numpy arrays; units are read at the machine file's boundary.
 from __future__ import annotations
 
 import math
+import zipfile
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -38,6 +40,11 @@ DOFS_PER_NODE = 4
 UX, UY, TX, TY = range(DOFS_PER_NODE)
 #: Largest distance between a station and the node it is put on [m].
 NODE_TOLERANCE = 1e-6
+#: A negative eigenvalue of K or of C's symmetric part no larger than this fraction of the largest one's size is
+#: round-off (a free-free K has four zero eigenvalues, its rigid motions; float32 exports reach about 4e-11).
+SEMI_DEFINITE_TOLERANCE = 1e-8
+#: The matrices of a structure, by field, with the array names a .npz file gives them.
+MATRICES = {"mass": "M", "stiffness": "K", "gyroscopic": "G", "damping": "C"}
 
 
 @dataclass(frozen=True, eq=False)
@@ -53,20 +60,52 @@ class RotorStructure:
 
     def __post_init__(self) -> None:
         n = DOFS_PER_NODE * len(self.nodes)
-        for name in ("mass", "stiffness", "gyroscopic", "damping"):
-            value = getattr(self, name)
-            if value is None:
-                continue
-            value = np.asarray(value, float)
-            if value.shape != (n, n) or not np.all(np.isfinite(value)):
+        given = {name: getattr(self, name) for name in MATRICES if getattr(self, name) is not None}
+        for name, value in given.items():
+            value = np.asarray(value)
+            if np.iscomplexobj(value) or not np.issubdtype(value.dtype, np.number):
+                raise InputError.for_field(f"rotor.matrices.{name}", MATRICES[name], "must hold real numbers")
+            value = value.astype(float)
+            if value.ndim != 2 or value.shape[0] != value.shape[1]:
                 raise InputError.for_field(f"rotor.matrices.{name}", f"shape {value.shape}",
-                                           f"must be a finite {n} x {n} matrix: four lateral DOFs per node")
+                                           f"must be a square {n} x {n} matrix: four lateral DOFs per node")
+            if not np.all(np.isfinite(value)):
+                raise InputError.for_field(f"rotor.matrices.{name}", MATRICES[name], "must hold finite numbers only")
+            given[name] = value
+        sizes = {value.shape[0] for value in given.values()}
+        if len(sizes) == 1 and n not in sizes:
+            # the matrices agree with each other, so the node list is the likelier mistake
+            size = sizes.pop()
+            raise InputError.for_field("rotor.matrices.nodes", f"{len(self.nodes)} nodes",
+                                       f"the node list and the matrices disagree: the matrices are {size} x {size}, "
+                                       f"four lateral DOFs per node for {size / DOFS_PER_NODE:g} nodes")
+        for name, value in given.items():
+            if value.shape != (n, n):
+                raise InputError.for_field(f"rotor.matrices.{name}", f"shape {value.shape}",
+                                           f"must be {n} x {n}: four lateral DOFs per node of the "
+                                           f"{len(self.nodes)} nodes")
             object.__setattr__(self, name, value)
-        if not np.allclose(self.mass, self.mass.T, rtol=1e-9, atol=0.0) or not np.allclose(
-                self.stiffness, self.stiffness.T, rtol=1e-9, atol=1e-12 * np.abs(self.stiffness).max()):
-            raise InputError.for_field("rotor.matrices", "M or K", "must be symmetric")
+        if not np.allclose(self.mass, self.mass.T, rtol=1e-9, atol=0.0):
+            raise InputError.for_field("rotor.matrices.mass", "M", "must be symmetric")
+        if not np.allclose(self.stiffness, self.stiffness.T, rtol=1e-9, atol=1e-12 * np.abs(self.stiffness).max()):
+            raise InputError.for_field("rotor.matrices.stiffness", "K", "must be symmetric")
         if not np.allclose(self.gyroscopic, -self.gyroscopic.T, atol=1e-12 * max(np.abs(self.gyroscopic).max(), 1.0)):
             raise InputError.for_field("rotor.matrices.gyroscopic", "G", "must be skew-symmetric (G = -G^T)")
+        try:
+            # the modal split factors M by Cholesky (scipy's eigh): a matrix it cannot factor has no modes
+            np.linalg.cholesky(self.mass)
+        except np.linalg.LinAlgError:
+            raise InputError.for_field("rotor.matrices.mass", "M", "must be symmetric positive definite "
+                                       f"({_spectrum(self.mass)})") from None
+        if not _semi_definite(self.stiffness):
+            raise InputError.for_field("rotor.matrices.stiffness", "K", "must be symmetric positive semi-definite "
+                                       f"({_spectrum(self.stiffness)})")
+        if self.damping is not None:
+            # only the symmetric part dissipates; a skew part is a circulatory or gyroscopic term
+            symmetric = 0.5 * (self.damping + self.damping.T)
+            if not _semi_definite(symmetric):
+                raise InputError.for_field("rotor.matrices.damping", "C", "must be positive semi-definite "
+                                           f"({_spectrum(symmetric)} for (C + C^T) / 2)")
 
     def mass_centre(self) -> tuple[float, float]:
         """(mass [kg], axial position of the mass centre in the structure's frame [m]), from M alone."""
@@ -93,6 +132,18 @@ class RotorStructure:
         r[UX::4, 3] = arm
         r[TY::4, 3] = 1.0
         return r
+
+
+def _semi_definite(matrix: np.ndarray) -> bool:
+    """True when the symmetric ``matrix`` has no eigenvalue below round-off of its largest (SEMI_DEFINITE_TOLERANCE)."""
+    values = np.linalg.eigvalsh(matrix)
+    return values.size == 0 or values[0] >= -SEMI_DEFINITE_TOLERANCE * np.abs(values).max()
+
+
+def _spectrum(matrix: np.ndarray) -> str:
+    """The smallest and largest eigenvalues of a symmetric matrix, for a message."""
+    values = np.linalg.eigvalsh(matrix)
+    return f"eigenvalues from {values[0]:.4g} to {values[-1]:.4g}"
 
 
 @dataclass(frozen=True, eq=False)
@@ -295,11 +346,30 @@ def read_structure(spec: str, base: Path | None, field: str) -> RotorStructure:
     path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
     if not path.is_file():
         raise InputError.for_field(field, spec, "no such file (a .npz of the arrays M, K, G, nodes and optionally C)")
+    unreadable = "cannot be read as an .npz file (numpy.savez's zip of arrays)"
+    try:
+        size = path.stat().st_size
+        path.open("rb").close()
+    except OSError as err:
+        raise InputError.for_field(field, spec, f"cannot be read ({_one_line(err)})") from None
+    if not size:
+        raise InputError.for_field(field, spec, f"{unreadable}: the file is empty")
+    if not zipfile.is_zipfile(path):
+        # np.load would go on to try .npy and pickle, and blame those
+        raise InputError.for_field(field, spec, f"{unreadable}: it is not a zip archive, or not a whole one")
     try:
         with np.load(path, allow_pickle=False) as arrays:
-            data = {name: np.asarray(arrays[name], float) for name in arrays.files}
-    except (OSError, ValueError) as err:
-        raise InputError.for_field(field, spec, f"is not a readable .npz file ({err})") from None
+            data = {name: np.asarray(arrays[name]) for name in arrays.files}
+    except (OSError, ValueError, EOFError, zipfile.BadZipFile, zlib.error) as err:
+        raise InputError.for_field(field, spec, f"{unreadable}: {_one_line(err)}") from None
+    for name in ("M", "K", "G", "C", "nodes"):
+        value = data.get(name)
+        if value is None:
+            continue
+        if np.iscomplexobj(value) or not np.issubdtype(value.dtype, np.number):
+            raise InputError.for_field(field, spec, f"its array {name!r} must hold real numbers (it holds "
+                                       f"{value.dtype})")
+        data[name] = value.astype(float)
     for name in ("M", "K", "G", "nodes"):
         if name not in data:
             raise InputError.for_field(field, spec, f"has no array {name!r} (it holds {sorted(data)}); give M, K, G, "
@@ -308,3 +378,7 @@ def read_structure(spec: str, base: Path | None, field: str) -> RotorStructure:
     if nodes.ndim != 1 or len(nodes) < 1 or not np.all(np.isfinite(nodes)) or np.any(np.diff(nodes) <= 0.0):
         raise InputError.for_field(field, spec, "its 'nodes' must be axial positions in metres, strictly increasing")
     return RotorStructure(data["M"], data["K"], data["G"], nodes, data.get("C"), source=path.name)
+
+
+def _one_line(err: Exception) -> str:
+    return " ".join(str(err).split()) or type(err).__name__

@@ -67,7 +67,9 @@ or the rotor and stated in the reports.
 In `[rotor]`, `matrices = "rotor.npz"` (relative to the machine file) gives the free-free rotor as matrices: a
 NumPy `.npz` of the arrays `M`, `K`, `G` (the gyroscopic matrix, to be multiplied by the spin speed), `nodes`
 (the nodes' axial positions in metres) and optionally `C`, in SI, over four degrees of freedom per node in the
-order x, y, theta_x, theta_y, with theta_y = dx/dz and theta_x = -dy/dz. Mass and inertias then come from the
+order x, y, theta_x, theta_y, with theta_y = dx/dz and theta_x = -dy/dz. `M` must be symmetric positive definite,
+`K` symmetric positive semi-definite (the rigid motions are its zero eigenvalues) and the symmetric part of `C`
+positive semi-definite, each square of side four times the number of nodes. Mass and inertias then come from the
 matrices (give neither), every `position` (of each `[[touchdown]]`, `[[unbalance]]` and station) is the axial
 coordinate of one of the matrices' `nodes`, in the matrices' own frame, and the rotor bends in its free-free
 elastic modes up to `max_mode_frequency` with the static correction at its stations (`reduction`): a force at a
