@@ -99,8 +99,12 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     for plane in summary["planes"]:
         table.add_column(plane["name"], justify="right")
 
+    def shown(fmt, value):  # a clearance that moved by -1e-9 um is "0.00", not "-0.00"
+        text = fmt.format(value)
+        return text[1:] if text.startswith("-") and isinstance(value, float) and float(text) == 0.0 else text
+
     def row(label, unit, fmt, key):
-        table.add_row(label, unit, *("-" if p.get(key) is None else fmt.format(p[key]) for p in summary["planes"]))
+        table.add_row(label, unit, *("-" if p.get(key) is None else shown(fmt, p[key]) for p in summary["planes"]))
 
     table.add_row("Hottest part", "°C", *(f"{max(p['max_temperature_C'].values()):.1f}" for p in summary["planes"]))
     row("Smallest journal/race clearance", "µm", "{:.1f}", "min_radial_clearance_um")
