@@ -147,6 +147,7 @@ def test_a_name_that_another_plane_takes_by_default_is_refused(tmp_path):
 
 
 # ----------------------------------------------------------------------------- 8: ROSS keeps stdout clean
+@pytest.mark.slow  # a drop of the ROSS compressor in its own process: about 20 s
 def test_a_ross_rotor_leaves_json_on_stdout_alone(tmp_path):
     pytest.importorskip("ross")
     folder = tmp_path / "ross"
