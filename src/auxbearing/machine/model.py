@@ -590,6 +590,19 @@ def _text(table: dict, key: str, where: str, fallback: str) -> str:
     return value.strip()
 
 
+def _inline_pair(row: BearingGeometry, arrangement: object, field: str) -> DuplexSet:
+    """A matched pair of an inline bearing table's row (its ``arrangement`` key; the preload is the plane's key)."""
+    from auxbearing.bearings.duplex import ARRANGEMENTS, duplex_set
+
+    text = str(arrangement).strip().upper()
+    if text not in ARRANGEMENTS:
+        raise InputError.for_field(field, arrangement, "must be one of " + ", ".join(ARRANGEMENTS))
+    if row.type != "angular_contact":
+        raise InputError.for_field(field, arrangement, f"a matched pair needs an angular-contact row; this row is "
+                                   f"{row.label}")
+    return duplex_set(row, text, name=f"{row.name} {text}")
+
+
 def with_preload(bearing, preload, field: str) -> DuplexSet:
     """A matched pair with its preload given apart from its name (a class, a force or an axial offset)."""
     from auxbearing.bearings.duplex import duplex_set
@@ -743,10 +756,14 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         if "radial_clearance" not in values:
             raise InputError(f"{where}radial_clearance: missing; every [[touchdown]] needs it")
         if isinstance(table.get("bearing"), dict):  # an inline [touchdown.bearing] table
+            inline = dict(table["bearing"])
+            arrangement = inline.pop("arrangement", None)  # a matched pair of this row
             try:
-                bearing = bearing_from_mapping(table["bearing"], name=f"plane {k} bearing", prefix=where + "bearing.")
+                bearing = bearing_from_mapping(inline, name=f"plane {k} bearing", prefix=where + "bearing.")
             except InputError as err:
                 raise InputError(str(err)) from None
+            if arrangement is not None:
+                bearing = _inline_pair(bearing, arrangement, where + "bearing.arrangement")
         else:
             bearing = read_bearing_spec(_text(table, "bearing", where, ""), base, where + "bearing")
         if "preload" in table:

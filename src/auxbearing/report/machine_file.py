@@ -61,7 +61,8 @@ file (relative to the machine file) or an inline table with the keys of a bearin
 (`examples/my_bearing.toml`). A matched pair of angular-contact bearings is named as makers write it
 (`"7208 DB"`, `"7208 DF"`, `"7208 DT"`); its `preload` is `light`, `medium` or `heavy` (this project's classes:
 1, 2 and 4 % of a row's C0), a force (`"500 N"`) or an axial offset (`"8 um"`), given in the name
-(`"7208 DB medium"`) or as the key `preload`. A default written as "derived" is computed from the bearing
+(`"7208 DB medium"`) or as the key `preload`; an inline table of an angular-contact row makes a pair of it with
+the key `arrangement` (`"DB"`, `"DF"` or `"DT"`). A default written as "derived" is computed from the bearing
 or the rotor and stated in the reports.
 
 In `[rotor]`, `matrices = "rotor.npz"` (relative to the machine file) gives the free-free rotor as matrices: a

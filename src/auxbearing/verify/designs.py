@@ -64,6 +64,12 @@ def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
         table["inner_groove_ratio"] = float(x[1])
         table["outer_groove_ratio"] = float(x[1] + offset)
         plane["bearing"] = table
+        pair = machine.planes[k].bearing_set
+        if pair is not None:  # the new geometry is each row's: the pair keeps its arrangement and preload
+            table["arrangement"] = pair.arrangement
+            # a preload class stays a class (a share of the new row's C0, as the maker's class would be); a
+            # force stays the force and an offset the offset
+            plane["preload"] = pair.preload if not pair.preload.endswith("offset") else f"{pair.preload_offset!r} m"
         clearance = machine.planes[k].radial_clearance * x[2]
         plane["radial_clearance"] = f"{float(clearance)!r} m"
         if "journal_radius" in plane:
