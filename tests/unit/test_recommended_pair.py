@@ -52,3 +52,11 @@ def test_an_inline_row_with_an_arrangement_is_checked_as_a_pair():
     with pytest.raises(InputError, match=r"^touchdown.0.bearing.arrangement = 'DB': a matched pair needs an "
                                          r"angular-contact row"):
         machine_from_mapping(data, name, base)
+
+
+def test_a_preload_given_twice_is_refused():
+    # issue: bearing = "7208 DB medium" with preload = "heavy" quietly ran heavy
+    data, name, base = _on("7208 DB medium", "heavy")
+    with pytest.raises(InputError, match=r"^touchdown.0.preload = 'heavy': the bearing's name gives its preload "
+                                         r"already \('7208 DB medium'\); give it once"):
+        machine_from_mapping(data, name, base)

@@ -767,6 +767,12 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         else:
             bearing = read_bearing_spec(_text(table, "bearing", where, ""), base, where + "bearing")
         if "preload" in table:
+            from auxbearing.bearings.catalogue import split_name
+
+            named = split_name(table["bearing"]).preload if isinstance(table.get("bearing"), str) else None
+            if named is not None:  # two preloads for one pair: neither may quietly win
+                raise InputError.for_field(where + "preload", table["preload"], f"the bearing's name gives its "
+                                           f"preload already ({table['bearing']!r}); give it once")
             bearing = with_preload(bearing, table["preload"], where + "preload")
         values["axial_direction"] = _text(table, "axial_direction", where, "both")
         if "position" not in values and len(tables) >= 2:
