@@ -678,6 +678,10 @@ def _read_unbalance(tables) -> tuple:
     return tuple(planes)
 
 
+#: ``[rotor]`` keys of an elastic rotor alone (its modes and their reduction).
+ELASTIC_ONLY = ("max_mode_frequency", "modal_damping", "reduction")
+
+
 def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = None) -> Machine:
     """A machine from the tables of a machine TOML file (values with units); every key checked first.
 
@@ -713,10 +717,16 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         rotor_table = dict(rotor_table)
         structure, ross_supports = _ross_rotor(rotor_table, base)
     reduction = "static_correction"  # text, not a number: MachineRotor checks it
-    if isinstance(rotor_table, dict) and "reduction" in rotor_table:
+    if isinstance(rotor_table, dict) and "reduction" in rotor_table and structure is not None:
         rotor_table = dict(rotor_table)
         reduction = rotor_table.pop("reduction")
-    rotor_values = read_table(rotor_table, TABLES["rotor"], "rotor.")
+    rotor_values = read_table({k: v for k, v in rotor_table.items() if k != "reduction"}
+                              if isinstance(rotor_table, dict) else rotor_table, TABLES["rotor"], "rotor.")
+    if structure is None:  # what only an elastic rotor reads would be quietly dropped on a rigid one
+        for key in ELASTIC_ONLY:
+            if isinstance(rotor_table, dict) and key in rotor_table:
+                raise InputError.for_field(f"rotor.{key}", rotor_table[key], "applies to a rotor given by its "
+                                           "matrices (rotor.matrices or rotor.ross_file); this rotor is rigid")
     if structure is not None:
         for key in ("mass", "polar_inertia", "transverse_inertia"):
             if key in rotor_values:

@@ -1,5 +1,6 @@
-"""The geometry search of a machine on a matched pair changes each row's geometry and keeps the pair (issue: every
-search point and the recommended geometry of a '7208 DB' design were single rows without preload)."""
+"""What a machine file says once and means: the geometry search of a design on a matched pair keeps the pair
+(issue: every search point of a '7208 DB' design was one row without preload), and keys that contradict or are
+ignored by the rest of the file are refused."""
 
 import math
 
@@ -59,4 +60,14 @@ def test_a_preload_given_twice_is_refused():
     data, name, base = _on("7208 DB medium", "heavy")
     with pytest.raises(InputError, match=r"^touchdown.0.preload = 'heavy': the bearing's name gives its preload "
                                          r"already \('7208 DB medium'\); give it once"):
+        machine_from_mapping(data, name, base)
+
+
+@pytest.mark.parametrize(("key", "value"), [("modal_damping", 0.02), ("max_mode_frequency", "2 kHz"),
+                                            ("reduction", "modal")])
+def test_keys_of_an_elastic_rotor_on_a_rigid_one_are_refused(key, value):
+    # issue: they were quietly dropped, as if the rotor bent with them
+    data, name, base = machine_table("blower")
+    data["rotor"][key] = value
+    with pytest.raises(InputError, match=rf"^rotor.{key} = .*: applies to a rotor given by its matrices"):
         machine_from_mapping(data, name, base)
