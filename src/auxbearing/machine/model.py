@@ -18,7 +18,7 @@ from pathlib import Path
 from auxbearing.bearings.duplex import DuplexSet
 from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import accept, read_table, unknown
+from auxbearing.common.params import accept, display_value, read_table, unknown
 from auxbearing.core.hertz import line_contact_constant
 from auxbearing.machine.params import (
     AXIAL_DIRECTIONS,
@@ -437,10 +437,11 @@ class Machine:
                "structure": _describe_structure(r),
                "planes": [_describe_plane(p) for p in self.planes],
                "stations": [kind.describe(s) for kind in station_kinds() for s in of_kind(self.stations, kind.KIND)],
-               "drop": {p.key: getattr(self.simulation, p.key) for p in SIMULATION},
-               "coastdown": {**{p.key: getattr(self.coastdown, p.key) for p in COASTDOWN},
+               # the file's keys with the values as its reader would type them, unit included ("25 degC")
+               "drop": {p.key: display_value(p, getattr(self.simulation, p.key)) for p in SIMULATION},
+               "coastdown": {**{p.key: display_value(p, getattr(self.coastdown, p.key)) for p in COASTDOWN},
                              "vacuum": self.coastdown.vacuum},
-               "life": {**{p.key: getattr(self.life, p.key) for p in LIFE},
+               "life": {**{p.key: display_value(p, getattr(self.life, p.key)) for p in LIFE},
                         "dent_accumulation": self.life.dent_accumulation}}
         return out
 
