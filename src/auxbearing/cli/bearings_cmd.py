@@ -79,7 +79,7 @@ def bearings_command(types, bore, sources, as_json):
     from rich.table import Table
 
     table = Table(title=f"Bearings ({len(rows)}): C, C0 computed [kN] (the maker's in brackets)")
-    for col in ("name", "type", "d×D×B mm", "Z × D_w mm", "C", "C0", "geometry"):
+    for col in ("name", "type", "d×D×B mm", "Z × D_w mm", "C kN", "C0 kN", "geometry"):
         table.add_column(col, no_wrap=True)
     short = {"deep_groove": "DG", "angular_contact": "AC", "four_point": "4P"}
     for r in rows:
