@@ -548,16 +548,30 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
     if bearings:
         out["scenario"] = outcome(machine, ds, planes)
         if run.model.orbit is not None:
-            least = run.model.orbit[2]
-            out["scenario"]["levitation"] = {
-                "stable": least.real < 0.0, "least_damped_mode_Hz": abs(least.imag) / (2.0 * math.pi),
-                "least_damped_rate_per_s": least.real,
-                "note": ("the levitated machine, linearised at its speed, is stable; the run starts on its steady "
-                         "unbalance orbit" if least.real < 0.0 else "the levitated machine is UNSTABLE at its speed: "
-                         f"a mode near {abs(least.imag) / (2.0 * math.pi):.1f} Hz grows at {least.real:+.2f} 1/s "
-                         "(the controller does not hold it); the run starts from the levitated statics")}
+            out["scenario"]["levitation"] = _levitation(run.model.orbit[2])
         out["amb"] = _amb_summary(machine, model, run.grid, bearings)
     return out
+
+
+def _levitation(least: complex) -> dict:
+    """The levitated machine's stability from its least damped eigenvalue.
+
+    :func:`auxbearing.machine.levitation.steady_orbit` sets a real part that is zero to the computation's precision
+    to exactly 0. An undamped mode is told apart from a growing one: neither holds the rotor, but a rate of
+    "+0.00 1/s" read as a growth would be rounding noise reported as a result.
+    """
+    hz = abs(least.imag) / (2.0 * math.pi)
+    if least.real < 0.0:
+        note = "the levitated machine, linearised at its speed, is stable; the run starts on its steady unbalance orbit"
+    elif least.real == 0.0:
+        note = (f"the levitated machine is NOT HELD at its speed: a mode near {hz:.1f} Hz is undamped (its rate is "
+                "zero to the computation's precision: the bearings neither damp nor restore it); the run starts from "
+                "the levitated statics")
+    else:
+        note = (f"the levitated machine is UNSTABLE at its speed: a mode near {hz:.1f} Hz grows at {least.real:+.3g} "
+                "1/s (the controller does not hold it); the run starts from the levitated statics")
+    return {"stable": least.real < 0.0, "undamped": least.real == 0.0, "least_damped_mode_Hz": hz,
+            "least_damped_rate_per_s": least.real, "note": note}
 
 
 def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[dict]:

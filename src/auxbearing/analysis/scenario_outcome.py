@@ -1,10 +1,12 @@
 """What a scenario led to: touchdown or not, the magnetic bearings' saturation, re-levitation.
 
 Read from a run's time series (:func:`auxbearing.analysis.drop.machine_dataset`) on its output grid, so a contact
-shorter than the output step between two samples is not seen here (the drop's peaks and first impacts, from the
-observer at every step, are). The classes:
+shorter than the output step between two samples is not seen there; the first contact is the earliest of the grid's
+and the planes' first impacts (from the observer at every step). Contacts count over the whole run: a rotor that
+its bearings let fall before the strike has touched down (``touched_before_strike``). The classes:
 
-* ``no touchdown``: the rotor never touched a touchdown bearing after the strike;
+* ``not struck``: the run ends before the scenario's time (``struck`` false): nothing of it was simulated;
+* ``no touchdown``: the rotor never touched a touchdown bearing;
 * ``re-levitated``: every magnetic bearing works at the end and the rotor left its touchdown bearings for good:
   no contact in the last :data:`SETTLED` of the run after the strike (at least :data:`SETTLED_MIN`), and held there
   within :data:`HELD_EXCURSION` of each plane's clearance (not a free flight between two bounces);
@@ -42,7 +44,16 @@ def saturation(times: np.ndarray, currents: np.ndarray, limit: float) -> tuple[f
     """Total time [s] a current spent at its limit and the intervals [(start, end)] on the grid."""
     if not math.isfinite(limit) or len(times) < 2:
         return 0.0, []
-    at = np.abs(currents) >= SATURATED * limit
+    return intervals_of(times, saturated(currents, limit))
+
+
+def saturated(currents: np.ndarray, limit: float) -> np.ndarray:
+    """Whether each current is at its limit (within :data:`SATURATED`)."""
+    return np.abs(currents) >= SATURATED * limit
+
+
+def intervals_of(times: np.ndarray, at: np.ndarray) -> tuple[float, list[tuple[float, float]]]:
+    """Total time [s] a flag on the grid is set and its intervals [(start, end)], disjoint and in order."""
     intervals, start = [], None
     for t, flag in zip(times, at, strict=True):
         if flag and start is None:
@@ -64,33 +75,29 @@ def outcome(machine, ds, planes: list[dict]) -> dict:
     t = ds.time.values
     if not s.levitated or len(t) < 2:
         return out
-    after = t >= s.time
-    touching = (ds.normal_force.values > 0.0).any(axis=1) & after
+    touching = (ds.normal_force.values > 0.0).any(axis=1)
     end = float(t[-1])
     bearings = of_kind(machine.stations, "amb")
     powered = all(math.isinf(v) or (s.restore_time is not None and end >= s.time + s.restore_time)
                   for b in bearings for v in s.failure_times(b)[:2 - b.axial])
-    saturated = []
-    for i, b in enumerate(bearings):
-        if "amb_current_x" not in ds:
-            break
-        total, spans = 0.0, []
-        for axis in ("x", "y", "z"):
-            if f"amb_current_{axis}" in ds:
-                time, own = saturation(t, ds[f"amb_current_{axis}"].values[:, i], b.current_limit())
-                total, spans = total + time, spans + own
-        spans.sort()
-        saturated.append({"name": b.name, "saturated_ms": total * 1e3,
-                          "saturated_at_end": bool(spans and spans[-1][1] >= end),
-                          "first_intervals_ms": [[a * 1e3, c * 1e3] for a, c in spans[:5]]})
-    out["saturation"] = saturated
-    if not touching.any():
-        out.update(outcome="no touchdown", first_contact_ms=None, last_contact_ms=None, relevitated_at_ms=None)
+    out["saturation"] = _saturation(s, bearings, ds, t) if "amb_current_x" in ds else []
+    # the observer sees every step: a contact between two output samples, or before the first one on the grid
+    impacts = [p["first_impact_ms"] * 1e-3 for p in planes if p.get("first_impact_ms") is not None]
+    first = min([*impacts, *(float(v) for v in t[touching][:1])], default=None)
+    struck = s.time < end
+    out["struck"] = struck
+    if first is None:
+        out.update(outcome="no touchdown" if struck else _not_struck(s, end), first_contact_ms=None,
+                   last_contact_ms=None, relevitated_at_ms=None, touched_before_strike=False)
         return out
-    contact_times = t[touching]
-    first, last = float(contact_times[0]), float(contact_times[-1])
+    # a contact only the observer saw (shorter than the output step) is the last one the grid can date
+    last = float(t[touching][-1]) if touching.any() else first
+    out.update(first_contact_ms=first * 1e3, last_contact_ms=last * 1e3, relevitated_at_ms=None,
+               touched_before_strike=bool(first < s.time))
+    if not struck:
+        out["outcome"] = _not_struck(s, end) + f"; the levitated rotor touched down at {first * 1e3:.2f} ms"
+        return out
     settled = max(SETTLED * (end - s.time), SETTLED_MIN)
-    out.update(first_contact_ms=first * 1e3, last_contact_ms=last * 1e3, relevitated_at_ms=None)
     window = t >= end - settled
     share = float(touching[window].mean())
     out["contact_share_at_end"] = share
@@ -112,6 +119,35 @@ def outcome(machine, ds, planes: list[dict]) -> dict:
         out["outcome"] = "sustained forward whirl"
     else:
         out["outcome"] = "held in contact"
-    if out["outcome"].startswith(("sustained", "held")) and any(b["saturated_at_end"] for b in saturated):
+    if out["outcome"].startswith(("sustained", "held")) and any(b["saturated_at_end"] for b in out["saturation"]):
         out["outcome"] += ", the controller saturated"
+    return out
+
+
+def _not_struck(s, end: float) -> str:
+    return (f"not struck: the run ends at {end * 1e3:.4g} ms, before the scenario's time {s.time * 1e3:.4g} ms "
+            "(lengthen the run or move the scenario into it)")
+
+
+def _saturation(s, bearings, ds, t: np.ndarray) -> list[dict]:
+    """Each bearing's time at its current limit: while any of its axes is there, each instant counted once.
+
+    Only while the axis' amplifier has power (:func:`auxbearing.core.amb.powered`): an unpowered axis' states
+    freeze, and a current frozen at the limit is no controller asking for more than it gets.
+    """
+    end = float(t[-1])
+    out = []
+    for i, b in enumerate(bearings):
+        fail_x, fail_y, restore = s.failure_times(b)[:3]
+        at = np.zeros(t.size, bool)
+        for axis, fail in (("x", fail_x), ("y", fail_y), ("z", fail_x)):
+            column = f"amb_current_{axis}"
+            if column not in ds or not math.isfinite(b.current_limit()):
+                continue
+            powered = (t < fail) | (t >= restore)
+            at |= saturated(np.nan_to_num(ds[column].values[:, i]), b.current_limit()) & powered
+        total, spans = intervals_of(t, at)
+        out.append({"name": b.name, "saturated_ms": total * 1e3,
+                    "saturated_at_end": bool(spans and spans[-1][1] >= end),
+                    "first_intervals_ms": [[a * 1e3, c * 1e3] for a, c in spans[:5]]})
     return out

@@ -23,6 +23,13 @@ from auxbearing.core import machine as cm
 
 #: Central differences step, as a share of each state's error scale's unit (clearance, fall speed, ...).
 STEP = 1e-6
+#: A growth rate this share of the system's fastest rate (its largest |eigenvalue|) or less is zero to the
+#: precision the Jacobian is known to: each central difference carries a rounding error of about eps / STEP
+#: (2e-10 of the entry, Press et al., Numerical Recipes, 3rd ed., 2007, Sec. 5.7) and the eigenvalues of a
+#: non-normal matrix move by its eigenvector condition number times that (Bauer-Fike theorem; here tens to
+#: hundreds), so a smaller real part has no sign worth reporting: an undamped (neutral) mode, neither growing
+#: nor decaying.
+NEUTRAL = 1e-7
 PHASES = (0.0, 0.5 * math.pi, math.pi, 1.5 * math.pi)
 
 
@@ -42,9 +49,10 @@ def steady_orbit(core: cm.Machine, y0: np.ndarray, states: np.ndarray,
                  scales: np.ndarray) -> tuple[np.ndarray | None, complex]:
     """(Y, s): the harmonic orbit about ``y0`` and the least damped eigenvalue s of the levitated machine.
 
-    Y is complex, over ``states``; s is in 1/s of the model linearised at ``y0``; Y is None when s grows
-    (Re s >= 0: no steady orbit to start on). ``scales``: each state's unit for the difference steps. ``y0`` holds
-    the statics and the spin speed.
+    Y is complex, over ``states``; s is in 1/s of the model linearised at ``y0``, its real part set to exactly 0
+    when it is zero to the computation's precision (:data:`NEUTRAL`); Y is None unless s decays (Re s >= 0, a
+    growing or an undamped mode: no steady orbit to start on). ``scales``: each state's unit for the difference
+    steps. ``y0`` holds the statics and the spin speed.
     """
     omega = float(y0[cm.OMEGA])
     out = np.zeros(y0.size)
@@ -67,6 +75,8 @@ def steady_orbit(core: cm.Machine, y0: np.ndarray, states: np.ndarray,
     jac /= len(PHASES)
     eigenvalues = np.linalg.eigvals(jac)
     least = complex(eigenvalues[np.argmax(eigenvalues.real)])
+    if abs(least.real) <= NEUTRAL * float(np.abs(eigenvalues).max()):
+        least = complex(0.0, least.imag)  # its sign is rounding noise: neither a growth nor a decay to report
     if least.real >= 0.0:
         return None, least
     f = [rate(y0, phi) for phi in PHASES]

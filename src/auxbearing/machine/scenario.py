@@ -59,6 +59,8 @@ PARAMS: tuple[Param, ...] = (
           "The verification requires the rotor levitated again within this time of the strike", "ours: not asked"),
 )
 TABLE = by_key(PARAMS, "scenario")
+#: Keys every kind of scenario takes beside ``name`` and ``kind``.
+COMMON_KEYS = ("time", "relevitate_within")
 #: Every key a scenario can have with a unit, for the documentation: its own and its load's (ms from its time).
 DOC_PARAMS = (*PARAMS, *(p._replace(section="scenario") for p in LOAD_PARAMS if p.key != "start"))
 #: Default shape of each overload's pulse.
@@ -175,7 +177,9 @@ def read_scenarios(tables, bearings: tuple = ()) -> tuple[Scenario, ...]:
             raise InputError.for_field(where + "name", name, "every [[scenario]] needs a name")
         if kind not in KINDS:
             raise InputError.for_field(where + "kind", kind, f"must be one of {', '.join(KINDS)}")
-        allowed = (*KIND_KEYS[kind], *TABLE)
+        # the keys of every kind, then the kind's own; a failure's keys (decay_time, ...) are in TABLE too, for
+        # their units, but belong to the failures alone: each key listed once, the others refused
+        allowed = (*COMMON_KEYS, *KIND_KEYS[kind])
         for key in table:
             if key not in allowed:
                 raise InputError.for_field(where + key, table[key], f"not a key of a {kind} scenario; its keys: "

@@ -8,12 +8,12 @@ until the scenario's time; without a scenario they fail at the drop (t = 0), whi
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import Param, by_key
+from auxbearing.common.params import Param, by_key, display_value
 from auxbearing.core import amb as kernel
 from auxbearing.machine.stations.load import text_key
 
@@ -21,6 +21,9 @@ KIND = kernel.NAME
 #: Permeability of free space [H/m].
 MU0 = 4e-7 * math.pi
 CIRCUIT = ("turns", "pole_area", "air_gap", "bias_current")
+#: 90 deg less the rounding of a unit conversion ("90 deg" may land a few ulp either side of pi / 2, where
+#: cos is 6e-17 rather than 0): the pole angle stays below it.
+RIGHT_ANGLE = math.pi / 2 - 1e-12
 PARAMS: tuple[Param, ...] = (
     Param(KIND, "position", "length", None, "mm", "finite", "Axial position of the actuator from the mass centre; "
           "with rotor.matrices, the coordinate of one of the matrices' nodes", "required"),
@@ -96,7 +99,13 @@ class MagneticBearing:
     controller: tuple | None = None
     #: an axial (thrust) bearing: one axis along the spin axis, on the rotor's axial position
     axial: bool = False
+    #: the keys as the machine file wrote them, (key, text) pairs: a refusal after reading quotes the user's text
+    given: tuple = field(default=(), compare=False, repr=False)
     KIND = KIND
+
+    def as_written(self, key: str) -> object:
+        """A key's value as the file wrote it, or its SI value in the key's display unit (the Python API)."""
+        return dict(self.given).get(key, display_value(TABLE[key], getattr(self, key)))
 
     @property
     def order(self) -> int:
@@ -199,6 +208,9 @@ def read(tables) -> tuple[MagneticBearing, ...]:
                         if isinstance(t, dict) else "radial")
     for (where, name, values, table), controller, axis in zip(read_tables(tables, KIND, TABLE, ("position",), "AMB"),
                                                               controllers, axes, strict=True):
+        if any(b.name == name for b in out):  # an axis_loss or sensor_failure scenario names its bearing by it
+            raise InputError.for_field(where + "name", name, "two [[amb]] tables of one name (a scenario names "
+                                       "the bearing it fails by it)")
         values["axial"] = axis == "axial"
         if values["axial"] and "sensor_position" in values:
             raise InputError.for_field(where + "sensor_position", table.get("sensor_position"), "an axial bearing "
@@ -221,7 +233,14 @@ def read(tables) -> tuple[MagneticBearing, ...]:
                 if key in values:
                     raise InputError.for_field(where + key, table.get(key), "give either the force law's slopes "
                                                "or the magnetic circuit (turns, ...), not both")
-            k = MU0 * values["turns"] ** 2 * values["pole_area"] * math.cos(values.get("pole_angle", math.pi / 8)) / 4
+            angle = values.get("pole_angle", math.pi / 8)
+            # checked before anything built on cos(alpha): past 90 deg the slopes change sign and the kp check below
+            # would blame the gain for the geometry
+            if not 0.0 <= angle < RIGHT_ANGLE:
+                raise InputError.for_field(where + "pole_angle", table.get("pole_angle"), "must lie in [0, 90) deg: "
+                                           "a pole pair pulls along its axis with cos(pole_angle) of its poles' pull "
+                                           "(Schweitzer & Maslen, Magnetic Bearings, 2009, Ch. 2), nothing at 90 deg")
+            k = MU0 * values["turns"] ** 2 * values["pole_area"] * math.cos(angle) / 4
             i0, g0 = values["bias_current"], values["air_gap"]
             values.update(current_stiffness=4 * k * i0 / g0 ** 2, position_stiffness=4 * k * i0 ** 2 / g0 ** 3)
         elif "current_stiffness" not in values:
@@ -237,7 +256,9 @@ def read(tables) -> tuple[MagneticBearing, ...]:
             values["controller"] = _filtered_pid(values, where)
         if "max_voltage" in values and "coil_inductance" not in values:
             raise InputError(f"{where}coil_inductance: missing; max_voltage limits the current's rate through it")
-        bearing = MagneticBearing(name=name, **values)
+        written = tuple((key, value if isinstance(value, (str, int, float)) else str(value))
+                        for key, value in table.items() if key in TABLE)
+        bearing = MagneticBearing(name=name, **values, given=written)
         if controller is None and bearing.closed_loop_stiffness() <= 0.0:
             raise InputError.for_field(where + "kp", table.get("kp"), "too small to hold the rotor: kp "
                                        "current_stiffness must exceed position_stiffness "
@@ -276,6 +297,9 @@ def read_controller(value, where: str) -> tuple:
             system = value
         elif isinstance(value, dict) and set(value) == {"num", "den"}:
             num, den = (np.atleast_1d(np.asarray(value[k], float)) for k in ("num", "den"))
+            if not np.any(den):  # an all-zero den trims to nothing, which the properness test would call improper
+                raise InputError.for_field(where, value, "the denominator den must not be all zeros (C(s) = num / "
+                                           "den divides by it)")
             if len(np.trim_zeros(num, "f")) > len(np.trim_zeros(den, "f")):
                 raise InputError.for_field(where, value, "must be proper: a derivative needs its filter "
                                            "(kd s / (1 + s / w))")
@@ -483,6 +507,50 @@ def levitated_state(machine, modal, bearings) -> dict:
             else:
                 per_axis += [measured, 0.0, -b.kp * measured]
         states.append(per_axis)
+    if machine.active_scenario().levitated:  # a drop from the centre only reports the statics it never reaches
+        _check_levitation(machine, bearings, states)
     return {"q": q[:lateral], "z": float(q[lateral]) if axial else 0.0, "states": states,
             "offsets": [abs(float(q[lateral])) if b.axial else float(np.hypot(*(act @ q for act, _ in axes(b, i))))
                         for i, b in enumerate(bearings)]}
+
+
+def check_levitation(machine) -> None:
+    """Refuse magnetic bearings too weak to levitate the rotor that any of the machine's scenarios starts from.
+
+    A whole-file check (:func:`_check_levitation` on the levitated statics, which do not depend on the scenario),
+    for :func:`auxbearing.machine.combinations.check_combinations`; a run starting levitated makes it on its own.
+    """
+    from auxbearing.machine.stations import of_kind
+
+    bearings = of_kind(machine.stations, KIND)
+    start = next((s for s in machine.scenarios if s.levitated), None)
+    if bearings and start is not None:
+        levitated_state(machine.with_scenario(start.name), machine.modal(), bearings)
+
+
+def _check_levitation(machine, bearings, states) -> None:
+    """Refuse a bearing whose current limit cannot carry its share of the static load (before any run starts).
+
+    Levitated, each axis' steady current carries the load the statics give it (weight, process forces), the force
+    law F = k_i i + k_s u (Schweitzer & Maslen, Magnetic Bearings, 2009, Ch. 2). An axis that needs its current
+    limit or more to do so is saturated at rest: its clipped command gives less than the load and leaves nothing
+    to control with, so the rotor falls before any scenario strikes. With the magnetic circuit the limit is also
+    the bias (a coil's current stays positive); at zero offset the circuit's force is exactly k_i i, so the
+    statics' current is its.
+    """
+    scenario = machine.active_scenario()
+    for i, (b, held) in enumerate(zip(bearings, states, strict=True)):
+        limit = b.current_limit()
+        if not math.isfinite(limit):
+            continue
+        width = 2 + b.order
+        need = max(abs(held[k * width + 1 + b.order]) for k in range(1 if b.axial else 2))
+        if need < limit:
+            continue
+        key = "bias_current" if b.circuit and b.bias_current <= b.max_current else "max_current"
+        why = " (the control current cannot exceed the bias)" if key == "bias_current" else ""
+        raise InputError.for_field(f"{KIND}.{i}.{key}", b.as_written(key),
+                                   f"must exceed the levitation current {need:.3g} A{why}, which {b.name} needs to "
+                                   "carry its share of the rotor's static load at current_stiffness "
+                                   f"{b.current_stiffness:.4g} N/A: saturated at rest, it cannot levitate the rotor "
+                                   f"that scenario '{scenario.name}' starts from")
