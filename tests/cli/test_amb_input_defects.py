@@ -147,3 +147,14 @@ def test_saturation_and_first_contact_are_booked_once_and_in_time(tmp_path):
         assert np.all(spans[1:, 0] >= spans[:-1, 1])  # x and y at their limits together count once
         assert np.all(spans[:, 1] <= 30.0 + 1e-9)  # a current frozen at its limit after the power loss does not
     assert s["saturation"][0]["saturated_ms"] > 10.0
+
+
+def test_a_verification_of_bearings_too_weak_to_levitate_stops_before_its_first_drop(tmp_path):
+    # the file is refused as it is read (machine.combinations), not at the first levitated start minutes in
+    path = tmp_path / "weak.toml"
+    path.write_text(_blower_text().replace('max_current = "', 'max_current = "0.1 A" #'))
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["verify", "--machine", str(path), "--quick", "--out", str(out)])
+    assert result.exit_code == 2
+    assert "amb.0.max_current = '0.1 A': must exceed the levitation current" in result.output
+    assert not out.exists()

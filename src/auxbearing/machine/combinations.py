@@ -11,6 +11,7 @@ import math
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import display_value
 from auxbearing.machine.params import TABLES
+from auxbearing.machine.stations.amb import check_levitation
 
 #: Keys of ``[[touchdown]]`` that act only in a compliant mount (with ``mount_stiffness``).
 MOUNT_KEYS = ("mount_damping", "mount_mass", "mount_deadband", "mount_stop", "stop_stiffness", "stop_damping",
@@ -58,6 +59,9 @@ def check_combinations(data: dict, machine) -> None:
         if getattr(bearing, "axial", False) and not machine.axial_free:
             raise InputError.for_field(f"amb.{i}.axis", "axial", "needs a rotor that moves axially: give a "
                                        "[[touchdown]] plane an axial_clearance (the collar that catches it)")
+    # bearings too weak to levitate the rotor a scenario starts from: refused when the file is read, so a
+    # verification stops before its first drop, not at its first levitated start
+    check_levitation(machine)
 
 
 def _check_requires(table: dict, keys: tuple[str, ...], anchor: str, k: int, why: str) -> None:

@@ -165,7 +165,8 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     if main.get("scenario_rows"):
         parts.append("<h2>Evidence: the magnetic bearings' scenarios</h2>")
         parts.append(_table(["scenario", "kind", "strikes at [ms]", "outcome", "first contact [ms]",
-                             "re-levitated at [ms]", "peak current per axis", "time at the current limit [ms]"],
+                             "re-levitated at [ms]", "peak current per axis",
+                             "time at the current limit [ms] (the longest of the bearings)"],
                             main["scenario_rows"], "Each scenario starts from the levitated rotor. Outcome: no "
                             "touchdown; re-levitated (no contact in the last fifth of the run after the strike); not "
                             "settled (touching now and then at the end: a longer run tells); held in contact or in "

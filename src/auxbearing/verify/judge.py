@@ -294,8 +294,10 @@ def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Crite
         unstable = {c: v for c, v in levitations.items() if not v["stable"]}
         out.append(yes_no("the levitated machine is stable at its speed", "stable in every scenario",
                           "stable" if not unstable else "; ".join(
-                              f"{c.removeprefix(SCENARIO_CASE)}: a mode near {v['least_damped_mode_Hz']:.1f} Hz grows "
-                              f"at {v['least_damped_rate_per_s']:+.2f} 1/s" for c, v in unstable.items()),
+                              f"{c.removeprefix(SCENARIO_CASE)}: a mode near {v['least_damped_mode_Hz']:.1f} Hz "
+                              + ("is undamped (its rate is zero to the computation's precision)" if v.get("undamped")
+                                 else f"grows at {v['least_damped_rate_per_s']:+.3g} 1/s")
+                              for c, v in unstable.items()),
                           not unstable, "a magnetic bearing that cannot hold the spinning rotor fails before any "
                           "touchdown", "the levitated machine linearised at its speed (its least damped mode)"))
     every = criteria.get("relevitation_time")

@@ -68,7 +68,8 @@ def _scenario_rows(cases: Cases) -> list[list]:
                                                                                            math.inf), default=None)
         peak = "-" if worst is None else f"{worst['peak_axis_current_A']:.2f} A ({worst['name']})" + (
             f" of {worst['max_current_A']:g} A" if worst["max_current_A"] else "")
-        saturated = sum(b["saturated_ms"] for b in s.get("saturation", []))
+        # the longest of the bearings' times: a sum over bearings could exceed the run
+        saturated = max((b["saturated_ms"] for b in s.get("saturation", [])), default=0.0)
         rows.append([case.removeprefix(SCENARIO_CASE), s["kind"].replace("_", " "), f"{s['time_ms']:.1f}",
                      s["outcome"], _n(s.get("first_contact_ms"), "{:.1f}"), _n(s.get("relevitated_at_ms"), "{:.1f}"),
                      peak, f"{saturated:.1f}"])

@@ -43,7 +43,7 @@ PARAMS: tuple[Param, ...] = (
     Param(KIND, "bias_current", "current", None, "A", "positive", "Magnetic circuit: bias current i_0 of each coil "
           "(the control current cannot exceed it: a coil's current stays positive)", "the bearing's data"),
     Param(KIND, "pole_angle", "angle", math.pi / 8, "deg", "finite", "Magnetic circuit: angle of each pole to its "
-          "axis (the force is cos(alpha) of the poles' pull)", "ours: 22.5 deg, an eight-pole stator"),
+          "axis, in [0, 90) deg (the force is cos(alpha) of the poles' pull)", "ours: 22.5 deg, an eight-pole stator"),
     Param(KIND, "kp", "current_per_length", None, "A/m", "positive", "Proportional gain (i = -(kp x + ki int x + "
           "kd dx/dt)); or give a controller", "the controller's data"),
     Param(KIND, "ki", "current_per_length_time", 0.0, "A/(m*s)", "nonnegative", "Integral gain",
@@ -54,8 +54,9 @@ PARAMS: tuple[Param, ...] = (
           "ours: a typical eddy-current sensor's 5-20 kHz"),
     Param(KIND, "amplifier_bandwidth", "frequency", 1000.0, "Hz", "positive",
           "Current bandwidth of the amplifier (first order)", "ours: a typical switching amplifier's 1-3 kHz"),
-    Param(KIND, "max_current", "current", math.inf, "A", "positive", "Largest control current the amplifier gives",
-          "ours: none unless given"),
+    Param(KIND, "max_current", "current", math.inf, "A", "positive", "Largest control current the amplifier gives; "
+          "a run that starts levitated needs more than the current that carries the bearing's share of the static "
+          "load", "ours: none unless given"),
     Param(KIND, "load_capacity", "force", math.inf, "N", "positive", "Largest force the bearing gives along each "
           "axis (its iron saturates)", "the bearing's data; none unless given"),
     Param(KIND, "derivative_bandwidth", "frequency", None, "Hz", "optional_positive", "The PID's derivative "
