@@ -158,3 +158,11 @@ def test_a_verification_of_bearings_too_weak_to_levitate_stops_before_its_first_
     assert result.exit_code == 2
     assert "amb.0.max_current = '0.1 A': must exceed the levitation current" in result.output
     assert not out.exists()
+
+
+def test_a_coil_inductance_without_a_voltage_limit_is_refused(tmp_path):
+    # it was read and changed nothing: the inductance limits the current's rate only against max_voltage
+    text = _blower_text().replace('max_current = "5 A"', 'max_current = "5 A"\ncoil_inductance = "10 mH"', 1)
+    result, written = _drop(tmp_path, text)
+    assert result.exit_code == 2 and not written
+    assert "amb.0.coil_inductance = '10 mH': acts only with max_voltage" in result.output

@@ -257,6 +257,9 @@ def read(tables) -> tuple[MagneticBearing, ...]:
             values["controller"] = _filtered_pid(values, where)
         if "max_voltage" in values and "coil_inductance" not in values:
             raise InputError(f"{where}coil_inductance: missing; max_voltage limits the current's rate through it")
+        if "coil_inductance" in values and "max_voltage" not in values:  # it would be read and change nothing
+            raise InputError.for_field(where + "coil_inductance", table.get("coil_inductance"), "acts only with "
+                                       "max_voltage (the amplifier's voltage limits the current's rate through it)")
         written = tuple((key, value if isinstance(value, (str, int, float)) else str(value))
                         for key, value in table.items() if key in TABLE)
         bearing = MagneticBearing(name=name, **values, given=written)
