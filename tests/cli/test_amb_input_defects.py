@@ -166,3 +166,12 @@ def test_a_coil_inductance_without_a_voltage_limit_is_refused(tmp_path):
     result, written = _drop(tmp_path, text)
     assert result.exit_code == 2 and not written
     assert "amb.0.coil_inductance = '10 mH': acts only with max_voltage" in result.output
+
+
+def test_the_text_output_of_a_scenario_drop_says_what_the_scenario_did():
+    # the outcome was in --json alone: a text reader saw the table and not that the rotor had landed
+    result = CliRunner().invoke(cli, ["drop", "--machine", "blower", "--scenario", "power loss", "--duration",
+                                      "50 ms", "--quiet"])
+    assert result.exit_code == 0, result.output
+    text = " ".join(result.output.split())
+    assert "scenario 'power loss' (power loss) at 30.0 ms: on the touchdown bearings; first contact at" in text

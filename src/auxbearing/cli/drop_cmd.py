@@ -377,10 +377,32 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
     console.print(f"simulated {summary['simulated_s'] * 1e3:.1f} ms in {summary['wall_time_s']:.2f} s "
                   f"({summary['steps']} steps); energy balance error {summary['energy_balance_error']:.1e}",
                   highlight=False)
+    scenario_line = _scenario_line(summary.get("scenario"))
+    if scenario_line:
+        console.print(scenario_line, highlight=False)
     if summary["reason"]:
         console.print(f"[bold]{summary['reason']}[/bold]")
     if out_dir is not None:
         click.echo(f"Wrote drop.nc, drop_summary.json and the figures in {out_dir}/")
+
+
+def _scenario_line(s: dict | None) -> str:
+    """What the magnetic bearings' scenario did, in one line of text (the JSON has it in full)."""
+    if not s or "outcome" not in s:
+        return ""
+    contact = s.get("first_contact_ms")
+    saturated = max((b["saturated_ms"] for b in s.get("saturation", [])), default=0.0)
+    parts = [f"scenario '{s['name']}' ({s['kind'].replace('_', ' ')}) at {s['time_ms']:.1f} ms: {s['outcome']}",
+             "no contact" if contact is None else f"first contact at {contact:.1f} ms"
+             + (" (before the strike)" if s.get("touched_before_strike") else "")]
+    if s.get("relevitated_at_ms") is not None:
+        parts.append(f"re-levitated at {s['relevitated_at_ms']:.1f} ms")
+    if saturated > 0.0:
+        parts.append(f"{saturated:.1f} ms at a current limit (the longest of the bearings)")
+    levitation = s.get("levitation")
+    if levitation and not levitation["stable"]:
+        parts.append(levitation["note"])
+    return "; ".join(parts)
 
 
 @click.command("machines")
