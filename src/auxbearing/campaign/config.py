@@ -262,6 +262,13 @@ def _inputs(head: dict, n_planes: int) -> tuple[tuple[CampaignInput, ...], list[
         section, name, planes, param = resolve_key(table.get("key"), n_planes, where)
         dist = distribution_from_table(table, param, where)
         key = table["key"].strip()
+        if param.rule == "count":
+            # a continuous draw of a whole number (a step budget, a count of drops) breaks its rule in every
+            # sample: each would be an invalid_input record and the campaign would say nothing of the machine
+            # (a list's values are each checked against the rule as they are read)
+            if dist.kind != "list":
+                raise InputError.for_field(where + ".distribution", table.get("distribution"), f"{key} is a whole "
+                                           "number: give distribution = \"list\" with its values")
         for k in planes or (None,):
             slot = (section, k, name)
             if slot in seen:

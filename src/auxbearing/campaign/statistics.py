@@ -295,10 +295,11 @@ def campaign_statistics(ds, required_s0: float | None = None, seed: int = 0) -> 
     stats["sensitivity"] = _sensitivity(ds, masks, outputs) if ok.sum() >= 3 else {
         "method": None, "outputs": {}, "note": "fewer than 3 runs ended ok"}
     times = ds["sample_time"].values[done]
+    integrated = ds["integration_time"].values[done]
+    integrated = integrated[np.isfinite(integrated)]  # a sample refused as invalid input integrated nothing
     stats["timing"] = {"mean_sample_time_s": float(times.mean()) if times.size else math.nan,
                        "total_sample_time_s": float(times.sum()),
-                       "mean_integration_time_s": float(np.nanmean(ds["integration_time"].values[done]))
-                       if times.size else math.nan}
+                       "mean_integration_time_s": float(integrated.mean()) if integrated.size else math.nan}
     return stats
 
 

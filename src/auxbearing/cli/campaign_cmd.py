@@ -110,12 +110,15 @@ def _print(out: dict, stats: dict) -> None:
     for key, label in (("p_backward_whirl", "P(backward whirl)"), ("p_out_of_range", "P(out of model range)"),
                        ("p_s0_below_required", f"P(s0 < {stats['required_s0']:g})")):
         p = stats[key]
-        table.add_row(label, f"{p['value']:.3f}", f"{p['low']:.3f} - {p['high']:.3f}")
+        table.add_row(label, _shown(p["value"], "{:.3f}"), _interval(p["low"], p["high"], "{:.3f}"))
     stress = stats["quantiles"]["peak_ball_stress_MPa"]
     for tag in ("p50", "p95", "p99"):
         low, high = stress["interval"][tag]
-        table.add_row(f"peak ball stress {tag} [MPa]", f"{stress[tag]:.0f}", f"{low:.0f} - {high:.0f}")
+        table.add_row(f"peak ball stress {tag} [MPa]", _shown(stress[tag], "{:.0f}"), _interval(low, high, "{:.0f}"))
     Console().print(table)
+    if not out["ok"]:
+        click.echo("No run ended ok, so there is nothing to estimate: the store's records say why each ended "
+                   "(invalid_input: its reason)")
     rate = out["drops_per_second"]
     click.echo(f"{out['new']} new samples in {out['wall_time_s']:.1f} s"
                + (f" ({rate:.2f} drops/s on {out['workers']} workers)" if rate else "") + f"; store {out['store']}")
@@ -149,7 +152,18 @@ def campaign_report_command(store, out_dir, whirl_map, as_json):
         echo_json({**headline(stats), "sensitivity": stats["sensitivity"], "out": str(out_dir)})
         return
     click.echo(f"{stats['completed']} of {stats['samples']} samples: P(backward whirl) = "
-               f"{stats['p_backward_whirl']['value']:.3f}; wrote statistics and figures in {out_dir}/")
+               f"{_shown(stats['p_backward_whirl']['value'], '{:.3f}')}; wrote statistics and figures in {out_dir}/")
+
+
+def _shown(value, fmt: str) -> str:
+    """A statistic as the table prints it: "-" where no run gave it (NaN or None), never "nan"."""
+    import math
+
+    return "-" if value is None or not math.isfinite(value) else fmt.format(value)
+
+
+def _interval(low, high, fmt: str) -> str:
+    return "-" if "-" in (_shown(low, fmt), _shown(high, fmt)) else f"{fmt.format(low)} - {fmt.format(high)}"
 
 
 COMMANDS = [campaign_command, campaign_report_command]

@@ -1,0 +1,39 @@
+"""A campaign says nothing absurd: a whole-number input cannot be drawn from a continuous distribution (every sample
+broke its rule and the run still ended 0), and statistics no run gave are '-', not 'nan'."""
+
+import math
+
+import pytest
+
+from auxbearing.campaign.config import campaign_from_mapping
+from auxbearing.cli.campaign_cmd import _print
+from auxbearing.common.errors import InputError
+
+
+def _config(distribution: dict) -> dict:
+    return {"campaign": {"machine": "paper_rig", "samples": 4, "seed": 1,
+                         "input": [{"key": "drop.max_steps", **distribution}]}}
+
+
+def test_a_whole_number_input_needs_a_list_of_whole_numbers():
+    with pytest.raises(InputError, match=r"^campaign.input.0.distribution = 'uniform': drop.max_steps is a whole "
+                                         r"number: give distribution = \"list\" with its values"):
+        campaign_from_mapping(_config({"distribution": "uniform", "low": 20000, "high": 40000}))
+    with pytest.raises(InputError, match=r"^campaign.input.0.values.1 = 40000.5: must be a whole number"):
+        campaign_from_mapping(_config({"distribution": "list", "values": [20000, 40000.5]}))
+    campaign_from_mapping(_config({"distribution": "list", "values": [20000, 40000]}))
+
+
+def test_statistics_no_run_gave_print_as_a_dash(capsys):
+    nan = math.nan
+    p = {"value": nan, "low": nan, "high": nan}
+    stats = {"required_s0": 1.0, "p_backward_whirl": p, "p_out_of_range": p, "p_s0_below_required": p,
+             "quantiles": {"peak_ball_stress_MPa": {"p50": nan, "p95": nan, "p99": nan,
+                                                    "interval": {t: [nan, nan] for t in ("p50", "p95", "p99")}}}}
+    out = {"campaign": "c", "completed": 4, "samples": 4, "sampler": "random", "seed": 1, "ok": 0,
+           "out_of_range": 0, "failed": 0, "drops_per_second": None, "new": 4, "wall_time_s": 1.0, "workers": 1,
+           "store": "s.zarr"}
+    _print(out, stats)
+    text = capsys.readouterr().out
+    assert "nan" not in text.lower()
+    assert "No run ended ok, so there is nothing to estimate" in text
