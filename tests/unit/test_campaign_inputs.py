@@ -37,3 +37,24 @@ def test_statistics_no_run_gave_print_as_a_dash(capsys):
     text = capsys.readouterr().out
     assert "nan" not in text.lower()
     assert "No run ended ok, so there is nothing to estimate" in text
+
+
+def test_a_coast_down_input_in_a_campaign_of_drops_is_refused():
+    # it was accepted and changed nothing: a drop campaign runs no coast-down
+    config = {"campaign": {"machine": "paper_rig", "samples": 4, "seed": 1,
+                           "input": [{"key": "coastdown.ambient_temperature", "distribution": "uniform",
+                                      "low": "20 degC", "high": "40 degC"}]}}
+    with pytest.raises(InputError, match=r"^campaign.input.0.key = 'coastdown.ambient_temperature': names nothing "
+                                         r"here: a campaign of drops runs no coast-down"):
+        campaign_from_mapping(config)
+    config["campaign"]["analysis"] = "coastdown"
+    campaign_from_mapping(config)
+
+
+def test_a_whirl_map_of_one_input_against_itself_is_refused():
+    config = {"campaign": {"machine": "paper_rig", "samples": 4, "seed": 1, "whirl_map": ["rotor.speed"] * 2,
+                           "input": [{"key": "rotor.speed", "distribution": "uniform", "low": "5000 rpm",
+                                      "high": "7000 rpm"}]}}
+    with pytest.raises(InputError, match=r"^campaign.whirl_map = \['rotor.speed', 'rotor.speed'\]: give two "
+                                         r"different input keys"):
+        campaign_from_mapping(config)

@@ -84,7 +84,7 @@ class CampaignInput:
     """One uncertain input: the dotted key, where it lives in the machine tables, its row and distribution."""
 
     key: str
-    section: str  #: "rotor", "drop" or "touchdown"
+    section: str  #: a machine file's table: "rotor", "drop", "touchdown", "coastdown", ...
     name: str  #: key in the table
     planes: tuple[int, ...]  #: planes it sets (touchdown only; ``touchdown.*`` sets them all)
     param: Param
@@ -283,8 +283,15 @@ def _inputs(head: dict, n_planes: int) -> tuple[tuple[CampaignInput, ...], list[
 
 
 
-def _check_inputs_act(inputs: tuple[CampaignInput, ...], machine) -> None:
-    """Refuse an input that would change nothing: a mount value on a rigid plane, a face value without a catch."""
+def _check_inputs_act(inputs: tuple[CampaignInput, ...], machine, analysis: str = "drop") -> None:
+    """Refuse an input that would change nothing.
+
+    A mount value on a rigid plane, a face value without a catch, a coast-down value in a campaign of drops.
+    """
+    for i, inp in enumerate(inputs):
+        if inp.section == "coastdown" and analysis != "coastdown":
+            raise InputError.for_field(f"campaign.input.{i}.key", inp.key, f"names nothing here: a campaign of "
+                                       f"{analysis}s runs no coast-down (give campaign.analysis = \"coastdown\")")
     varied = {(k, i.name) for i in inputs for k in i.planes}
     for inp in inputs:
         for k in inp.planes:
@@ -375,12 +382,14 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     else:
         machine = machine_from_mapping(tables, name, base)
     inputs, notes = _inputs(head, len(machine.planes))
-    _check_inputs_act(inputs, machine)
+    _check_inputs_act(inputs, machine, analysis)
     whirl_map = head.get("whirl_map")
     if whirl_map is not None:
         keys = [i.key for i in inputs]
-        if not (isinstance(whirl_map, list) and len(whirl_map) == 2 and all(k in keys for k in whirl_map)):
-            raise InputError.for_field("campaign.whirl_map", whirl_map, "give two input keys: " + ", ".join(keys))
+        if not (isinstance(whirl_map, list) and len(whirl_map) == 2 and all(k in keys for k in whirl_map)
+                and whirl_map[0] != whirl_map[1]):  # a map of one input against itself is a line
+            raise InputError.for_field("campaign.whirl_map", whirl_map, "give two different input keys: "
+                                       + ", ".join(keys))
         whirl_map = (whirl_map[0], whirl_map[1])
     central = apply_sample(tables, inputs, [i.distribution.median() for i in inputs])
     try:
