@@ -58,3 +58,16 @@ def test_a_whirl_map_of_one_input_against_itself_is_refused():
     with pytest.raises(InputError, match=r"^campaign.whirl_map = \['rotor.speed', 'rotor.speed'\]: give two "
                                          r"different input keys"):
         campaign_from_mapping(config)
+
+
+@pytest.mark.parametrize("workers", ["1", -1, 0, 1.5, True])
+def test_run_campaign_refuses_a_bad_worker_count_before_the_store_is_made(tmp_path, workers):
+    # issue: '1' raised a TypeError after the store was made; -1 waited 60 s for workers that never came
+    from auxbearing.campaign.run import run_campaign
+
+    path = tmp_path / "c.toml"
+    path.write_text('[campaign]\nmachine = "paper_rig"\nsamples = 2\nseed = 1\n[[campaign.input]]\n'
+                    'key = "rotor.unbalance_phase"\ndistribution = "uniform"\nlow = "0 deg"\nhigh = "360 deg"\n')
+    with pytest.raises(InputError, match=r"^workers = .*: must be a whole number from 1 to 1024"):
+        run_campaign(path, tmp_path / "s.zarr", workers=workers)  # a file's path, as the command line takes it
+    assert not (tmp_path / "s.zarr").exists()

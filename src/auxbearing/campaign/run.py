@@ -103,7 +103,8 @@ def on_every_worker(client, fn, *args) -> dict:
     return {w: f.result() for w, f in futures.items()}
 
 
-def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = None, workers: int | None = None,
+def run_campaign(campaign: Campaign | str | Path, store: str | Path, scheduler: str | None = None,
+                 workers: int | None = None,
                  progress: Callable[[Progress], None] | None = None,
                  decided: Callable[[Path, int], bool] | None = None, priority: int = 0, client=None,
                  warm: bool = True) -> dict:
@@ -111,7 +112,8 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
 
     Parameters
     ----------
-    campaign : Campaign
+    campaign : Campaign, str or Path
+        A campaign, or the path of its TOML file (:func:`auxbearing.campaign.config.read_campaign`).
     store : path
         Zarr store; made when absent, resumed when it holds this campaign, refused otherwise.
     scheduler : str, optional
@@ -147,6 +149,13 @@ def run_campaign(campaign: Campaign, store: str | Path, scheduler: str | None = 
         ``lost_reason`` is the first error of a lost batch; ``decided_at`` (None unless ``decided`` ended it).
     """
     start = time.perf_counter()
+    if isinstance(campaign, (str, Path)):  # a campaign file, as the command line takes it
+        from auxbearing.campaign.config import read_campaign
+
+        campaign = read_campaign(campaign)
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or not 1 <= workers <= 1024):
+        # checked before the store is made (the command line's --workers rule, under the argument's name)
+        raise InputError.for_field("workers", workers, "must be a whole number from 1 to 1024")
     points = design(campaign)
     # a scheduler address is tried before the store is touched, so a wrong address writes nothing
     own_client = client is None and scheduler is not None
