@@ -96,7 +96,8 @@ MARGINS = {
     "temperature": "(T_allowed - T_found) / (T_allowed - T_ambient): the share of the allowed rise above ambient "
                    "still unused",
     "yes/no": "none (holds or not)",
-    "not checked": "none (not measured, or not shown)",
+    "not checked": "none: nothing in the file to check it against (a criterion of another kind that a cut run "
+                   "left open keeps that kind's margin, for what the run found, and counts neither way)",
 }
 
 
