@@ -78,7 +78,7 @@ def test_batches_are_written_into_their_region_and_flagged(tmp_path):
     assert np.isnan(ds["peak_contact_force"].values[[0, 1, 4, 5]]).all()
     # the same campaign finds its store; another one is refused with one line
     assert prepare_store(path, c, points) is False
-    with pytest.raises(InputError, match="holds another campaign"):
+    with pytest.raises(InputError, match=r"holds another campaign \(it differs in seed\)"):
         prepare_store(path, small(seed=2), design(small(seed=2)))
 
 

@@ -211,6 +211,22 @@ def read_attrs(path: str | Path) -> dict:
     return attrs
 
 
+def _differences(attrs: dict, campaign: Campaign) -> str:
+    """What the store's campaign and this one set differently, as a person compares two files (the keys)."""
+    try:
+        stored = json.loads(attrs.get("campaign", "{}"))
+    except (TypeError, ValueError):
+        stored = {}
+    now = json.loads(json.dumps(campaign.describe(), default=str))
+    keys = [k for k in now if k not in ("name", "base") and stored.get(k) != now[k]]
+    if not keys:
+        return f"fingerprint {attrs[MARK]}, this file gives {campaign.fingerprint()}"
+    # batch_size changes no result but the store's layout: its chunks are one batch each
+    return "it differs in " + ", ".join("tables (the machine and its settings)" if k == "tables" else
+                                        "batch_size (the store's chunks are its batches)" if k == "batch_size" else k
+                                        for k in keys)
+
+
 def prepare_store(path: str | Path, campaign: Campaign, design: Design) -> bool:
     """Make the store, or check that an existing one holds this campaign; True when it was made."""
     path = Path(path)
@@ -225,8 +241,8 @@ def prepare_store(path: str | Path, campaign: Campaign, design: Design) -> bool:
         return True
     attrs = read_attrs(path)
     if attrs[MARK] != campaign.fingerprint():
-        raise InputError(f"out = '{path}': holds another campaign (fingerprint {attrs[MARK]}, this file gives "
-                         f"{campaign.fingerprint()}); give a new --out to start afresh")
+        raise InputError(f"out = '{path}': holds another campaign ({_differences(attrs, campaign)}); give a new "
+                         "--out to start afresh, or the store's own settings to resume it")
     check_chunks(path)
     with reading(path, "its design"):
         stored = open_store(path)
