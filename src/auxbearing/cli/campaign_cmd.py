@@ -26,7 +26,7 @@ def _workers(text: str | None, scheduler: str | None) -> int | None:
     try:
         n = int(text)
     except ValueError:
-        raise InputError.for_field("--workers", text, "must be a whole number >= 1") from None
+        raise InputError.for_field("--workers", text, "must be a whole number from 1 to 1024") from None
     if not 1 <= n <= 1024:
         raise InputError.for_field("--workers", text, "must be a whole number from 1 to 1024")
     return n
