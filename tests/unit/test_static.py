@@ -107,7 +107,7 @@ def test_safety_factor_follows_stress_cubed():
     [
         ({"radial": 1000}, "axial = '0 N': a single angular contact bearing with a free ring needs an axial load"),
         ({"radial": 1000, "axial": -100}, "axial = '-100 N'"),
-        ({"axial": 100, "moment": 5}, "loads = [100.0, 0.0, 0.0, 0.0, -5.0]: no equilibrium on the contact side"),
+        ({"axial": 100, "moment": 5}, "axial = '100 N': no equilibrium on the contact side"),
         ({"radial": 1000, "axial_condition": "sideways"}, "axial_condition = 'sideways': must be one of free"),
         ({"radial": 1000, "axial": 100, "tilt": "wobbly"}, "tilt = 'wobbly'"),
         ({"radial": "1 kg"}, "radial = '1 kg': unit kilogram is not a force"),
@@ -147,7 +147,7 @@ def test_stribeck_discrete_constant():
 
 def test_validity_warnings_follow_the_stated_limits():
     assert an.stress_warning(4200e6) is None and "s0 = 0.512" in an.stress_warning(5250e6)
-    ds = an.load_distribution("QJ202", radial=500, moment=[5.0, 200.0, 1e6])
+    ds = an.load_distribution("QJ202", radial=500, moment=[5.0, 200.0, 3000.0])
     arm = ds.attrs["moment_arm_m"]
     for case in range(3):
         c = ds.isel(case=case)

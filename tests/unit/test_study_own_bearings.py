@@ -77,7 +77,7 @@ def _paper_text_in(text: str) -> list[str]:
         ("", False),
         ("[bearing]\ncatalogue = 'QJ202'\n[comparison_bearing]\ncatalogue = '7202'\n", False),
         ("[drop]\nspeed = '6000 rpm'\nclearance = '0.2 mm'\n[rotor]\nmass = '1.48 kg'\n", False),
-        ("[study]\nball_load = '2 kN'\n", False),  # the contact load is not the bearings, rotor or drop
+        ("[study]\nball_load = '1.5 kN'\n", False),  # the contact load is not the bearings, rotor or drop
         ("[bearing]\ncatalogue = 'QJ208'\n", True),
         ("[comparison_bearing]\ncatalogue = '7202-40'\n", True),
         ("[rotor]\nmass = '2 kg'\n", True),

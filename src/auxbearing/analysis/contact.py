@@ -16,9 +16,12 @@ import xarray as xr
 from auxbearing import __version__
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.common.errors import InputError
+from auxbearing.common.units import to_si
 from auxbearing.core import hertz
 
 RACES = ("inner", "outer")
+#: Ellipticity from exact elliptic integrals, or the Hamrock-Brewe approximation (core.hertz.point_contact).
+METHODS = ("exact", "hamrock_brewe")
 
 #: Values printed in the source paper, Sec. II.B (Fig. 4 discussion), at 1000 N ball load.
 PAPER_CONTACT = {
@@ -37,6 +40,82 @@ _VARIABLES = {
     "ellipticity": ("1", "Ellipticity kappa = a/b"),
     "stiffness": ("N/m^1.5", "Load-deflection constant K, Q = K delta^1.5"),
 }
+
+
+class OutsideHertz(InputError):
+    """A contact so large that Hertz theory gives no result for it.
+
+    ``reason`` is the sentence without the ``field = value`` head, so that a caller who knows the input by
+    another name (a command-line option) can name it its own way.
+    """
+
+    def __init__(self, field: str, value: object, reason: str) -> None:
+        super().__init__(f"{field} = {value!r}: {reason}")
+        self.reason = reason
+
+
+def ball_load_si(value: object, field: str = "ball_load") -> float:
+    """A radial ball load as the user gave it ("1 kN", 1000, a Quantity) in N, refused when negative.
+
+    >>> ball_load_si("1 kN")
+    1000.0
+    >>> ball_load_si(-5)
+    Traceback (most recent call last):
+    ...
+    auxbearing.common.errors.InputError: ball_load = -5: must be >= 0 N
+    """
+    load = to_si(field, value, "force", "N")
+    if load < 0.0:
+        raise InputError.for_field(field, value, "must be >= 0 N")
+    return load
+
+
+def check_method(method: object, field: str = "method") -> str:
+    """The ellipticity method, refused with its name when it is none of :data:`METHODS`."""
+    if not isinstance(method, str) or method not in METHODS:
+        raise InputError.for_field(field, method, "must be one of " + ", ".join(METHODS))
+    return method
+
+
+def with_overrides(bearing: BearingGeometry, contact_angle: object = None, groove_ratio: object = None
+                   ) -> BearingGeometry:
+    """``bearing`` with its contact angle and both groove ratios replaced; errors name the value as given.
+
+    A plain number for the angle is in radians, as every angle of a
+    :class:`~auxbearing.bearings.geometry.BearingGeometry`; a string carries its own unit ("35 deg").
+
+    >>> from auxbearing import get_bearing
+    >>> with_overrides(get_bearing("QJ202"), contact_angle=35)
+    Traceback (most recent call last):
+    ...
+    auxbearing.common.errors.InputError: contact_angle = 35: must lie in [0, 90) deg; a plain number is in rad (35...
+    """
+    changes: dict = {}
+    typed: dict = {}
+    if contact_angle is not None:
+        angle = to_si("contact_angle", contact_angle, "angle", "rad")
+        if not 0.0 <= angle < 0.5 * math.pi:
+            rule = "must lie in [0, 90) deg"
+            if isinstance(contact_angle, (int, float)):  # a number meant in degrees is the likely slip
+                rule += (f"; a plain number is in rad ({contact_angle:g} rad = {math.degrees(angle):.0f} deg), "
+                         f"write '{contact_angle:g} deg' for degrees")
+            raise InputError.for_field("contact_angle", contact_angle, rule)
+        changes["contact_angle"] = angle
+        typed["contact_angle"] = ("contact_angle", contact_angle)
+    if groove_ratio is not None:
+        ratio = to_si("groove_ratio", groove_ratio, "dimensionless")
+        changes.update(inner_groove_ratio=ratio, outer_groove_ratio=ratio)
+        typed["inner_groove_ratio"] = typed["outer_groove_ratio"] = ("groove_ratio", groove_ratio)
+    if not changes:
+        return bearing
+    try:
+        return bearing.with_changes(**changes)
+    except InputError as err:  # the geometry names its own fields ("inner_groove_ratio = 0.4")
+        head, _, rule = str(err).partition(": ")
+        key = head.split(" = ")[0]
+        if key in typed:
+            raise InputError.for_field(*typed[key], rule) from None
+        raise
 
 
 def compliance(bearing: BearingGeometry) -> float:
@@ -93,28 +172,63 @@ def ball_constant(bearing: BearingGeometry, contact_angle: float | np.ndarray | 
 
 def ball_contact(
     bearing: BearingGeometry,
-    ball_load: float,
-    contact_angle: float | None = None,
-    groove_ratio: float | None = None,
+    ball_load: object,
+    contact_angle: object = None,
+    groove_ratio: object = None,
     method: str = "exact",
 ) -> dict:
     """Inner and outer contact of one ball under a radial ball load, in display units.
 
     Returns the mapping printed by ``auxbearing contact --json``.
 
+    Parameters
+    ----------
+    bearing : BearingGeometry
+    ball_load : float, str or pint.Quantity
+        Radial load on the ball: a number in N or with a unit ("1 kN").
+    contact_angle : float, str or pint.Quantity, optional
+        Override of the contact angle: a number in rad or with a unit ("35 deg").
+    groove_ratio : float or str, optional
+        Override of both groove radius coefficients (> 0.5).
+    method : {"exact", "hamrock_brewe"}
+
+    Raises
+    ------
+    InputError
+        A value that is malformed or out of range, named as given; :class:`OutsideHertz` (naming the
+        override given, else ``ball_load``) when an ellipse is as large as the ball (:func:`ellipse_checks`),
+        where Hertz theory gives no result. Ellipses cut by the groove shoulder are only flagged, by
+        :func:`ellipse_checks`.
+
     Examples
     --------
     >>> from auxbearing import get_bearing
-    >>> r = ball_contact(get_bearing("QJ202"), 1000.0)
+    >>> b = get_bearing("QJ202")
+    >>> r = ball_contact(b, 1000.0)
     >>> round(r["inner"]["max_stress_MPa"])
     2610
+    >>> round(ball_contact(b, "1 kN", contact_angle="35 deg")["inner"]["max_stress_MPa"])
+    2610
+    >>> ball_contact(b, 1000.0, groove_ratio=0.5001)
+    Traceback (most recent call last):
+    ...
+    auxbearing.analysis.contact.OutsideHertz: groove_ratio = 0.5001: the inner contact ellipse (semi-major axis 7.558...
     """
-    if not (isinstance(ball_load, (int, float)) and math.isfinite(ball_load)) or ball_load < 0.0:
-        raise InputError.for_field("ball_load", ball_load, "must be >= 0 N and finite")
-    if contact_angle is not None:
-        bearing = bearing.with_changes(contact_angle=contact_angle)
-    if groove_ratio is not None:
-        bearing = bearing.with_changes(inner_groove_ratio=groove_ratio, outer_groove_ratio=groove_ratio)
+    load = ball_load_si(ball_load)
+    check_method(method)
+    bearing = with_overrides(bearing, contact_angle, groove_ratio)
+    out = _ball_contact(bearing, load, method)
+    refusal = ellipse_checks(bearing, out)[1]
+    if refusal is not None:
+        # the override given is what moved the contact out of Hertz theory; without one, the load did
+        field, value = next((n, v) for n, v in (("groove_ratio", groove_ratio), ("contact_angle", contact_angle),
+                                                ("ball_load", ball_load)) if v is not None)
+        raise OutsideHertz(field, value, refusal)
+    return out
+
+
+def _ball_contact(bearing: BearingGeometry, ball_load: float, method: str) -> dict:
+    """:func:`ball_contact` of checked inputs, before its validity check."""
     q = contact_load(bearing, ball_load)
     out: dict = {
         "bearing": bearing.name,
@@ -168,32 +282,87 @@ def ellipse_checks(bearing: BearingGeometry, result: dict) -> tuple[list[str], s
     >>> b = get_bearing("QJ202")
     >>> ellipse_checks(b, ball_contact(b, 1000.0))
     ([], None)
-    >>> conformal = b.with_changes(inner_groove_ratio=0.5000001, outer_groove_ratio=0.5000001)
-    >>> ellipse_checks(conformal, ball_contact(conformal, 1000.0))[1][:45]
-    'the inner contact ellipse (semi-major axis 89'
+    >>> ellipse_checks(b, ball_contact(b, "5 kN"))[0][0][:48]
+    'the inner contact ellipse runs over the groove s'
     """
-    from auxbearing.machine.model import SHOULDER_FRACTION
-
-    radius = 0.5 * bearing.ball_diameter
     alpha = math.radians(result["contact_angle_deg"])
     warnings = []
     for race in RACES:
         c = result[race]
         a = c["semi_major_mm"] * 1e-3
-        if a >= radius:
-            return [], (f"the {race} contact ellipse (semi-major axis {a * 1e3:.4g} mm) is as large as the ball "
-                        f"(radius {radius * 1e3:.4g} mm) at a contact load of {c['contact_load_N']:.4g} N: Hertz "
-                        "theory needs a contact small against the ball, so no result follows")
-        groove = c["groove_ratio"] * bearing.ball_diameter
-        shoulder = math.acos(max(-1.0, 1.0 - SHOULDER_FRACTION * bearing.ball_diameter / groove))
-        reach = alpha + a / groove
-        if reach > shoulder:
+        too_large, over_shoulder = outside_hertz(bearing, a, alpha, c["groove_ratio"])
+        if too_large:
+            return [], too_large_reason(bearing, race, a, c["contact_load_N"])
+        if over_shoulder:
+            from auxbearing.machine.model import SHOULDER_FRACTION
+
+            groove = c["groove_ratio"] * bearing.ball_diameter
+            reach = alpha + a / groove
             warnings.append(f"the {race} contact ellipse runs over the groove shoulder: contact angle "
                             f"{math.degrees(alpha):.3g} deg plus half the ellipse ({math.degrees(a / groove):.3g} "
                             f"deg of groove arc) reach {math.degrees(reach):.3g} deg, past the shoulder at "
-                            f"{math.degrees(shoulder):.3g} deg (shoulder height {SHOULDER_FRACTION:g} D assumed); the "
-                            "edge carries a stress Hertz does not give")
+                            f"{math.degrees(float(shoulder_angle(bearing, c['groove_ratio']))):.3g} deg (shoulder "
+                            f"height {SHOULDER_FRACTION:g} D assumed); the edge carries a stress Hertz does not give")
     return warnings, None
+
+
+def shoulder_angle(bearing: BearingGeometry, groove_ratio: np.ndarray | float) -> np.ndarray:
+    """Groove arc [rad] from the groove bottom to the shoulder edge the machine model assumes.
+
+    The shoulder stands :data:`auxbearing.machine.model.SHOULDER_FRACTION` of the ball diameter above the
+    groove bottom, on a groove of radius f D.
+    """
+    from auxbearing.machine.model import SHOULDER_FRACTION
+
+    groove = np.asarray(groove_ratio, float) * bearing.ball_diameter
+    return np.arccos(np.maximum(-1.0, 1.0 - SHOULDER_FRACTION * bearing.ball_diameter / groove))
+
+
+def outside_hertz(bearing: BearingGeometry, semi_major, contact_angle, groove_ratio) -> tuple:
+    """Where contacts leave Hertz theory, elementwise: (ellipse as large as the ball, ellipse past the shoulder).
+
+    The two tests of :func:`ellipse_checks`; ``semi_major`` [m], ``contact_angle`` [rad] and ``groove_ratio``
+    broadcast against each other (a contact map's grid).
+    """
+    a = np.asarray(semi_major, float)
+    groove = np.asarray(groove_ratio, float) * bearing.ball_diameter
+    too_large = a >= 0.5 * bearing.ball_diameter
+    over_shoulder = np.asarray(contact_angle, float) + a / groove > shoulder_angle(bearing, groove_ratio)
+    return too_large, over_shoulder
+
+
+def too_large_reason(bearing: BearingGeometry, race: str, semi_major: float, contact_load: float) -> str:
+    """Why no result follows from a contact whose semi-major axis [m] reaches the ball's radius."""
+    radius = 0.5 * bearing.ball_diameter
+    return (f"the {race} contact ellipse (semi-major axis {semi_major * 1e3:.4g} mm) is as large as the ball "
+            f"(radius {radius * 1e3:.4g} mm) at a contact load of {contact_load:.4g} N: Hertz theory needs a "
+            "contact small against the ball, so no result follows")
+
+
+def grid_refusal(bearing: BearingGeometry, ball_load: float, contact_angles_deg, groove_ratios) -> str | None:
+    """Why a contact map of ``bearing`` over these grids would hold no Hertz result somewhere, or None.
+
+    The refusal of :func:`ellipse_checks` at the grid's largest ellipse. The semi-major axis grows with the
+    contact angle (the load on each contact, Q / (pairs cos alpha), grows) and with the conformity (the
+    groove ratio falling to 0.5); swept at 1000 N over 0-89.9 deg and 0.5005-0.95 (300 x 300 points) for
+    QJ202, 7202, 218 and QJ208 it never falls along either. So the largest ellipse sits at the largest angle
+    and the smallest ratio.
+
+    >>> from auxbearing import get_bearing
+    >>> grid_refusal(get_bearing("QJ202"), 1000.0, [10.0, 75.0], [0.505, 0.6]) is None
+    True
+    >>> grid_refusal(get_bearing("QJ202"), 1000.0, [10.0, 89.5], [0.505, 0.6])[:52]
+    'at a contact angle of 89.5 deg and a groove ratio of'
+    """
+    angle = math.radians(max(float(np.max(contact_angles_deg)), math.degrees(bearing.contact_angle)))
+    ratio = min(float(np.min(groove_ratios)), bearing.inner_groove_ratio)
+    load = ball_load / (bearing.pairs_per_ball * math.cos(angle))
+    for race in RACES:
+        c = raceway_contact(bearing, load, race, contact_angle=angle, groove_ratio=ratio)
+        if outside_hertz(bearing, float(c.semi_major), angle, ratio)[0]:
+            return (f"at a contact angle of {math.degrees(angle):.4g} deg and a groove ratio of {ratio:.4g}, "
+                    + too_large_reason(bearing, race, float(c.semi_major), load))
+    return None
 
 
 def sweep_grid(start: float, stop: float, step: float) -> np.ndarray:
@@ -210,7 +379,7 @@ def sweep_grid(start: float, stop: float, step: float) -> np.ndarray:
 
 def contact_map(
     bearing: BearingGeometry,
-    ball_load: float,
+    ball_load: object,
     contact_angles_deg: np.ndarray,
     groove_ratios: np.ndarray,
     method: str = "exact",
@@ -219,10 +388,11 @@ def contact_map(
 
     Both grooves take the swept ratio, as the paper's "radius coefficient of race". The
     bearing's own angle and ratio are added to the grids so that Fig. 2 and Fig. 3 are exact
-    slices of the map.
+    slices of the map. ``ball_load`` is a number in N or has a unit ("1 kN"). Grid points outside Hertz
+    theory are kept; :func:`outside_hertz` finds them and :func:`grid_refusal` says whether any would be.
     """
-    if ball_load < 0.0 or not math.isfinite(ball_load):
-        raise InputError.for_field("ball_load", ball_load, "must be >= 0 N and finite")
+    ball_load = ball_load_si(ball_load)
+    check_method(method)
     # rounded so that a grid point and the bearing's own value do not sit 1e-16 apart
     angles = np.unique(np.round(np.r_[np.asarray(contact_angles_deg, float), math.degrees(bearing.contact_angle)], 9))
     ratios = np.unique(np.round(np.r_[np.asarray(groove_ratios, float), bearing.inner_groove_ratio], 9))
@@ -262,8 +432,9 @@ def contact_map(
     return ds
 
 
-def type_comparison(bearing: BearingGeometry, ball_load: float = 1000.0) -> dict:
+def type_comparison(bearing: BearingGeometry, ball_load: object = 1000.0) -> dict:
     """Four-point versus angular-contact max stress at the same geometry (source paper Fig. 4)."""
+    ball_load = ball_load_si(ball_load)
     four = bearing.with_changes(type="four_point", diametral_clearance=0.0)
     angular = bearing.with_changes(type="angular_contact", diametral_clearance=0.0)
     s4 = ball_contact(four, ball_load)["inner"]["max_stress_MPa"]

@@ -154,27 +154,6 @@ def impact_rate_warning(where: str, impacts: int, first_impact_ms: float | None,
             "line stiffness and damping)")
 
 
-def refuse_sinking(bearing, loads, ball_constant, blame) -> None:
-    """Refuse load cases no elastic contact can carry, before any solve.
-
-    The estimate is :func:`auxbearing.analysis.statics.sink_estimate`.
-
-    ``blame(k)`` says which input of case k to name.
-    """
-    import numpy as np
-
-    from auxbearing.analysis.statics import SINK_LIMIT_FRACTION, sink_estimate
-
-    sink = sink_estimate(bearing, loads, ball_constant)
-    limit = SINK_LIMIT_FRACTION * bearing.ball_diameter
-    worst = int(np.argmax(sink))
-    if sink[worst] > limit:
-        raise InputError(f"{blame(worst)}: the rings would move about {sink[worst] * 1e3:.3g} mm into the balls "
-                         f"(ball diameter {bearing.ball_diameter * 1e3:g} mm), beyond {SINK_LIMIT_FRACTION:.0%} of a "
-                         "ball where no contact law of the ball set holds; no result follows (a steel ball constant "
-                         "is about 1e10 N/m**1.5)")
-
-
 def static_sink_warning(bearing, ds, case: int) -> str | None:
     """A sentence when the solved rings moved further into the balls than an elastic steel contact can."""
     import math

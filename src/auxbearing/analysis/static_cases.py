@@ -12,6 +12,11 @@ Columns are either the paper's planar loads ``axial`` (Fa), ``radial`` (Fr), ``m
 or the 5-DOF loads ``axial``, ``force_x``, ``force_y``, ``moment_x``, ``moment_y`` (short
 names ``Fa``, ``Fr``, ``M``, ``Fx``, ``Fy``, ``Mx``, ``My``); a missing column is zero. Every case
 is solved in one batched Newton call (:func:`auxbearing.analysis.statics.solve_loads`).
+
+Results keep their sign: the radial displacement and the tilt are the components in the plane of each
+case's load (:func:`auxbearing.analysis.statics.planar_components`), the same numbers in the table, the CSV,
+the JSON and the NetCDF. A case that loads no contact has no stress and so no s0: the JSON holds null, the
+NetCDF NaN, the CSV an empty cell and the table "-".
 """
 
 from __future__ import annotations
@@ -22,7 +27,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from auxbearing.analysis.statics import load_distribution, solve_loads, validity_warnings_all
+from auxbearing.analysis.statics import load_distribution, planar_components, solve_loads, validity_warnings_all
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.common.errors import InputError
 from auxbearing.common.unit_csv import Column, read_unit_csv
@@ -114,6 +119,11 @@ def load_cases(bearing: BearingGeometry | str, path: str | Path, table: tuple | 
                                **options)
     else:
         ds = solve_loads(bearing, np.column_stack([column[k] for k in FIVE_DOF]), **options)
+    if "radial_displacement" not in ds:  # 5-DOF columns: the signed numbers the results table shows
+        radial, tilt = (v + 0.0 for v in planar_components(ds))  # + 0.0: no -0 stored
+        ds["radial_displacement"] = ("case", radial, {"units": "m", "long_name": "Radial displacement in the plane "
+                                                                               "of the load (planar_components)"})
+        ds["tilt"] = ("case", tilt, {"units": "rad", "long_name": "Tilt in the plane of the load (planar_components)"})
     ds["line"] = ("case", np.asarray(lines), {"units": "1", "long_name": "Line of the case in the loads file"})
     ds.attrs["source_file"] = str(path)
     return ds
@@ -123,15 +133,20 @@ def case_rows(ds: xr.Dataset) -> list[dict]:
     """One mapping per case in display units (the results table), with its validity warnings.
 
     Built column by column (10^5 cases take well under a second; one case at a time took ~1 ms each).
+    Displacement and tilt are signed (:func:`~auxbearing.analysis.statics.planar_components`), as
+    ``auxbearing static`` shows them; s0 is None for a case that loads no contact.
     """
+    radial, tilt = planar_components(ds)
+    s0 = ds["safety_factor_s0"].values
+    # + 0.0 turns a negative zero into zero
     columns = {
         "line": ds["line"].values.astype(int),
-        "axial_displacement_um": ds["axial_displacement"].values * 1e6,
-        "radial_displacement_um": np.hypot(ds["displacement_x"].values, ds["displacement_y"].values) * 1e6,
-        "tilt_mrad": np.hypot(ds["tilt_x"].values, ds["tilt_y"].values) * 1e3,
+        "axial_displacement_um": ds["axial_displacement"].values * 1e6 + 0.0,
+        "radial_displacement_um": radial * 1e6 + 0.0,
+        "tilt_mrad": tilt * 1e3 + 0.0,
         "max_contact_load_N": ds["max_contact_load"].values,
         "max_stress_MPa": ds["max_stress"].values / 1e6,
-        "safety_factor_s0": ds["safety_factor_s0"].values,
+        "safety_factor_s0": np.where(np.isfinite(s0), s0, None),
         "residual_N": ds["residual"].values,
     }
     lists = {key: np.asarray(values).tolist() for key, values in columns.items()}
@@ -146,11 +161,28 @@ def worst_case(rows: list[dict]) -> dict:
     return max(rows, key=lambda r: r["max_stress_MPa"])
 
 
+def format_cell(row: dict, key: str, fmt: str, missing: str = "-") -> str:
+    """One value of a results row as the table and the CSV show it: ``missing`` for no value, no "-0.0000".
+
+    >>> format_cell({"tilt_mrad": -1e-12}, "tilt_mrad", "{:.5f}"), format_cell({"s0": None}, "s0", "{:.4g}")
+    ('0.00000', '-')
+    """
+    value = row[key]
+    if value is None:
+        return missing
+    text = fmt.format(value)
+    # a value that rounds to zero shows no sign (a round-off -1e-16 um is no displacement)
+    if text.startswith("-") and not any(c in "123456789" for c in text.split("e")[0]):
+        text = text[1:]
+    return text
+
+
 def write_rows_csv(rows: list[dict], path: str | Path, comment: str = "") -> Path:
     """The results table as CSV with units in the header (the input's own format).
 
     Warnings go to a last column (quoted by :mod:`csv` where needed) so that a spreadsheet
-    shows them beside the case.
+    shows them beside the case. A value a case does not have (s0 of a case that loads no contact)
+    is an empty cell.
     """
     path = Path(path)
     with path.open("w", encoding="utf-8", newline="") as handle:
@@ -159,5 +191,6 @@ def write_rows_csv(rows: list[dict], path: str | Path, comment: str = "") -> Pat
         writer = csv.writer(handle, lineterminator="\n")
         writer.writerow([*(label for _, label, _, _ in RESULT_COLUMNS), "warnings"])
         for row in rows:
-            writer.writerow([*(fmt.format(row[key]) for key, _, fmt, _ in RESULT_COLUMNS), "; ".join(row["warnings"])])
+            writer.writerow([*(format_cell(row, key, fmt, missing="") for key, _, fmt, _ in RESULT_COLUMNS),
+                             "; ".join(row["warnings"])])
     return path

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 import xarray as xr
@@ -291,13 +291,82 @@ def sink_estimate(bearing: BearingGeometry, loads: np.ndarray, ball_constant: ob
     return (STRIBECK_CONSTANT * lumped / bearing.ball_count / k) ** (2.0 / 3.0)
 
 
-def _load_array(field: str, value: object, dimension: str, unit: str) -> np.ndarray:
-    if isinstance(value, (str, ureg.Quantity)):
-        return np.atleast_1d(to_si(field, value, dimension, unit))
-    arr = np.atleast_1d(np.asarray(value, dtype=float))
+def sink_culprit(bearing: BearingGeometry, load: np.ndarray, ball_constant: object = None) -> int | None:
+    """The input of one (Fa, Fx, Fy, Mx, My) case that :func:`sink_estimate` finds sinking the rings.
+
+    None when a ``ball_constant`` override is given and the Hertz constant would carry the case within
+    :data:`SINK_LIMIT_FRACTION` (the override is what is wrong); else the column with the largest share of
+    the lumped load P = |Fr| + |Fa| + 2 |M| / dm.
+
+    >>> from auxbearing import get_bearing
+    >>> b = get_bearing("QJ202")
+    >>> sink_culprit(b, [100.0, 0.0, 0.0, 0.0, -1e6]), sink_culprit(b, [0.0, 1000.0, 0.0, 0.0, 0.0], "1 N/m**1.5")
+    (4, None)
+    """
+    row = np.asarray(load, dtype=float)
+    if ball_constant is not None and sink_estimate(bearing, row)[0] <= SINK_LIMIT_FRACTION * bearing.ball_diameter:
+        return None
+    arm = 2.0 / bearing.pitch_diameter
+    return int(np.argmax(np.abs(row) * np.array([1.0, 1.0, 1.0, arm, arm])))
+
+
+def refuse_sinking(bearing, loads, ball_constant, blame) -> None:
+    """Refuse load cases no elastic contact can carry, before any solve.
+
+    The estimate is :func:`sink_estimate`.
+
+    ``blame(k)`` says which input of case k to name.
+    """
+    sink = sink_estimate(bearing, loads, ball_constant)
+    limit = SINK_LIMIT_FRACTION * bearing.ball_diameter
+    worst = int(np.argmax(sink))
+    if sink[worst] > limit:
+        raise InputError(f"{blame(worst)}: the rings would move about {sink[worst] * 1e3:.3g} mm into the balls "
+                         f"(ball diameter {bearing.ball_diameter * 1e3:g} mm), beyond {SINK_LIMIT_FRACTION:.0%} of a "
+                         "ball where no contact law of the ball set holds; no result follows (a steel ball constant "
+                         "is about 1e10 N/m**1.5)")
+
+
+def _refuse_sinking(bearing: BearingGeometry, loads: np.ndarray, ball_constant: object,
+                    named: Callable[[int, int | None], tuple[str, object]]) -> None:
+    """The command line's refusal of loads no elastic contact carries, naming the API's own argument."""
+
+    def blame(k: int) -> str:
+        column = sink_culprit(bearing, loads[k], ball_constant)
+        if column is None:
+            return f"ball_constant = {ball_constant!r}"
+        name, value = named(k, column)
+        return f"{name} = {value!r}"
+
+    refuse_sinking(bearing, loads, ball_constant, blame)
+
+
+def _load_array(field: str, value: object, dimension: str, unit: str) -> tuple[np.ndarray, Callable[[int], object]]:
+    """Loads in SI from a number, a string with a unit, a Quantity or a 1-D sequence of any of them.
+
+    Also returns, for error messages, the value of case k as the user gave it (a single value stands for
+    every case, as it broadcasts).
+    """
+    if isinstance(value, (str, ureg.Quantity)) or np.ndim(value) == 0:
+        return np.atleast_1d(to_si(field, value, dimension, unit)), lambda k: _as_typed(value, unit)
+    try:
+        arr = np.asarray(value, dtype=float)  # the common case, 10^5 numbers of a loads file, at once
+    except (TypeError, ValueError):  # strings with units or Quantities among them: each through to_si
+        items = list(value) if np.ndim(np.asarray(value, dtype=object)) == 1 else None
+        if items is None:
+            raise InputError.for_field(field, value, "must be a load or a 1-D sequence of loads") from None
+        arr = np.array([to_si(f"{field}[{i}]", v, dimension, unit) for i, v in enumerate(items)], dtype=float)
+        return arr, lambda k: _as_typed(items[k if len(items) > 1 else 0], unit)
     if arr.ndim != 1 or not np.all(np.isfinite(arr)):
         raise InputError.for_field(field, value, "must be a finite number or a 1-D sequence of them")
-    return arr
+    return arr, lambda k: _as_typed(arr[k if arr.size > 1 else 0], unit)
+
+
+def _as_typed(value: object, unit: str) -> object:
+    """One load as the user wrote it: a string or Quantity unchanged, a plain number with its unit."""
+    if isinstance(value, (str, ureg.Quantity)):
+        return value
+    return f"{float(value) + 0.0:g} {unit}"  # + 0.0: never "-0 N"
 
 
 def _choice(field: str, value: str, allowed: Sequence[str]) -> str:
@@ -338,33 +407,68 @@ def solve_loads(
     -------
     xarray.Dataset
         See :func:`load_distribution`.
+
+    Raises
+    ------
+    InputError
+        Bad options; loads no equilibrium of the bearing carries; loads that would sink the rings further
+        into the balls than :data:`SINK_LIMIT_FRACTION` of a ball (estimated by :func:`sink_estimate`
+        before any solve), where no contact law of the ball set holds. Errors name the case
+        (``case_names``) and the load column (``axial``, ``force_x``, ...) or ``ball_constant``.
+    """
+    loads = np.atleast_2d(np.asarray(loads, dtype=float))
+    if loads.ndim != 2 or loads.shape[1] != 5 or not np.all(np.isfinite(loads)):
+        raise InputError.for_field("loads", loads.shape, "must be finite (Fa, Fx, Fy, Mx, My) rows")
+    units = ("N", "N", "N", "N*m", "N*m")
+
+    def typed(k: int, column: int | None) -> tuple[str, object]:
+        if column is None:
+            return "loads", [float(v) + 0.0 for v in loads[k]]
+        return LOAD_KEYS[column], f"{float(loads[k, column]) + 0.0:g} {units[column]}"
+
+    return _solve_loads(bearing, loads, axial_condition, tilt, ball_constant, tol, case_names, typed)
+
+
+def _solve_loads(bearing, loads: np.ndarray, axial_condition: str, tilt: str, ball_constant: object, tol: float,
+                 case_names: Sequence[str] | None, typed: Callable[[int, int | None], tuple[str, object]],
+                 contact_side_column: int | None = None) -> xr.Dataset:
+    """:func:`solve_loads` of checked (n, 5) loads.
+
+    ``typed(k, column)`` is input ``column`` of case k (the whole case for None) as the caller's user wrote
+    it, (name, value); ``contact_side_column`` the input blamed when balls would leave their contact side.
     """
     bearing = load_bearing(bearing)
     _choice("axial_condition", axial_condition, AXIAL_CONDITIONS)
     _choice("tilt", tilt, TILT_CONDITIONS)
-    loads = np.atleast_2d(np.asarray(loads, dtype=float))
-    if loads.ndim != 2 or loads.shape[1] != 5 or not np.all(np.isfinite(loads)):
-        raise InputError.for_field("loads", loads.shape, "must be finite (Fa, Fx, Fy, Mx, My) rows")
     if case_names is None:
         case_names = [f"load case {i}" for i in range(loads.shape[0])] if loads.shape[0] > 1 else [""]
     elif len(case_names) != loads.shape[0]:
         raise InputError.for_field("case_names", len(case_names), f"must name each of the {loads.shape[0]} cases")
     where = [f" ({name})" if name else "" for name in case_names]
+
+    def named(k: int, column: int | None) -> tuple[str, object]:
+        name, value = typed(k, column)
+        return name + where[k], value
+
     k_override = _ball_constant(ball_constant)
+    _refuse_sinking(bearing, loads, ball_constant, named)
     params = ballset.ballset_params(bearing, k_override)
     free = (axial_condition == "free", True, True, tilt == "free", tilt == "free")
     one_sided = all(s > 0.0 for s in bearing.axial_signs)
     if one_sided and free[0]:
-        needs = (np.abs(loads[:, 1:]).max(axis=1) > 0.0) & (loads[:, 0] <= 0.0)
+        others = np.abs(loads[:, 1:]).max(axis=1) > 0.0
+        needs = (others & (loads[:, 0] <= 0.0)) | (loads[:, 0] < 0.0)
         if np.any(needs):
             i = int(np.flatnonzero(needs)[0])
-            raise InputError.for_field(
-                "axial" + where[i], f"{float(loads[i, 0]):g} N",
-                f"a single {bearing.label} bearing with a free ring needs an axial load > 0 N pressing the balls "
-                "into their contact side to carry a radial load or moment; give one, or hold the ring "
-                "axially (axial_condition='located'; on the command line --axial-condition located) to get the "
-                "axial reaction",
-            )
+            if others[i]:
+                rule = (f"a single {bearing.label} bearing with a free ring needs an axial load > 0 N pressing the "
+                        "balls into their contact side to carry a radial load or moment; give one")
+            else:
+                rule = (f"a single {bearing.label} bearing with a free ring carries axial load in one direction "
+                        "only (> 0 N, pressing the balls into their contact side): a negative one pulls the ring "
+                        "off its balls and no equilibrium follows; reverse it")
+            raise InputError.for_field(*named(i, 0), rule + ", or hold the ring axially (axial_condition='located'; "
+                                       "on the command line --axial-condition located) to get the axial reaction")
     try:
         sol = solve_cases(loads, params, free=free, tol=tol)
     except ConvergenceError as err:
@@ -378,7 +482,7 @@ def solve_loads(
         if bool(bad.any()):
             i = int(np.flatnonzero(bad.any(("ball", "pair")).values)[0])
             raise InputError.for_field(
-                "loads" + where[i], [float(v) for v in loads[i]],
+                *named(i, contact_side_column),
                 f"no equilibrium on the contact side of this {bearing.label} bearing: the balls would run past "
                 "the groove bottom (loaded contact angle <= 0); raise the axial load or locate the ring axially",
             )
@@ -428,9 +532,9 @@ def load_distribution(
     >>> round(float(ds.max_contact_load[0]), 1), round(float(ds.max_stress[0]) / 1e6)
     (274.8, 2005)
     """
-    fa = _load_array("axial", axial, "force", "N")
-    fr = _load_array("radial", radial, "force", "N")
-    mm = _load_array("moment", moment, "moment", "N*m")
+    fa, typed_fa = _load_array("axial", axial, "force", "N")
+    fr, typed_fr = _load_array("radial", radial, "force", "N")
+    mm, typed_mm = _load_array("moment", moment, "moment", "N*m")
     bearing = load_bearing(bearing, sets=True)
     if not isinstance(bearing, BearingGeometry):  # a duplex set: both rows through the same kernel
         from auxbearing.bearings import duplex_statics
@@ -448,11 +552,20 @@ def load_distribution(
             "loads", (fa.size, fr.size, mm.size), "axial, radial, moment lengths must broadcast") from None
     loads = np.zeros((fa.size, 5))
     loads[:, 0], loads[:, 1], loads[:, 4] = fa, fr, -mm
-    ds = solve_loads(bearing, loads, axial_condition=axial_condition, tilt=tilt, ball_constant=ball_constant, tol=tol,
-                     case_names=case_names)
+    columns = (("axial", typed_fa), ("radial", typed_fr), ("radial", typed_fr), ("moment", typed_mm),
+               ("moment", typed_mm))
+
+    def typed(k: int, column: int | None) -> tuple[str, object]:
+        name, value = columns[0 if column is None else column]
+        return name, value(k)
+
+    # balls pushed off their contact side: the axial load is what presses them into it
+    ds = _solve_loads(bearing, loads, axial_condition, tilt, ball_constant, tol, case_names, typed,
+                      contact_side_column=0)
     ds["radial_load"] = ("case", fr.astype(float), {"units": "N", "long_name": "Radial load Fr (along +x)"})
     ds["moment"] = ("case", mm.astype(float), {"units": "N*m", "long_name": "Moment M of source paper Eq. 14"})
-    ds["tilt"] = ("case", -ds["tilt_y"].values, {"units": "rad", "long_name": "Tilt theta of source paper Eq. 10"})
+    # 0.0 - x: an untilted ring stores 0, not the -0 that negating gives
+    ds["tilt"] = ("case", 0.0 - ds["tilt_y"].values, {"units": "rad", "long_name": "Tilt theta of source paper Eq. 10"})
     ds["radial_displacement"] = ("case", ds["displacement_x"].values,
                                  {"units": "m", "long_name": "Radial displacement along the radial load"})
     return ds
@@ -501,8 +614,9 @@ def _dataset(bearing, params, loads, sol, axial_condition, tilt, tol, k_override
         max_contact_load=("case", state.load.max(axis=(1, 2)),
                           {"units": "N", "long_name": "Largest contact-pair load"}),
         max_stress=("case", max_stress, {"units": "Pa", "long_name": "Largest Hertz max stress, inner or outer race"}),
-        safety_factor_s0=("case", safety_factor(max_stress),
-                          {"units": "1", "long_name": "Static safety factor (4200 MPa / sigma_max)^3, ISO 76:2006"}),
+        safety_factor_s0=("case", np.where(max_stress > 0.0, safety_factor(max_stress), np.nan),
+                          {"units": "1", "long_name": "Static safety factor (4200 MPa / sigma_max)^3, ISO 76:2006",
+                           "comment": "NaN (no value) where no contact carries load: no stress, so no s0"}),
         residual=("case", sol.residual, {"units": "N", "long_name": "Max equilibrium residual, moments / r_ic"}),
         relative_residual=("case", sol.relative_residual, {"units": "1", "long_name": "Residual / largest load"}),
         iterations=("case", sol.iterations, {"units": "1", "long_name": "Newton iterations"}),
@@ -530,8 +644,45 @@ def _dataset(bearing, params, loads, sol, axial_condition, tilt, tol, k_override
     return ds
 
 
+def planar_components(ds: xr.Dataset) -> tuple[np.ndarray, np.ndarray]:
+    """Radial displacement [m] and tilt [rad] of every case as signed numbers in the plane of its load.
+
+    :func:`load_distribution` defines them (``radial_displacement`` along +x, the radial load's axis;
+    ``tilt`` theta of source paper Eq. 10, -tilt_y) and they are returned as they are. For 5-DOF cases
+    (:func:`solve_loads`) the same convention is carried over: the axis is that of the radial force (Fx, Fy),
+    or, with none, the one in whose plane the moment (Mx, My) tilts the ring, with no load at all +x; it is
+    pointed along +x (along +y when it is the y axis), so a case that is planar reads exactly as
+    :func:`load_distribution` gives it. The tilt is then taken about the axis at -90 deg from it, as theta
+    = -tilt_y is for +x. A magnitude (hypot) would drop the sign of a load along -x.
+
+    >>> r, t = planar_components(solve_loads("QJ202", [[0.0, -500.0, 0.0, 0.0, 0.0]]))
+    >>> round(float(r[0]) * 1e6, 4), float(t[0]) + 0.0
+    (-7.3633, 0.0)
+    """
+    if "radial_displacement" in ds and "tilt" in ds:
+        return ds["radial_displacement"].values, ds["tilt"].values
+    fx, fy = ds["force_x"].values, ds["force_y"].values
+    mx, my = ds["moment_x"].values, ds["moment_y"].values
+    by_force = (fx != 0.0) | (fy != 0.0)
+    # the moment (0, -M) of load_distribution tilts the ring in the x-z plane: its axis (M, 0) is (-My, Mx)
+    ux = np.where(by_force, fx, -my)
+    uy = np.where(by_force, fy, mx)
+    norm = np.hypot(ux, uy)
+    safe = np.where(norm > 0.0, norm, 1.0)
+    ux = np.where(norm > 0.0, ux / safe, 1.0)
+    uy = np.where(norm > 0.0, uy / safe, 0.0)
+    flip = (ux < 0.0) | ((ux == 0.0) & (uy < 0.0))
+    ux, uy = np.where(flip, -ux, ux), np.where(flip, -uy, uy)
+    radial = ds["displacement_x"].values * ux + ds["displacement_y"].values * uy
+    tilt = ds["tilt_x"].values * uy - ds["tilt_y"].values * ux
+    return radial, tilt
+
+
 def summary(ds: xr.Dataset, case: int = 0) -> dict:
     """One load case in display units: the mapping printed by ``auxbearing static --json``.
+
+    Displacement and tilt are signed, as :func:`planar_components` gives them; ``safety_factor_s0`` is None
+    when no contact carries load (no stress, so no s0).
 
     Examples
     --------
@@ -540,9 +691,7 @@ def summary(ds: xr.Dataset, case: int = 0) -> dict:
     (['axial_displacement_um', 'balls', 'max_contact_load_N'], 11, 2)
     """
     c = ds.isel(case=case)
-    tilt = float(c["tilt"]) if "tilt" in c else float(np.hypot(c["tilt_x"], c["tilt_y"]))
-    radial = float(c["radial_displacement"]) if "radial_displacement" in c else float(
-        np.hypot(c["displacement_x"], c["displacement_y"]))
+    radial, tilt = (float(v[0]) for v in planar_components(ds.isel(case=[case])))
     balls = []
     for j in range(c.sizes["ball"]):
         b = c.isel(ball=j)
@@ -555,13 +704,15 @@ def summary(ds: xr.Dataset, case: int = 0) -> dict:
                 "max_stress_outer_MPa": float(b["max_stress_outer"][k]) / 1e6,
             } for k in range(c.sizes["pair"])],
         })
+    s0 = float(c["safety_factor_s0"])
+    # + 0.0 turns a negative zero into zero; an unloaded ring has no stress, so no s0 (None)
     return {
-        "axial_displacement_um": float(c["axial_displacement"]) * 1e6,
-        "radial_displacement_um": radial * 1e6,
-        "tilt_mrad": tilt * 1e3,
+        "axial_displacement_um": float(c["axial_displacement"]) * 1e6 + 0.0,
+        "radial_displacement_um": radial * 1e6 + 0.0,
+        "tilt_mrad": tilt * 1e3 + 0.0,
         "max_contact_load_N": float(c["max_contact_load"]),
         "max_stress_MPa": float(c["max_stress"]) / 1e6,
-        "safety_factor_s0": float(c["safety_factor_s0"]),
+        "safety_factor_s0": s0 if math.isfinite(s0) else None,
         "residual_N": float(c["residual"]),
         "balls": balls,
     }

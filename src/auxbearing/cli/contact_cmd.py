@@ -12,7 +12,6 @@ from auxbearing.cli.common import (
     echo_json,
     json_option,
     out_option,
-    quantity,
     resolve_bearing,
     warn,
 )
@@ -24,10 +23,10 @@ MAX_SWEEP_POINTS = 250_000
 
 
 def _ball_load(text: str) -> float:
-    load = quantity("--ball-load", text, "force", "N")
-    if load < 0.0:
-        raise InputError.for_field("--ball-load", text, "must be >= 0 N")
-    return load
+    from auxbearing.analysis.contact import ball_load_si
+
+    return ball_load_si(text, "--ball-load")
+
 
 _ROWS = (
     ("contact_load_N", "Contact load", "N", "{:.1f}"),
@@ -59,19 +58,20 @@ def contact_command(bearing_spec, ball_load, contact_angle, groove_ratio, method
     from rich.console import Console
     from rich.table import Table
 
-    from auxbearing.analysis.contact import ball_contact, ellipse_checks
+    from auxbearing.analysis.contact import OutsideHertz, ball_contact, ellipse_checks
     from auxbearing.analysis.statics import stress_warning
     bearing = resolve_bearing(bearing_spec, contact_angle, groove_ratio)
     load = _ball_load(ball_load)
-    result = ball_contact(bearing, load, method=method)
     # the option to blame for a contact outside Hertz theory: the override given, else the load
     load_given = click.get_current_context().get_parameter_source("ball_load") != click.core.ParameterSource.DEFAULT
     blame = next(((n, v) for n, v in (("--groove-ratio", groove_ratio), ("--contact-angle", contact_angle),
                                       ("--ball-load", ball_load if load_given else None), ("--bearing", bearing_spec))
                   if v is not None))
-    notes, refusal = ellipse_checks(bearing, result)
-    if refusal is not None:
-        raise InputError.for_field(blame[0], blame[1], refusal)
+    try:
+        result = ball_contact(bearing, load, method=method)
+    except OutsideHertz as err:  # the API names its argument; here the option typed
+        raise InputError.for_field(blame[0], blame[1], err.reason) from None
+    notes = ellipse_checks(bearing, result)[0]
     warn(*notes, where=f"{blame[0]} {blame[1]}: ")
     warn(stress_warning(1e6 * max(result["inner"]["max_stress_MPa"], result["outer"]["max_stress_MPa"])))
     if as_json:
@@ -173,14 +173,12 @@ def _points_outside_hertz(bearing, ds) -> int:
     """Grid points whose ellipse is as large as the ball or reaches past the shoulder (as in :func:`ellipse_checks`)."""
     import numpy as np
 
-    from auxbearing.machine.model import SHOULDER_FRACTION
+    from auxbearing.analysis.contact import outside_hertz
 
-    a = ds["semi_major"].values  # race x angle x ratio
-    groove = ds["groove_ratio"].values[None, None, :] * bearing.ball_diameter
     alpha = np.radians(ds["contact_angle"].values)[None, :, None]
-    shoulder = np.arccos(np.maximum(-1.0, 1.0 - SHOULDER_FRACTION * bearing.ball_diameter / groove))
-    bad = (a >= 0.5 * bearing.ball_diameter) | (alpha + a / groove > shoulder)
-    return int(np.count_nonzero(bad.any(axis=0)))
+    too_large, over_shoulder = outside_hertz(bearing, ds["semi_major"].values, alpha,  # race x angle x ratio
+                                             ds["groove_ratio"].values[None, None, :])
+    return int(np.count_nonzero((too_large | over_shoulder).any(axis=0)))
 
 
 COMMANDS = [contact_command, contact_sweep_command]

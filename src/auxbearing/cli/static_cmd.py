@@ -7,7 +7,8 @@ from pathlib import Path
 
 import click
 
-from auxbearing.analysis.plausibility import refuse_sinking, static_sink_warning
+from auxbearing.analysis.plausibility import static_sink_warning
+from auxbearing.analysis.statics import refuse_sinking
 from auxbearing.cli.common import (
     bearing_option,
     checked_out_dir,
@@ -63,8 +64,10 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     """
     import numpy as np
     from rich.console import Console
+    from rich.markup import escape
     from rich.table import Table
 
+    from auxbearing.analysis.static_cases import format_cell
     from auxbearing.analysis.statics import (
         load_distribution,
         summary,
@@ -79,8 +82,8 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     typed = {"--axial": axial, "--radial": radial, "--moment": moment}
     five = np.array([[loads["axial"], loads["radial"], 0.0, 0.0, -loads["moment"]]])
     with option_named("--ball-constant", "ball_constant"):
-        refuse_sinking(bearing, five, ball_constant, lambda k: _blame(typed, loads, ball_constant))
-    with option_named("--ball-constant", "ball_constant"), option_named("--axial", "axial"):
+        refuse_sinking(bearing, five, ball_constant, lambda k: _blame(bearing, five[k], typed, ball_constant))
+    with option_named("--ball-constant", "ball_constant"), _named_as_typed(typed):
         ds = load_distribution(bearing, **loads, axial_condition=axial_condition, tilt=tilt,
                                ball_constant=ball_constant)
     result = summary(ds)
@@ -89,26 +92,31 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
         echo_json(result)
         return
     console = Console()
-    table = Table(title=f"{bearing.name} ({bearing.label}): Fa = {loads['axial']:g} N, Fr = {loads['radial']:g} N, "
-                        f"M = {loads['moment']:g} N·m; axial {axial_condition}, tilt {tilt}")
-    table.add_column("φ [deg]", justify="right")
+    # escaped: rich reads a lowercase "[deg]" as a style tag and drops it
+    table = Table(title=escape(f"{bearing.name} ({bearing.label}): Fa = {loads['axial']:g} N, "
+                               f"Fr = {loads['radial']:g} N, M = {loads['moment']:g} N·m; axial {axial_condition}, "
+                               f"tilt {tilt}"))
+    table.add_column(escape("φ [deg]"), justify="right")
     for k in range(bearing.pairs_per_ball):
         suffix = f" {k + 1}" if bearing.pairs_per_ball > 1 else ""
-        table.add_column(f"Q{suffix} [N]", justify="right")
-        table.add_column(f"α{suffix} [deg]", justify="right")
-        table.add_column(f"σ inner{suffix} [MPa]", justify="right")
+        table.add_column(escape(f"Q{suffix} [N]"), justify="right")
+        table.add_column(escape(f"α{suffix} [deg]"), justify="right")
+        table.add_column(escape(f"σ inner{suffix} [MPa]"), justify="right")
     for ball in result["balls"]:
         row = [f"{ball['azimuth_deg']:.1f}"]
         for pair in ball["pairs"]:
             row += [f"{pair['load_N']:.1f}", f"{pair['contact_angle_deg']:.2f}", f"{pair['max_stress_inner_MPa']:.0f}"]
         table.add_row(*row)
     console.print(table)
-    click.echo(f"Axial displacement   {result['axial_displacement_um']:.3f} µm")
-    click.echo(f"Radial displacement  {result['radial_displacement_um']:.3f} µm")
-    click.echo(f"Tilt                 {result['tilt_mrad']:.4f} mrad")
+    click.echo(f"Axial displacement   {format_cell(result, 'axial_displacement_um', '{:.3f}')} µm")
+    click.echo(f"Radial displacement  {format_cell(result, 'radial_displacement_um', '{:.3f}')} µm")
+    click.echo(f"Tilt                 {format_cell(result, 'tilt_mrad', '{:.4f}')} mrad")
     click.echo(f"Max contact load     {result['max_contact_load_N']:.1f} N")
     click.echo(f"Max contact stress   {result['max_stress_MPa']:.1f} MPa")
-    click.echo(f"Static safety s0     {result['safety_factor_s0']:.3g} (ISO 76: 4200 MPa)")
+    if result["safety_factor_s0"] is None:
+        click.echo("Static safety s0     - (no contact is loaded)")
+    else:
+        click.echo(f"Static safety s0     {result['safety_factor_s0']:.3g} (ISO 76: 4200 MPa)")
     if axial_condition == "located":
         click.echo(f"Axial reaction       {float(ds['axial_reaction'][0]):.1f} N")
     click.echo(f"Residual             {result['residual_N']:.2e} N")
@@ -185,6 +193,7 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
     """
     import numpy as np
     from rich.console import Console
+    from rich.markup import escape
     from rich.table import Table
 
     from auxbearing import __version__
@@ -192,6 +201,7 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
         FIVE_DOF,
         RESULT_COLUMNS,
         case_rows,
+        format_cell,
         load_cases,
         read_load_cases,
         worst_case,
@@ -233,30 +243,60 @@ def static_cases_command(bearing_spec, loads_path, axial_condition, tilt, ball_c
     if as_json:
         echo_json({**result, "out": str(out_dir) if out_dir is not None else None})
         return
-    table = Table(title=f"{bearing.name} ({bearing.label}): {len(rows)} load cases from {loads_path}")
+    # escaped: rich reads a lowercase "[mrad]" as a style tag and drops it
+    table = Table(title=escape(f"{bearing.name} ({bearing.label}): {_count(len(rows), 'load case')} from "
+                               f"{loads_path}"))
     for *_, short in RESULT_COLUMNS:
-        table.add_column(short, justify="right")
+        table.add_column(escape(short), justify="right")
     for row in rows[:_PRINTED_CASES]:
-        table.add_row(*[fmt.format(row[key]) for key, _, fmt, _ in RESULT_COLUMNS])
+        table.add_row(*[format_cell(row, key, fmt) for key, _, fmt, _ in RESULT_COLUMNS])
     Console().print(table)
     if len(rows) > _PRINTED_CASES:
-        click.echo(f"... {len(rows) - _PRINTED_CASES} more cases" + (" in the files" if out_dir else "; use --out"))
+        click.echo(f"... {_count(len(rows) - _PRINTED_CASES, 'more case')}"
+                   + (" in the files" if out_dir else "; use --out"))
     click.echo(f"Worst case: line {worst['line']}, max stress {worst['max_stress_MPa']:.1f} MPa, "
-               f"s0 {worst['safety_factor_s0']:.3g}")
+               f"s0 {format_cell(worst, 'safety_factor_s0', '{:.3g}')}")
     if out_dir is not None:
         click.echo(f"Wrote static_cases.nc, static_cases.csv and static_cases.json in {out_dir}/")
 
 
-def _blame(typed: dict, loads: dict, ball_constant: str | None) -> str:
-    """The option a load that sinks the rings into the balls comes from, as ``--option = 'value'``."""
-    if ball_constant is not None:
+def _blame(bearing, load, typed: dict, ball_constant: str | None) -> str:
+    """The option a load that sinks the rings into the balls comes from, as ``--option = 'value'``.
+
+    ``load`` is the case's (Fa, Fx, Fy, Mx, My); the input is the one
+    :func:`~auxbearing.analysis.statics.sink_culprit` finds, as the API names it.
+    """
+    from auxbearing.analysis.statics import sink_culprit
+
+    column = sink_culprit(bearing, load, ball_constant)
+    if column is None:
         return f"--ball-constant = {ball_constant!r}"
-    name = max(("--axial", "--radial", "--moment"), key=lambda n: abs(loads[n[2:]]))
+    name = ("--axial", "--radial", "--radial", "--moment", "--moment")[column]
     return f"{name} = {typed[name]!r}"
 
 
+@contextlib.contextmanager
+def _named_as_typed(typed: dict):
+    """An error of the API about ``axial``, ``radial`` or ``moment`` named as the option, with the text typed.
+
+    An option left at its default keeps the API's value, which carries its unit ("--axial = '0 N'").
+    """
+    try:
+        yield
+    except InputError as err:
+        head, sep, rule = str(err).partition(": ")
+        option = "--" + head.split(" = ")[0]
+        if not sep or option not in typed:
+            raise
+        source = click.get_current_context().get_parameter_source(option[2:])
+        if source == click.core.ParameterSource.DEFAULT:
+            raise InputError(option + str(err)[len(option) - 2:]) from None
+        raise InputError.for_field(option, typed[option], rule) from None
 
 
+def _count(n: int, noun: str) -> str:
+    """"1 load case", "3 load cases"."""
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
 
 
 COMMANDS = [static_command, static_study_command, static_cases_command]

@@ -151,6 +151,7 @@ def load_study_config(path: str | Path | None, field: str = "file") -> StudyConf
     ratios = _triple("study.groove_ratios", study.get("groove_ratios"), "dimensionless", base.groove_ratios)
     if ratios[0] <= 0.5:
         raise InputError.for_field("study.groove_ratios", study["groove_ratios"], "must start above 0.5")
+    _check_hertz_range(study, bearing, comparison, ball_load, angles, ratios)
     sections = {name: data[name] for name in ("rotor", "drop") if name in data}
     _check_drop_tables(sections)
     paper_comparison = study.get("paper_comparison", False)
@@ -159,6 +160,42 @@ def load_study_config(path: str | Path | None, field: str = "file") -> StudyConf
     return StudyConfig(bearing=bearing, comparison=comparison, title=str(study.get("title", DEFAULT_TITLE)),
                        ball_load=ball_load, contact_angles_deg=angles, groove_ratios=ratios,
                        sections=sections, source=str(path), paper_comparison=paper_comparison)
+
+
+def _check_hertz_range(study: dict, bearing: BearingGeometry, comparison: BearingGeometry, ball_load: float,
+                       angles: tuple[float, float, float], ratios: tuple[float, float, float]) -> None:
+    """Refuse a contact stage with no Hertz result in it, as ``auxbearing contact`` refuses one contact.
+
+    The stage computes one ball of each bearing, the four-point bearing's geometry as an angular-contact one
+    (Fig. 4) and a map over the angle and ratio grids; any contact ellipse as large as the ball is outside Hertz
+    theory (:func:`auxbearing.analysis.contact.ellipse_checks`). Checked on the grid by
+    :func:`~auxbearing.analysis.contact.grid_refusal`, which blames the grid the largest ellipse comes from:
+    the angles (or the load) when the bearing's own groove ratio already fails at the largest angle, else
+    the ratios; of those, the first the file gives.
+    """
+    from auxbearing.analysis.contact import OutsideHertz, ball_contact, grid_refusal, sweep_grid, type_comparison
+
+    load_text = study.get("ball_load", "1000 N")
+    for name, check in ((bearing.name, lambda: ball_contact(bearing, ball_load)),
+                        (comparison.name, lambda: ball_contact(comparison, ball_load)),
+                        (f"{bearing.name} as angular contact, Fig. 4", lambda: type_comparison(bearing, ball_load))):
+        try:
+            check()
+        except OutsideHertz as err:
+            raise InputError.for_field("study.ball_load", load_text, f"{err.reason} (bearing {name})") from None
+    angle_grid, ratio_grid = sweep_grid(*angles), sweep_grid(*ratios)
+    reason = grid_refusal(bearing, ball_load, angle_grid, ratio_grid)
+    if reason is None:
+        return
+    # at the bearing's own groove ratio the angles (or the load) go too far; else only the ratios reach it
+    at_own_ratio = grid_refusal(bearing, ball_load, angle_grid, [bearing.inner_groove_ratio]) is not None
+    order = ("contact_angles", "ball_load", "groove_ratios") if at_own_ratio else (
+        "groove_ratios", "contact_angles", "ball_load")
+    key = next((k for k in order if k in study), None)
+    rule = f"{reason} (bearing {bearing.name}, ball load {ball_load:g} N)"
+    if key is None:  # the paper's sweep and load: the bearing's own geometry is what leaves Hertz theory
+        raise InputError.for_field("bearing", bearing.name, rule + " over the study's default contact sweep")
+    raise InputError.for_field(f"study.{key}", study[key], rule)
 
 
 def _same(a: object, b: object) -> bool:
