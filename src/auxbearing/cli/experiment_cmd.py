@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import re
 from pathlib import Path
 
 import click
@@ -37,6 +38,26 @@ def _as_option(option: str, text: str):
     except InputError as err:
         field, _, rule = str(err).partition(": ")
         raise InputError.for_field(option, text, f"{field}: {rule}") from None
+
+
+_FIELD_VALUE_RULE = re.compile(r"^(?P<field>[^=]+?) = (?P<value>.*?): (?P<rule>.*)$", re.DOTALL)
+
+
+@contextlib.contextmanager
+def _as_typed(typed: dict[str, tuple[str, str | None]]):
+    """A library error about one of its inputs, told with the option and the value as typed.
+
+    The library sees the SI numbers converted from the options (``cutoff = 30000.0: ...``), so it cannot quote
+    what the person typed (``--cutoff = '30 kHz': ...``). ``typed`` maps a field to (option, text).
+    """
+    try:
+        yield
+    except InputError as err:
+        match = _FIELD_VALUE_RULE.match(str(err))
+        if match is None or match["field"] not in typed:
+            raise
+        option, text = typed[match["field"]]
+        raise InputError.for_field(option, text, match["rule"]) from None
 
 
 def _positive(option: str, text: str | None, dimension: str, unit: str) -> float | None:
@@ -122,23 +143,27 @@ def experiment_command(measured, bearing_spec, config, offset, scale, cutoff, dr
     factor = to_si("--scale", scale, "dimensionless")
     if factor <= 0.0:
         raise InputError.for_field("--scale", scale, "must be > 0 (a sensor sensitivity correction)")
-    prep = Preprocessing(
-        offset=_offset(offset.strip()),
-        scale=factor,
-        cutoff=None if cutoff.strip().lower() == "none" else _frequency(cutoff),
-        drop_time=quantity("--drop-time", drop_time, "time", "s"),
-    )
-    fit_options = FitOptions(window=_positive("--fit-window", fit_window, "time", "ms"))
+    typed = {"offset": ("--offset", offset), "scale": ("--scale", scale), "cutoff": ("--cutoff", cutoff),
+             "drop_time": ("--drop-time", drop_time), "window": ("--fit-window", fit_window),
+             "clearance": ("--clearance", clearance)}
+    with _as_typed(typed):
+        prep = Preprocessing(
+            offset=_offset(offset.strip()),
+            scale=factor,
+            cutoff=None if cutoff.strip().lower() == "none" else _frequency(cutoff),
+            drop_time=quantity("--drop-time", drop_time, "time", "s"),
+        )
+        fit_options = FitOptions(window=_positive("--fit-window", fit_window, "time", "ms"))
     clearance_si = _positive("--clearance", clearance, "length", "mm")
     with option_named("--measured", "measured file"):
         data = read_measured(measured, unit_map, field="--measured")
-    with option_named("--drop-time", "drop_time"), option_named("--cutoff", "cutoff"):
+    with _as_typed(typed):
         from auxbearing.experiment.orbit import preprocess
 
         preprocess(data, prep)  # the record against the options, before any fit or simulation
     progress = Progress(TextColumn("{task.description:<48}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
                         TimeElapsedColumn(), console=Console(stderr=True), disable=quiet or as_json, transient=True)
-    with progress:
+    with progress, _as_typed(typed):
         task = progress.add_task("experiment", total=1.0)
         result = run_experiment(data, bearing, Rotor(**rotor_kw), DropCase(**drop_kw), prep, fit=not no_fit,
                                 fit_options=fit_options, clearance=clearance_si,
@@ -180,26 +205,47 @@ def _frequency(text: str) -> float:
     return value
 
 
+def _clearance_line(m: dict) -> str:
+    """The clearance behind the force estimate and how much 1 um of it moves the peak stress."""
+    head = f"Clearance used for the force: {m['clearance_used_um']:.2f} µm ({m['clearance_source']}); "
+    plus, minus = m["peak_stress_if_clearance_plus_1um_MPa"], m["peak_stress_if_clearance_minus_1um_MPa"]
+    if m["peak_contact_force_N"] > 0.0:
+        return head + f"±1 µm moves the peak stress to {plus:.0f} / {minus:.0f} MPa"
+    # no contact: "moves the peak stress to 0 / 0 MPa" would read as a result
+    gap = m.get("gap_to_clearance_um")
+    inside = f"the orbit stays {gap:.2f} µm inside it: " if gap is not None else ""
+    if minus > 0.0:
+        return head + inside + f"no contact (1 µm less would give a peak stress of {minus:.0f} MPa)"
+    return head + inside + "no contact, so no force or stress from the orbit"
+
+
 def _print(summary: dict, out_dir: Path) -> None:
     from rich.console import Console
+    from rich.markup import escape
     from rich.table import Table
 
     console = Console()
     if summary["synthetic"]:
         console.print("[bold]Note: this record is SYNTHETIC (made by the simulation), not a measurement.[/bold]")
-    table = Table(title=f"{summary['bearing']}: peaks from the orbit and from the simulation")
+    table = Table(title=escape(f"{summary['bearing']}: peaks from the orbit and from the simulation"))
     columns = summary["peak_table"]["columns"]
+    rows = summary["peak_table"]["rows"]
     # the terminal gets the values and the last difference; the JSON has every difference
     keep = [k for k, c in enumerate(columns) if not c.startswith("Δ")] + [len(columns) - 1]
-    for k in keep:
-        table.add_column(columns[k], justify="left" if k == 0 else "right", no_wrap=k == 0)
-    for row in summary["peak_table"]["rows"]:
-        table.add_row(*(row[k] for k in keep))
+    # rich shrinks columns that do not fit by cutting their words ("configu…"); narrowed to their longest
+    # word (or value) instead, the headers wrap between words and a table of a fit fits 80 columns
+    widest = [max([len(columns[k])] + [len(r[k]) for r in rows]) for k in keep]
+    narrowest = [max([len(w) for w in columns[k].split()] + [len(r[k]) for r in rows] + [1]) for k in keep]
+    tight = sum(widest) + 3 * len(keep) + 1 > console.width
+    for j, k in enumerate(keep):
+        # escaped: rich reads "[ms]" as a style tag and would drop the unit
+        table.add_column(escape(columns[k]), justify="left" if k == 0 else "right", no_wrap=k == 0,
+                         width=narrowest[j] if tight and k else None)
+    for row in rows:
+        table.add_row(*(escape(row[k]) for k in keep))
     console.print(table)
     m = summary["measured"]
-    console.print(f"Clearance used for the force: {m['clearance_used_um']:.2f} µm ({m['clearance_source']}); "
-                  f"±1 µm moves the peak stress to {m['peak_stress_if_clearance_plus_1um_MPa']:.0f} / "
-                  f"{m['peak_stress_if_clearance_minus_1um_MPa']:.0f} MPa")
+    console.print(escape(_clearance_line(m)))
     if "fit" in summary:
         fit = summary["fit"]
         ft = Table(title=f"Fit over the first {fit['window_ms']:g} ms (residual rms {fit['residual_rms_um']:.2f} µm)")

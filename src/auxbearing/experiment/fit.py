@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import xarray as xr
@@ -36,6 +36,7 @@ from scipy import optimize
 from auxbearing.analysis.drop import journal_orbit
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.common.errors import InputError
+from auxbearing.common.params import convert
 from auxbearing.experiment.orbit import lowpass
 from auxbearing.planar.params import DropCase, Rotor
 from auxbearing.planar.rig import planar_machine, run_drop
@@ -55,23 +56,48 @@ class FitOptions:
 
     Parameters
     ----------
-    window : float
-        Length of the fitted stretch after the drop [s].
+    window : float or str
+        Length of the fitted stretch after the drop: a string with a unit ("12 ms") or seconds.
     max_evaluations : int
-        Cap on the solver's residual evaluations (each is one short simulation).
+        Cap on the solver's residual evaluations (each is one short simulation), a whole number >= 5.
     phase_grid : int
-        Phases tried in the coarse start grid.
+        Phases tried in the coarse start grid, spread evenly around the circle: a whole number >= 1.
+
+    Examples
+    --------
+    >>> FitOptions(window="14 ms").window
+    0.014
+    >>> FitOptions(phase_grid=0)
+    Traceback (most recent call last):
+    ...
+    auxbearing.common.errors.InputError: phase_grid = 0: must be a whole number >= 1
     """
 
     window: float = 12e-3
     max_evaluations: int = 40
     phase_grid: int = 8
+    #: each field as it was given, so that a check made later against the record quotes it as written
+    typed: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        if not 2e-3 <= self.window <= 0.2:
-            raise InputError.for_field("fit window", f"{self.window * 1e3:g} ms", "must lie in [2, 200] ms")
-        if self.max_evaluations < 5:
-            raise InputError.for_field("fit max_evaluations", self.max_evaluations, "must be >= 5")
+        object.__setattr__(self, "typed", {"window": self.window, "max_evaluations": self.max_evaluations,
+                                           "phase_grid": self.phase_grid})
+        window = convert("window", self.window, "time")
+        if not 2e-3 <= window <= 0.2:
+            raise InputError.for_field("window", self.typed["window"], "must lie in [2, 200] ms")
+        object.__setattr__(self, "window", window)
+        object.__setattr__(self, "max_evaluations", _count("max_evaluations", self.max_evaluations, 5))
+        object.__setattr__(self, "phase_grid", _count("phase_grid", self.phase_grid, 1))
+
+
+def _count(name: str, value: object, least: int) -> int:
+    """A whole number of at least ``least``; 40.0 is taken as 40, 5.5 or True is refused."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, str)):
+        raise InputError.for_field(name, value, f"must be a whole number >= {least}")
+    number = convert(name, value, "dimensionless")
+    if number != int(number) or number < least:
+        raise InputError.for_field(name, value, f"must be a whole number >= {least}")
+    return int(number)
 
 
 def simulate_states(bearing: BearingGeometry, rotor: Rotor, case: DropCase, duration: float,
@@ -205,13 +231,13 @@ def fit_parameters(orbit: xr.Dataset, info: dict, bearing: BearingGeometry, roto
     """
     options = options or FitOptions()
     if orbit.time.values[-1] < options.window:
-        raise InputError.for_field("fit window", f"{options.window * 1e3:g} ms",
+        raise InputError.for_field("window", options.typed.get("window", options.window),
                                    f"longer than the record after the drop ({orbit.time.values[-1] * 1e3:.3g} ms)")
     problem = _Problem(orbit, bearing, rotor, case, info, options)
     radius = np.hypot(problem.measured[:, 0], problem.measured[:, 1])
     tau = problem.tau[problem.fitted]
     if tau[int(np.argmax(radius))] > options.window - 1e-3:
-        raise InputError.for_field("fit window", f"{options.window * 1e3:g} ms",
+        raise InputError.for_field("window", options.typed.get("window", options.window),
                                    "ends before the first impact has rebounded (the orbit is still moving out at its "
                                    "end); make it longer")
     p0 = _start_point(problem, case, options)

@@ -50,6 +50,9 @@ MIN_SAMPLING_RATE = 5e3
 ORBIT_SPAN = (1e-6, 20e-3)
 #: A typical span [m] (the source paper's rig: 0.2 mm clearance), against which another unit is suggested.
 TYPICAL_SPAN = 0.4e-3
+#: A drop moves the journal from its levitated spot by more than this many times its jitter there (the
+#: factor on the noise the drop detection uses, :func:`auxbearing.experiment.orbit.detect_drop`).
+DROP_TO_JITTER = 10.0
 #: Length units a sensor's column is written in, with their size in metres.
 LENGTH_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "nm": 1e-9}
 
@@ -99,14 +102,14 @@ def read_csv(path: str | Path, units: dict[str, str] | None = None, delimiter: s
     """
     table = read_unit_csv(path, _CSV_COLUMNS, file_field=field, aliases=_ALIASES, units=units,
                           delimiter=delimiter)
-    written = {}
+    written, labels = {}, {}
     for label in table.header:
         head, _, unit = label.partition("[")
         channel = _channel(head)
         if channel is not None:
             written[channel] = unit.rstrip("] ").strip() or (units or {}).get(channel, "")
-    return _checked(table.data, [f"line {n}" for n in table.lines], Path(path).name,
-                    {h: h for h in table.header}, table.meta, written)
+            labels[channel] = label  # errors quote the header as written ('time [ms]'), as the reader's own do
+    return _checked(table.data, [f"line {n}" for n in table.lines], Path(path).name, labels, table.meta, written)
 
 
 def read_netcdf(path: str | Path, units: dict[str, str] | None = None, field: str = "measured file") -> xr.Dataset:
@@ -181,6 +184,8 @@ def _orbit_span(data: dict[str, np.ndarray], name: str, labels: dict, written: d
     if ORBIT_SPAN[0] <= span <= ORBIT_SPAN[1]:
         return
     columns = f"{labels.get('x', 'x')!r}, {labels.get('y', 'y')!r}"
+    if span < ORBIT_SPAN[0]:
+        _refuse_without_drop(data, name, columns, span)
     size = "more" if span > ORBIT_SPAN[1] else "less"
     text = (f"{name}: columns {columns}: the journal moves over {span * 1e3:.4g} mm, {size} than a drop's orbit can "
             f"(about twice the radial clearance: {ORBIT_SPAN[0] * 1e6:g} um to {ORBIT_SPAN[1] * 1e3:g} mm)")
@@ -194,6 +199,29 @@ def _orbit_span(data: dict[str, np.ndarray], name: str, labels: dict, written: d
     elif span < ORBIT_SPAN[0]:
         text += ": no drop in it, or a length unit too large"
     raise InputError(text)
+
+
+def _refuse_without_drop(data: dict[str, np.ndarray], name: str, columns: str, span: float) -> None:
+    """Refuse a record in which the journal never leaves its levitated spot: it ends before the drop.
+
+    A unit too large shrinks the whole drop, its noise included, so the journal still moves hundreds of times
+    further than it jitters while levitated; a record of the levitated journal alone moves no further than
+    that jitter. Only the first is told to check its unit.
+    """
+    from auxbearing.experiment.orbit import OPENING_SAMPLES, OPENING_STRETCH, noise_level
+
+    x, y, t = data["x"], data["y"], data["time"]
+    n0 = max(OPENING_SAMPLES, int(np.searchsorted(t, t[0] + OPENING_STRETCH)))
+    # the spread of the opening stretch as well as the sample-to-sample noise: a sensor's anti-alias filter
+    # smooths its noise, which the second differences of noise_level then underrate
+    jitter = max(noise_level(x), noise_level(y), float(np.std(x[:n0])), float(np.std(y[:n0])))
+    away = float(np.max(np.hypot(x - np.median(x[:n0]), y - np.median(y[:n0]))))
+    if away > DROP_TO_JITTER * jitter:
+        return
+    raise InputError(f"{name}: columns {columns}: the journal never leaves its levitated position (it moves "
+                     f"{away * 1e6:.3g} um at most, within {DROP_TO_JITTER:g} times its jitter of "
+                     f"{jitter * 1e6:.2g} um): the record ends before the drop, or holds none ({t.size} samples "
+                     f"over {(t[-1] - t[0]) * 1e3:.3g} ms)")
 
 
 def _checked(data: dict[str, np.ndarray], where: list[str], name: str, labels: dict, meta: dict,

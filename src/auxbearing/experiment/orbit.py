@@ -32,7 +32,7 @@ Readers: :mod:`auxbearing.experiment.io`. Fit of the uncertain parameters:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
@@ -40,7 +40,9 @@ from scipy import optimize, signal
 
 from auxbearing.analysis.whirl import spectral_whirl
 from auxbearing.bearings.ballset import ballset_state
+from auxbearing.bearings.ratings import ISO76_BALL_STRESS
 from auxbearing.common.errors import InputError
+from auxbearing.common.params import convert
 
 #: Standard gravity [m/s^2], to back-date the drop from the first clear movement (free fall).
 GRAVITY = 9.80665
@@ -54,11 +56,17 @@ ENVELOPE_FRACTION = 0.85
 OPENING_STRETCH = 1e-3
 #: Fewest samples of the opening stretch (a median of fewer is at the mercy of the noise).
 OPENING_SAMPLES = 16
+#: Highest low-pass cutoff as a share of the sampling rate: a Butterworth designed at or past the Nyquist
+#: frequency (0.5) is unstable, and just below it the forward-backward pass rings.
+NYQUIST_SHARE = 0.45
 
 
 @dataclass(frozen=True)
 class Preprocessing:
-    """How a measured record is prepared (SI).
+    """How a measured record is prepared.
+
+    Every length, time and frequency takes a string with a unit ("8 kHz", "5 ms", "31.7 um") or a
+    number in SI units (Hz, s, m).
 
     Parameters
     ----------
@@ -71,13 +79,22 @@ class Preprocessing:
         only rattles in the bottom it is a few um off; prefer ``start`` or a given offset then.
     scale : float
         Factor applied to the displacement channels (sensor sensitivity correction) [-].
-    cutoff : float or None
+    cutoff : float, str or None
         -3 dB frequency of the zero-phase 4th-order Butterworth low-pass [Hz]; None: no filter.
-    drop_time : float or None
+    drop_time : float, str or None
         Moment of the drop in record time [s]; None: detected.
-    clearance : float or None
+    clearance : float, str or None
         Radius of the clearance circle to impose in the offset fit [m] (an arc too short to fix
         the radius needs it); None: fitted with the centre.
+
+    Examples
+    --------
+    >>> Preprocessing(cutoff="5 kHz", drop_time="5 ms").cutoff
+    5000.0
+    >>> Preprocessing(cutoff="-5 kHz")
+    Traceback (most recent call last):
+    ...
+    auxbearing.common.errors.InputError: cutoff = '-5 kHz': must be > 0 Hz
     """
 
     offset: str | tuple[float, float] = "auto"
@@ -85,20 +102,42 @@ class Preprocessing:
     cutoff: float | None = 8e3
     drop_time: float | None = None
     clearance: float | None = None
+    #: each field as it was given, so that a check made later against the record quotes it as written
+    typed: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        typed = {f: getattr(self, f) for f in ("offset", "scale", "cutoff", "drop_time", "clearance")}
+        object.__setattr__(self, "typed", typed)
         if isinstance(self.offset, str):
             if self.offset not in ("auto", "fit", "start"):
                 raise InputError.for_field("offset", self.offset,
                                            "must be 'auto', 'fit', 'start' or two lengths (x0, y0)")
-        elif len(self.offset) != 2 or not all(math.isfinite(v) for v in self.offset):
-            raise InputError.for_field("offset", self.offset, "must be two finite lengths (x0, y0)")
-        if not (math.isfinite(self.scale) and self.scale > 0.0):
-            raise InputError.for_field("scale", self.scale, "must be > 0")
-        if self.cutoff is not None and not self.cutoff > 0.0:
-            raise InputError.for_field("cutoff", self.cutoff, "must be > 0 Hz")
-        if self.clearance is not None and not self.clearance > 0.0:
-            raise InputError.for_field("clearance", self.clearance, "must be > 0 m")
+        else:
+            try:
+                parts = tuple(self.offset)
+            except TypeError:
+                parts = ()
+            if len(parts) != 2:
+                raise InputError.for_field("offset", self.offset,
+                                           "must be 'auto', 'fit', 'start' or two lengths (x0, y0)")
+            object.__setattr__(self, "offset", tuple(convert("offset", v, "length") for v in parts))
+        object.__setattr__(self, "scale", convert("scale", self.scale, "dimensionless"))
+        if not self.scale > 0.0:
+            raise InputError.for_field("scale", typed["scale"], "must be > 0")
+        cutoff = self.cutoff
+        if isinstance(cutoff, str) and cutoff.strip().lower() == "none":
+            cutoff = None
+        if cutoff is not None:
+            cutoff = convert("cutoff", cutoff, "frequency")
+            if not cutoff > 0.0:
+                raise InputError.for_field("cutoff", typed["cutoff"], "must be > 0 Hz")
+        object.__setattr__(self, "cutoff", cutoff)
+        if self.drop_time is not None:
+            object.__setattr__(self, "drop_time", convert("drop_time", self.drop_time, "time"))
+        if self.clearance is not None:
+            object.__setattr__(self, "clearance", convert("clearance", self.clearance, "length"))
+            if not self.clearance > 0.0:
+                raise InputError.for_field("clearance", typed["clearance"], "must be > 0 m")
 
 
 def lowpass(values: np.ndarray, rate: float, cutoff: float | None) -> np.ndarray:
@@ -113,8 +152,9 @@ def lowpass(values: np.ndarray, rate: float, cutoff: float | None) -> np.ndarray
     """
     if cutoff is None:
         return np.asarray(values, float).copy()
-    if cutoff >= 0.45 * rate:
-        raise InputError.for_field("cutoff", cutoff, f"must be below 0.45 x the sampling rate ({0.45 * rate:.4g} Hz)")
+    if cutoff >= NYQUIST_SHARE * rate:
+        raise InputError.for_field("cutoff", f"{cutoff:g} Hz", f"must be below {NYQUIST_SHARE:g} x the sampling rate "
+                                   f"({NYQUIST_SHARE * rate:.5g} Hz)")
     sos = signal.butter(4, cutoff, fs=rate, output="sos")
     return signal.sosfiltfilt(sos, values)
 
@@ -255,12 +295,19 @@ def preprocess(measured: xr.Dataset, options: Preprocessing | None = None) -> tu
     rate = float(measured.attrs.get("sampling_rate_Hz", 1.0 / np.median(np.diff(t))))
     xs = measured.x.values * opt.scale
     ys = measured.y.values * opt.scale
+    if opt.cutoff is not None and opt.cutoff >= NYQUIST_SHARE * rate:
+        raise InputError.for_field("cutoff", opt.typed.get("cutoff", opt.cutoff),
+                                   f"must be below {NYQUIST_SHARE:g} x the record's sampling rate of {rate:.5g} Hz, "
+                                   f"i.e. below {NYQUIST_SHARE * rate:.5g} Hz")
     xf, yf = lowpass(xs, rate, opt.cutoff), lowpass(ys, rate, opt.cutoff)
     noise_raw = max(noise_level(xs), noise_level(ys))
     drop, info = detect_drop(t, xf, yf, max(noise_raw, 1e-9))
     if opt.drop_time is not None:
+        # the last sample is excluded: a drop there leaves no orbit to analyse
         if not t[0] <= opt.drop_time < t[-1]:
-            raise InputError.for_field("drop_time", opt.drop_time, f"must lie in the record [{t[0]:g}, {t[-1]:g}] s")
+            raise InputError.for_field("drop_time", opt.typed.get("drop_time", opt.drop_time),
+                                       f"must lie in the record's time span [{t[0]:g}, {t[-1]:g}) s: at or after its "
+                                       "first sample and before its last")
         drop = float(opt.drop_time)
         info["drop_detection"] = "given"
     pre = t < drop
@@ -271,8 +318,13 @@ def preprocess(measured: xr.Dataset, options: Preprocessing | None = None) -> tu
     if method == "auto":
         method = "start" if pre.sum() >= 16 else "fit"
     if isinstance(method, str) and method == "fit":
-        circle = fit_clearance_circle(xf[after], yf[after], (info["levitated_x_m"], info["levitated_y_m"]),
-                                      opt.clearance)
+        try:
+            circle = fit_clearance_circle(xf[after], yf[after], (info["levitated_x_m"], info["levitated_y_m"]),
+                                          opt.clearance)
+        except InputError as err:
+            if opt.offset != "auto":
+                raise
+            raise _auto_fell_back(err, t, xs, ys, noise_raw, opt) from None
         x0, y0 = circle["centre"]
     elif isinstance(method, str):
         if pre.sum() < 16:
@@ -296,6 +348,28 @@ def preprocess(measured: xr.Dataset, options: Preprocessing | None = None) -> tu
         "start_x_m": info["levitated_x_m"] - x0, "start_y_m": info["levitated_y_m"] - y0,
     })
     return orbit, info
+
+
+def _auto_fell_back(err: InputError, t: np.ndarray, xs: np.ndarray, ys: np.ndarray, noise: float,
+                    opt: Preprocessing) -> InputError:
+    """The circle fit's refusal told as what 'auto' did: it found no levitated stretch, so it fitted.
+
+    The person chose 'auto' (or left it), not 'fit', so the message names 'auto' and says why it fitted; when
+    the unfiltered record does have a levitated stretch, the low-pass smeared it away and the cutoff is to blame.
+    """
+    cause = str(err).partition(": ")[2].split("; ")[0]
+    smeared = ""
+    if opt.cutoff is not None:
+        raw_drop, _ = detect_drop(t, xs, ys, max(noise, 1e-9))
+        if np.sum(t < raw_drop) >= 16:
+            typed = opt.typed.get("cutoff", opt.cutoff)
+            shown = typed if isinstance(typed, str) else f"{opt.cutoff:g} Hz"
+            smeared = (f" (the unfiltered record has one: the low-pass cutoff of {shown} smears the drop back "
+                       "over it)")
+    return InputError.for_field(
+        "offset", "auto", f"'auto' (the default) found no levitated stretch before the drop{smeared}, so it fell back "
+        f"to fitting the offset to the orbit, but {cause}; give the offset as two lengths (x0, y0)"
+        + (" or raise the cutoff" if smeared else ""))
 
 
 def _ball_force_along(u: np.ndarray, nx: np.ndarray, ny: np.ndarray,
@@ -437,6 +511,30 @@ def contact_from_orbit(x: np.ndarray, y: np.ndarray, clearance: float, line_stif
             "max_ball_stress": max_stress}
 
 
+def elastic_limit_excursion(direction: float, line_stiffness: float, ball_params: np.ndarray,
+                            stress: float = ISO76_BALL_STRESS) -> float:
+    """Excursion beyond the clearance [m] at which the contact puts its most loaded ball at ``stress``.
+
+    The series split of :func:`contact_from_orbit` along the angle ``direction`` [rad], on a log grid of
+    excursions from 1 nm to 10 mm (the stress rises with the excursion), interpolated in log-log.
+    With the default, ISO 76's 4200 MPa, it is the deepest the journal can go beyond the clearance
+    circle while the bearing stays within its static rating. Infinite if the grid never reaches it.
+
+    Examples
+    --------
+    >>> from auxbearing import get_bearing
+    >>> from auxbearing.bearings.ballset import ballset_params
+    >>> round(elastic_limit_excursion(-np.pi / 2, 1.463e9, ballset_params(get_bearing("QJ202"))) * 1e6)
+    79
+    """
+    e = np.geomspace(1e-9, 1e-2, 241)
+    c = contact_from_orbit(e * math.cos(direction), e * math.sin(direction), 0.0, line_stiffness, ball_params)
+    sigma = c["max_ball_stress"]
+    if not sigma[-1] >= stress:
+        return math.inf
+    return float(np.exp(np.interp(math.log(stress), np.log(np.maximum(sigma, 1e-300)), np.log(e))))
+
+
 def count_impacts(t: np.ndarray, excursion: np.ndarray, on: float, min_gap: float = 2e-4) -> dict:
     """Contact episodes of a sampled orbit: excursion above ``on``, ended below ``on``/2 (hysteresis).
 
@@ -485,7 +583,9 @@ def orbit_features(orbit: xr.Dataset, clearance: float, line_stiffness: float, b
         The orbit with ``excursion``, ``line_penetration``, ``race_displacement``,
         ``contact_force``, ``max_ball_load``, ``max_ball_stress`` and ``ball_load`` (time, ball, pair).
     summary : dict
-        Peaks and their times, impacts, first impact, whirl (units in the keys).
+        Peaks and their times, impacts, first impact, whirl (units in the keys). ``peak_excursion_um`` is
+        the largest excursion beyond the clearance circle; an orbit that never gets beyond it has none
+        (None, as have the peak times) and ``gap_to_clearance_um`` says how far inside it stays.
     """
     t = orbit.time.values
     after = t >= 0.0
@@ -510,11 +610,18 @@ def orbit_features(orbit: xr.Dataset, clearance: float, line_stiffness: float, b
     first = impacts["first_impact_s"]
     whirl = spectral_whirl(t, orbit.x.values, orbit.y.values, clearance, spin,
                          first if first is not None else t[-1] + 1.0)
+    # an orbit that never gets beyond the clearance circle has no peak: its "time" would be the first sample
+    # (before the drop) and its "excursion" a negative number; both are null, and how far the orbit stays
+    # inside is stored under its own name
+    reach = float(c["excursion"][after].max())
     summary = {
-        "peak_contact_force_N": float(force[kf]), "peak_force_time_ms": float(t[kf] * 1e3),
-        "peak_ball_stress_MPa": float(stress[ks] / 1e6), "peak_stress_time_ms": float(t[ks] * 1e3),
+        "peak_contact_force_N": float(force[kf]),
+        "peak_force_time_ms": float(t[kf] * 1e3) if force[kf] > 0.0 else None,
+        "peak_ball_stress_MPa": float(stress[ks] / 1e6),
+        "peak_stress_time_ms": float(t[ks] * 1e3) if stress[ks] > 0.0 else None,
         "peak_ball_load_N": float(c["max_ball_load"][after].max()),
-        "peak_excursion_um": float(c["excursion"][after].max() * 1e6),
+        "peak_excursion_um": reach * 1e6 if reach > 0.0 else None,
+        "gap_to_clearance_um": -reach * 1e6 if reach <= 0.0 else None,
         "impacts": impacts["impacts"], "impact_threshold_um": on * 1e6,
         "first_impact_ms": None if first is None else first * 1e3,
         "whirl": whirl["whirl"], "whirl_frequency_Hz": whirl["whirl_frequency_Hz"],
