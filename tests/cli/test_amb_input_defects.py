@@ -93,6 +93,7 @@ def test_a_controller_with_a_zero_denominator_is_told_so(tmp_path, den):
     assert "the denominator den must not be all zeros" in line and "proper" not in line, line
 
 
+@pytest.mark.slow  # a drop of the blower: about 2 s
 def test_a_scenario_after_the_run_says_it_never_struck(tmp_path):
     # not refused: verify runs a scenario case for its time plus drop.duration, and a scenario far ahead is how a
     # run is held levitated throughout; the summary must not read as a scenario survived
@@ -114,6 +115,7 @@ def test_a_rate_zero_to_the_computations_precision_is_no_instability():
     assert NEUTRAL * 2 * np.pi * 5000 > 5.7e-9
 
 
+@pytest.mark.slow  # a drop of the blower: about 2 s
 def test_an_iron_saturated_bearing_reports_an_undamped_mode_not_a_growth(tmp_path):
     text = _blower_text().replace('max_current = "5 A"', 'max_current = "5 A"\nload_capacity = "10 N"')
     result, _ = _drop(tmp_path, text, "--scenario", "power loss", "--duration", "2 ms")
@@ -124,6 +126,7 @@ def test_an_iron_saturated_bearing_reports_an_undamped_mode_not_a_growth(tmp_pat
     assert "UNSTABLE" not in levitation["note"] and "+0.00" not in levitation["note"]
 
 
+@pytest.mark.slow  # a drop of the blower: about 2 s
 def test_saturation_and_first_contact_are_booked_once_and_in_time(tmp_path):
     text = _blower_text().replace('unbalance_phase = "0 deg"',
                                   'unbalance_phase = "0 deg"\nstart_x = "0.1 mm"\nstart_y = "-0.05 mm"')

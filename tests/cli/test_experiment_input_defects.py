@@ -97,6 +97,7 @@ def test_api_clearance_with_unit_and_an_orbit_far_beyond_it_is_warned(tmp_path):
     assert stress.startswith("measured orbit: max contact stress 4510 MPa exceeds the 4200 MPa of ISO 76")
 
 
+@pytest.mark.slow  # the whole experiment command on the shipped record
 def test_cli_orbit_far_beyond_the_clearance_is_warned(tmp_path):
     result = _run(tmp_path, "--measured", str(_plain(tmp_path, 1500)), "--no-fit", "--clearance", "100 um",
                   "--out", str(tmp_path / "o"), "--quiet")
@@ -114,6 +115,7 @@ def test_the_right_clearance_is_not_warned(tmp_path):
 
 
 # ----------------------------------------------------------------------------- 3. no contact at all
+@pytest.mark.slow  # the whole experiment command on the shipped record
 def test_no_contact_has_no_peak_times_and_says_so(tmp_path):
     out = tmp_path / "o"
     result = _run(tmp_path, "--measured", str(_plain(tmp_path, 1500)), "--no-fit", "--out", str(out), "--quiet")
