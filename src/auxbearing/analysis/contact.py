@@ -77,12 +77,15 @@ def check_method(method: object, field: str = "method") -> str:
     return method
 
 
-def with_overrides(bearing: BearingGeometry, contact_angle: object = None, groove_ratio: object = None
+def with_overrides(bearing: BearingGeometry, contact_angle: object = None, groove_ratio: object = None,
+                   names: tuple[str, str] = ("contact_angle", "groove_ratio"), angle_unit: str = "rad"
                    ) -> BearingGeometry:
     """``bearing`` with its contact angle and both groove ratios replaced; errors name the value as given.
 
-    A plain number for the angle is in radians, as every angle of a
-    :class:`~auxbearing.bearings.geometry.BearingGeometry`; a string carries its own unit ("35 deg").
+    ``names`` are the two inputs as the caller's user knows them (the API's arguments, or the command line's
+    ``--contact-angle`` and ``--groove-ratio``); a plain number for the angle is in ``angle_unit`` (radians in
+    the API, as every angle of a :class:`~auxbearing.bearings.geometry.BearingGeometry`; degrees on the command
+    line); a string carries its own unit ("35 deg").
 
     >>> from auxbearing import get_bearing
     >>> with_overrides(get_bearing("QJ202"), contact_angle=35)
@@ -90,22 +93,23 @@ def with_overrides(bearing: BearingGeometry, contact_angle: object = None, groov
     ...
     auxbearing.common.errors.InputError: contact_angle = 35: must lie in [0, 90) deg; a plain number is in rad (35...
     """
+    angle_name, ratio_name = names
     changes: dict = {}
     typed: dict = {}
     if contact_angle is not None:
-        angle = to_si("contact_angle", contact_angle, "angle", "rad")
+        angle = to_si(angle_name, contact_angle, "angle", angle_unit)
         if not 0.0 <= angle < 0.5 * math.pi:
             rule = "must lie in [0, 90) deg"
-            if isinstance(contact_angle, (int, float)):  # a number meant in degrees is the likely slip
+            if angle_unit == "rad" and isinstance(contact_angle, (int, float)):  # degrees meant: the likely slip
                 rule += (f"; a plain number is in rad ({contact_angle:g} rad = {math.degrees(angle):.0f} deg), "
                          f"write '{contact_angle:g} deg' for degrees")
-            raise InputError.for_field("contact_angle", contact_angle, rule)
+            raise InputError.for_field(angle_name, contact_angle, f"{rule} (bearing {bearing.name})")
         changes["contact_angle"] = angle
-        typed["contact_angle"] = ("contact_angle", contact_angle)
+        typed["contact_angle"] = (angle_name, contact_angle)
     if groove_ratio is not None:
-        ratio = to_si("groove_ratio", groove_ratio, "dimensionless")
+        ratio = to_si(ratio_name, groove_ratio, "dimensionless")
         changes.update(inner_groove_ratio=ratio, outer_groove_ratio=ratio)
-        typed["inner_groove_ratio"] = typed["outer_groove_ratio"] = ("groove_ratio", groove_ratio)
+        typed["inner_groove_ratio"] = typed["outer_groove_ratio"] = (ratio_name, groove_ratio)
     if not changes:
         return bearing
     try:
@@ -114,7 +118,7 @@ def with_overrides(bearing: BearingGeometry, contact_angle: object = None, groov
         head, _, rule = str(err).partition(": ")
         key = head.split(" = ")[0]
         if key in typed:
-            raise InputError.for_field(*typed[key], rule) from None
+            raise InputError.for_field(*typed[key], f"{rule} (bearing {bearing.name})") from None
         raise
 
 

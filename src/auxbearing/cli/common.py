@@ -86,30 +86,11 @@ def resolve_bearing(spec: str, contact_angle: str | None = None, groove_ratio: s
 
     Errors name the options as typed (``option``, ``--contact-angle``, ``--groove-ratio``) with the values as typed.
     """
+    from auxbearing.analysis.contact import with_overrides
     from auxbearing.bearings.catalogue import load_bearing
-    from auxbearing.common.units import to_si
 
-    bearing = load_bearing(spec, option)
-    changes: dict = {}
-    typed: dict = {}
-    if contact_angle is not None:
-        changes["contact_angle"] = to_si("--contact-angle", contact_angle, "angle", "deg")
-        typed["contact_angle"] = ("--contact-angle", contact_angle)
-    if groove_ratio is not None:
-        ratio = to_si("--groove-ratio", groove_ratio, "dimensionless")
-        changes.update(inner_groove_ratio=ratio, outer_groove_ratio=ratio)
-        typed["inner_groove_ratio"] = typed["outer_groove_ratio"] = ("--groove-ratio", groove_ratio)
-    if not changes:
-        return bearing
-    try:
-        return bearing.with_changes(**changes)
-    except InputError as err:
-        field, _, rule = str(err).partition(": ")
-        key = field.split(" = ")[0]
-        if key in typed:
-            name, text = typed[key]
-            raise InputError.for_field(name, text, f"{rule} (bearing {bearing.name})") from None
-        raise
+    return with_overrides(load_bearing(spec, option), contact_angle, groove_ratio,
+                          names=("--contact-angle", "--groove-ratio"), angle_unit="deg")
 
 
 def echo_json(obj: object) -> None:
