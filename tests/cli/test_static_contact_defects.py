@@ -262,3 +262,13 @@ def test_no_negative_zero_is_printed(tmp_path, monkeypatch):
     assert "-0.0" not in result.stdout and "-0.0" not in (tmp_path / "o1" / "static_cases.csv").read_text()
     with xr.open_dataset(tmp_path / "o1" / "static_cases.nc") as ds:
         assert not np.signbit(ds["tilt"].values).any()
+
+
+def test_an_unloaded_tandem_pair_has_no_s0_as_a_single_bearing_has_none():
+    # the matched sets' statics stored s0 = inf where no contact carries load
+    import math
+
+    from auxbearing.analysis.statics import load_distribution
+
+    s0 = load_distribution("7208 DT", axial=[0.0, 500.0]).safety_factor_s0.values
+    assert math.isnan(s0[0]) and math.isfinite(s0[1])

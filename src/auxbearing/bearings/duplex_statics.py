@@ -241,7 +241,9 @@ def load_distribution(pair: DuplexSet, axial=0.0, radial=0.0, moment=0.0, tilt: 
                                 {"units": "N"}),
             "max_contact_load": ("case", state.load.max(axis=(1, 2, 3)), {"units": "N"}),
             "max_stress": ("case", max_stress, {"units": "Pa"}),
-            "safety_factor_s0": ("case", safety_factor(max_stress), {"units": "1"}),
+            # as a single bearing's (analysis.statics): no loaded contact, no stress, so no s0 (never inf)
+            "safety_factor_s0": ("case", np.where(max_stress > 0.0, safety_factor(max_stress), np.nan),
+                                 {"units": "1", "comment": "NaN (no value) where no contact carries load"}),
             "residual": ("case", residual, {"units": "N"}),
             "axial_load": ("case", fa, {"units": "N"}),
             "radial_load": ("case", fr, {"units": "N"}),
