@@ -140,8 +140,11 @@ class Preprocessing:
                 raise InputError.for_field("clearance", typed["clearance"], "must be > 0 m")
 
 
-def lowpass(values: np.ndarray, rate: float, cutoff: float | None) -> np.ndarray:
+def lowpass(values: np.ndarray, rate: float, cutoff: float | None, given: object = None) -> np.ndarray:
     """Zero-phase 4th-order Butterworth low-pass (forward-backward, so no delay) [same units].
+
+    ``given`` is the cutoff as the user wrote it ("30 kHz"), for the refusal of one at or past
+    :data:`NYQUIST_SHARE` of the sampling rate.
 
     Examples
     --------
@@ -153,8 +156,9 @@ def lowpass(values: np.ndarray, rate: float, cutoff: float | None) -> np.ndarray
     if cutoff is None:
         return np.asarray(values, float).copy()
     if cutoff >= NYQUIST_SHARE * rate:
-        raise InputError.for_field("cutoff", f"{cutoff:g} Hz", f"must be below {NYQUIST_SHARE:g} x the sampling rate "
-                                   f"({NYQUIST_SHARE * rate:.5g} Hz)")
+        raise InputError.for_field("cutoff", f"{cutoff:g} Hz" if given is None else given,
+                                   f"must be below {NYQUIST_SHARE:g} x the record's sampling rate of {rate:.5g} Hz, "
+                                   f"i.e. below {NYQUIST_SHARE * rate:.5g} Hz")
     sos = signal.butter(4, cutoff, fs=rate, output="sos")
     return signal.sosfiltfilt(sos, values)
 
@@ -295,11 +299,8 @@ def preprocess(measured: xr.Dataset, options: Preprocessing | None = None) -> tu
     rate = float(measured.attrs.get("sampling_rate_Hz", 1.0 / np.median(np.diff(t))))
     xs = measured.x.values * opt.scale
     ys = measured.y.values * opt.scale
-    if opt.cutoff is not None and opt.cutoff >= NYQUIST_SHARE * rate:
-        raise InputError.for_field("cutoff", opt.typed.get("cutoff", opt.cutoff),
-                                   f"must be below {NYQUIST_SHARE:g} x the record's sampling rate of {rate:.5g} Hz, "
-                                   f"i.e. below {NYQUIST_SHARE * rate:.5g} Hz")
-    xf, yf = lowpass(xs, rate, opt.cutoff), lowpass(ys, rate, opt.cutoff)
+    given = opt.typed.get("cutoff")
+    xf, yf = lowpass(xs, rate, opt.cutoff, given), lowpass(ys, rate, opt.cutoff, given)
     noise_raw = max(noise_level(xs), noise_level(ys))
     drop, info = detect_drop(t, xf, yf, max(noise_raw, 1e-9))
     if opt.drop_time is not None:
