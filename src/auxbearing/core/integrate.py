@@ -212,7 +212,7 @@ def dense_eval(coeff, theta, out):
             coeff[2, i] + theta * (coeff[3, i] + one_minus * coeff[4, i])))
 
 
-@njit
+@njit(inline="always")
 def dense_root(g, coeff, model, tmp, arg):
     """Fraction theta in (0, 1] of a step where ``g(y, model, arg)`` turns positive (bisection, 60 halvings).
 
@@ -231,7 +231,7 @@ def dense_root(g, coeff, model, tmp, arg):
     return hi
 
 
-@njit
+@njit(inline="always")
 def dense_max(f, coeff, model, tmp, arg):
     """Golden-section search of the largest ``f(y, model, arg)`` inside one step (dense output).
 
@@ -367,7 +367,7 @@ def accepted(observe, model, obs, t, h, h_proposed, last, t_end, y, y1, k1, k_en
     return t, h, k_next, code
 
 
-@njit
+@njit(inline="always")
 def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     """Advance ``y`` from ``memory.t`` towards ``t_end`` with DOPRI5 and PI step control.
 
