@@ -5,8 +5,9 @@ largest callees one after the other: the machine's right-hand side (:func:`auxbe
 21 s on the 2-core reference machine) and the observer (:func:`auxbearing.core.watch.observe`, about 31 s).
 Neither is inlined into the integrator, and both are cached on disk. So a helper process compiles the observer
 into the shared cache while this one compiles the right-hand side and the small kernels a drop's summary uses;
-the integrator then finds both callees in the cache (about 14 s for what is left), and the helper goes on to
-the outputs' kernels. The default drop from the command line, from an empty cache on the 2-core machine: 51.7-51.8 s
+the integrator then finds both callees in the cache (about 8 s for what is left: numba links both into it and
+optimises them once more, since the generic integrator is inlined into it), and the helper goes on to the outputs'
+kernels. The default drop from the command line, from an empty cache on the 2-core machine: 51.7-51.8 s
 against 104.8-110.4 s without the helper, with less CPU (84-85 s against 95-99 s; README, "Compiled kernels").
 
 It runs once per installation and kernel signature (the shipped examples share one; another plane count makes

@@ -367,6 +367,8 @@ def accepted(observe, model, obs, t, h, h_proposed, last, t_end, y, y1, k1, k_en
     return t, h, k_next, code
 
 
+# Inlined into each driver (core/drive.py): numba links a called kernel into its caller and optimises the linked
+# code again, so a separate integrator made the right-hand side and the observer be optimised twice more.
 @njit(inline="always")
 def dopri5(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     """Advance ``y`` from ``memory.t`` towards ``t_end`` with DOPRI5 and PI step control.

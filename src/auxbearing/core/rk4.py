@@ -117,7 +117,7 @@ def hermite_coefficients(y0, y1, h, f0, f1, out):
         out[4, i] = 0.0
 
 
-@njit(inline="always")
+@njit(inline="always")  # inlined into its driver, as integrate.dopri5 (compiled once there, not twice)
 def rk4(rhs, observe, model, obs, y, t_end, settings, memory, grid):
     """Advance ``y`` from ``memory.t`` towards ``t_end`` with the classical RK4 and its embedded estimate.
 
