@@ -9,13 +9,13 @@ from auxbearing.analysis.scenario_outcome import saturation
 from auxbearing.verify.judge import _scenario_criteria
 
 
-def _cases(peak: float, scenario: dict) -> SimpleNamespace:
+def _cases(peak: float, scenario: dict, simulated: float = 0.5, quick: bool = False) -> SimpleNamespace:
     amb = [{"name": "de", "peak_axis_current_A": peak, "max_current_A": 5.0},
            {"name": "nde", "peak_axis_current_A": 1.0, "max_current_A": 5.0}]
-    summary = {"amb": amb, "scenario": {"time_ms": 30.0, **scenario}}
-    plain = {"amb": amb, "scenario": {"time_ms": 0.0}}  # a drop from the centre is not a scenario case
+    summary = {"amb": amb, "scenario": {"time_ms": 30.0, **scenario}, "simulated_s": simulated}
+    plain = {"amb": amb, "scenario": {"time_ms": 0.0}, "simulated_s": 0.2}  # a drop from the centre: no scenario
     return SimpleNamespace(drops={"drop at the maximum speed": SimpleNamespace(summary=plain),
-                                  "scenario: dip": SimpleNamespace(summary=summary)})
+                                  "scenario: dip": SimpleNamespace(summary=summary)}, quick=quick)
 
 
 def test_the_current_criterion_takes_the_bearing_closest_to_its_limit():
@@ -60,3 +60,26 @@ def test_the_criteria_table_sets_the_current_share_and_a_relevitation_time_for_e
     assert len(_scenario_criteria(_cases(2.0, {"outcome": "on the touchdown bearings"}), criteria)) == 1
     (over,) = _scenario_criteria(_cases(2.6, {"outcome": "on the touchdown bearings"}), criteria)
     assert over.passed is False
+
+
+def test_a_run_too_short_to_show_a_re_levitation_leaves_it_not_checked():
+    # the blower's supply dip under --quick: struck at 30 ms, its run ends at 80 ms, still bouncing; a settled
+    # stretch of 20 % of the time after the strike (20 ms at least) past the 40 ms limit needs 60 ms after it
+    bouncing = {"relevitated_at_ms": None, "outcome": "not settled"}
+    criteria = {"max_amb_current_share": 1.0, "relevitation_time": 0.04, "given": ["relevitation_time"]}
+    _, cut = _scenario_criteria(_cases(2.0, bouncing, simulated=0.08, quick=True), criteria)
+    assert cut.passed is None and cut.kind == "not checked"
+    assert "the run ended 50.0 ms after the strike" in cut.evidence and "60.0 ms" in cut.evidence
+    assert "(--quick)" in cut.evidence
+    # long enough, and still not re-levitated: a fail
+    _, late = _scenario_criteria(_cases(2.0, bouncing, simulated=0.095), criteria)
+    assert late.passed is False and late.found is None
+
+
+def test_without_a_campaign_the_final_verdict_has_its_whirl_probability_not_checked():
+    from auxbearing.verify.judge import WHIRL_PROBABILITY, _campaign_criterion
+
+    criteria = {"max_backward_whirl_probability": 0.05, "given": []}
+    assert _campaign_criterion(None, criteria, final=False) is None  # judged before the campaign ran
+    c = _campaign_criterion(None, criteria, final=True)
+    assert c.name == WHIRL_PROBABILITY and c.passed is None and "no campaign was run" in c.evidence

@@ -32,6 +32,7 @@ from auxbearing.machine.combinations import SEAT_TOLERANCE
 from auxbearing.machine.judging import (
     FRICTION_SOURCE,
     VERIFY_TABLE,
+    read_criteria,
     verify_settings,
 )
 from auxbearing.machine.model import Machine, machine_from_mapping
@@ -127,9 +128,12 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
         cases.machines["drop with the thrust reversed"] = variant(
             data, name, base, rotor={"axial_force": f"{float(-machine.rotor.axial_force)!r} N"}, drop=drop)
     after = min(machine.simulation.duration, QUICK_DROP) if quick else machine.simulation.duration
+    every = read_criteria(data.get("criteria"))["relevitation_time"]
     for scenario in machine.scenarios:  # levitated until the scenario strikes, then the drop's own duration
-        # a re-levitation asked for is watched to its limit and a settled stretch after it
-        span = max(after, 1.5 * scenario.relevitate_within) if scenario.relevitate_within else after
+        # a re-levitation asked for (by the scenario or by [criteria]) is watched to its limit and a settled stretch
+        # after it
+        within = scenario.relevitate_within or every
+        span = max(after, 1.5 * within) if within else after
         cases.machines[SCENARIO_CASE + scenario.name] = variant(
             data, name, base, drop={"duration": f"{float(scenario.time + span)!r} s"}).with_scenario(scenario.name)
     cases.spreads = campaign_spreads(cases.machine, settings)

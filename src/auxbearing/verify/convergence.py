@@ -154,7 +154,10 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
                 value = plain(run)
                 return None if value is None else value - ambient
     elif c.name.startswith("static safety factor") or c.name.startswith("journal excursion"):
-        case = next((k for k in cases.drops if k in (c.evidence or "")), next(iter(cases.drops)))
+        # the drop the evidence names; none (a campaign's drop governs) has no case of its own to run again
+        case = next((k for k in cases.drops if k in (c.evidence or "")), None)
+        if case is None:
+            return lambda: None
         future = executor.submit(run_machine, _tightened(cases.machines[case], False))
         before = _drop_quantity(c.name, cases.drops[case].summary)
         what["case"] = case

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from auxbearing.analysis.scenario_outcome import SATURATED
+from auxbearing.analysis.scenario_outcome import SATURATED, SETTLED, SETTLED_MIN
 from auxbearing.analysis.whirl import BACKWARD
 from auxbearing.campaign.evaluate import FAILED, OUT_OF_RANGE
 from auxbearing.machine.scenario import SCENARIO_CASE
@@ -26,8 +26,12 @@ def _drop_planes(cases: Cases):
             yield case, run, plane
 
 
-def judge(cases: Cases, criteria: dict) -> list[Criterion]:
-    """Every criterion of the issue for one design, in the order the report shows them."""
+def judge(cases: Cases, criteria: dict, final: bool = False) -> list[Criterion]:
+    """Every criterion of the issue for one design, in the order the report shows them.
+
+    ``final``: the design's last judgement, after its campaign: a design without one (``campaign_samples = 0``) has
+    its whirl probability not checked, never left out. Before the campaign (``final`` false) it is not judged yet.
+    """
     out = []
     out.append(_static_safety(cases, criteria))
     # no run leaving the model's range
@@ -93,9 +97,18 @@ def judge(cases: Cases, criteria: dict) -> list[Criterion]:
         unsettled = PARTIAL_COASTDOWN_CRITERIA + ((range_name,) if cases.coastdown is None else ())
         out = [_unsettled(c, cases.partial_coastdown) if c.name in unsettled else c for c in out]
     out = drops_cut_short(cases, out)
-    if cases.campaign is not None:
-        out.append(_whirl_probability(cases.campaign, criteria))
-    return out
+    whirl = _campaign_criterion(cases.campaign, criteria, final)
+    return out if whirl is None else [*out, whirl]
+
+
+def _campaign_criterion(campaign: dict | None, criteria: dict, final: bool) -> Criterion | None:
+    """The whirl probability of the campaign; not checked in a final judgement without one; None before it."""
+    if campaign is not None:
+        return _whirl_probability(campaign, criteria)
+    if not final:
+        return None
+    return not_checked(WHIRL_PROBABILITY, "no campaign was run (a campaign of 0 drops: --campaign-samples or "
+                       "verify.campaign_samples)", origin("max_backward_whirl_probability", criteria))
 
 
 def _peak_temperature(cases: Cases, criteria: dict) -> Criterion:
@@ -157,8 +170,8 @@ def _seal(cases: Cases, criteria: dict) -> Criterion:
     limit = criteria["seal_clearance"]
     if limit is None:
         return not_checked(name, "give criteria.seal_clearance to check it", "user input")
-    excursion = max(run.summary["largest_excursion_m"] for run in cases.drops.values())
-    where = "largest journal excursion from its bearing centre in the drops"
+    excursion, case = max((run.summary["largest_excursion_m"], case) for case, run in cases.drops.items())
+    where = f"largest journal excursion from its bearing centre in the drops: {case}"
     reached = (cases.campaign or {}).get("largest_excursion_mm")
     if reached is not None and reached * 1e-3 > max(limit, excursion):
         excursion = reached * 1e-3
@@ -309,7 +322,17 @@ def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Crite
         if asked is None:
             continue
         took = found["relevitated_at_ms"] - found["time_ms"] if found.get("relevitated_at_ms") is not None else None
-        out.append(upper_bound(f"re-levitation after {case.removeprefix(SCENARIO_CASE)}", took, asked, "ms",
+        name = f"re-levitation after {case.removeprefix(SCENARIO_CASE)}"
+        ran = s["simulated_s"] * 1e3 - found["time_ms"]  # [ms] after the strike
+        # a re-levitation is known once the run's last SETTLED share (at least SETTLED_MIN) is free of contact: a
+        # run shorter than that past the limit cannot show one within it, so without one it is no finding
+        needed = max(asked / (1.0 - SETTLED), asked + SETTLED_MIN * 1e3)
+        if took is None and ran < needed:
+            out.append(not_checked(name, f"{case}: {found.get('outcome', 'not levitated')}; the run ended {ran:.1f} ms "
+                                   f"after the strike, too soon to tell a re-levitation within {asked:g} ms (it needs "
+                                   f"{needed:.1f} ms)" + (" (--quick)" if cases.quick else ""), source))
+            continue
+        out.append(upper_bound(name, took, asked, "ms",
                                source, f"{case}: {found.get('outcome', 'not levitated')}"))
     return out
 

@@ -18,7 +18,7 @@ from pathlib import Path
 from auxbearing.common.errors import InputError
 from auxbearing.machine.check import check_candidate_seat
 from auxbearing.machine.files import machine_table
-from auxbearing.machine.judging import candidate_tables, read_criteria, verify_settings
+from auxbearing.machine.judging import MAX_CAMPAIGN_SAMPLES, candidate_tables, read_criteria, verify_settings
 from auxbearing.machine.model import machine_from_mapping
 from auxbearing.machine.scenario import SCENARIO_CASE
 from auxbearing.verify.cases import (
@@ -134,7 +134,7 @@ def _driver(outputs: dict, output: str, name: str) -> str:
 
 
 def _design(cases: Cases, criteria: dict) -> dict:
-    judged = judge(cases, criteria)
+    judged = judge(cases, criteria, final=True)
     campaign_rows, drivers = _campaign_rows(cases.campaign, cases.spreads)
     return {"criteria": judged, "worst_margin": worst_margin(judged),
             "verdict": overall_verdict(judged),
@@ -148,7 +148,7 @@ def _design(cases: Cases, criteria: dict) -> dict:
 def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quick: bool = False,
            samples: int | None = None, workers: int | None = None, scheduler: str | None = None,
            with_recommendation: bool = True, progress: Callable[[str], None] | None = None,
-           report_figures: bool = True) -> Verification:
+           report_figures: bool = True, candidates_option: str = "candidates") -> Verification:
     """Verify a machine's touchdown bearings (module docstring): a :class:`~auxbearing.verify.result.Verification`.
 
     Parameters
@@ -157,8 +157,9 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         A machine TOML file or an example machine's name.
     out_dir : Path
         Folder the campaign stores go into (the caller writes the report there).
-    candidates : list, optional
-        Catalogue names, bearing TOML paths or ``[[candidate]]`` tables; default the file's ``[[candidate]]``.
+    candidates : list or str, optional
+        Catalogue names, bearing TOML paths or ``[[candidate]]`` tables (a string: names separated by commas, as
+        the command line's ``--candidates``); default the file's ``[[candidate]]``.
     quick : bool
         A first look: short drops, a few seconds of coast-down, a small campaign, a coarse recommendation;
         what the cut runs pass is not checked, so its verdict is INCOMPLETE at best.
@@ -167,10 +168,17 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     report_figures : bool
         Draw the design's report figures on the cluster at the end of the runs, side by side (False:
         :meth:`Verification.to_html` draws them all in this process when the report is written).
+    candidates_option : str
+        How messages name ``candidates`` (the command line passes ``--candidates``).
     """
     start = time.perf_counter()
+    out_dir = Path(out_dir)
+    if isinstance(candidates, str):
+        text, candidates = candidates, [c.strip() for c in candidates.split(",")]
+        if not all(candidates):
+            raise InputError.for_field(candidates_option, text, "a comma-separated list of bearings, no empty item")
     # the command line checks its options under their own names first; the API gets the same rules
-    for key, value, low, high in (("samples", samples, 0, 100000), ("workers", workers, 1, 256)):
+    for key, value, low, high in (("samples", samples, 0, MAX_CAMPAIGN_SAMPLES), ("workers", workers, 1, 256)):
         if value is not None and (isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high):
             raise InputError.for_field(key, value, f"must be a whole number in [{low}, {high}]")
     data, name, base = machine_table(spec)
@@ -186,6 +194,11 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         if not isinstance(candidates, list):
             raise InputError.for_field("candidate", candidates, "give [[candidate]] tables")
     candidate_list = candidate_tables(data, candidates)
+    labels = [label for label, _ in candidate_list]
+    twice = sorted({label for label in labels if labels.count(label) > 1})
+    if twice:  # two runs of one bearing under one label: a ranking and a report that cannot tell them apart
+        where = candidates_option if from_option else "candidate"
+        raise InputError.for_field(where, ", ".join(twice), "each candidate once (this one is given twice)")
     design_machine = machine_from_mapping(data, name, base)
     for label, tables in candidate_list:  # refuse a bad candidate before the first drop, not after
         try:
@@ -194,7 +207,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
             raise InputError(f"candidate '{label}': {err}") from None
         # a candidate must fit the design's seat: same bore, no larger outside diameter or width
         check_candidate_seat(design_machine, candidate.planes[0].unit,
-                             f"--candidates = {label!r}" if from_option else f"candidate '{label}'")
+                             f"{candidates_option} = {label!r}" if from_option else f"candidate '{label}'")
 
     def say(text: str) -> None:
         if progress is not None:
