@@ -20,6 +20,10 @@ def test_a_verification_reads_as_a_dict_a_table_a_page_and_files(tmp_path):
     folder = result.save(tmp_path / "out")
     saved = json.loads((folder / "verify.json").read_text())
     assert saved["verdict"] == "incomplete" and "design" not in saved
+    # limits and settings as a user types them, with units, in the results and in their provenance alike
+    for inputs in (saved["inputs"], saved["provenance"]["inputs"]):
+        assert inputs["criteria"]["max_temperature"] == "120 degC"
+    assert saved["settings"]["balance_grade"] == "6.3 mm/s"
     assert (folder / "report.html").read_text().count("<h2>") > 3
     # the design's figures, drawn on the verification's cluster, are those this process draws from the same runs
     from auxbearing.report.verify_figures import DESIGN_SECTIONS, build_figures

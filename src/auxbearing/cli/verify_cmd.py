@@ -11,7 +11,10 @@ import click
 
 from auxbearing.cli.common import ProgressReporter, checked_out_dir, echo_json, json_option
 from auxbearing.common.errors import InputError
+from auxbearing.machine.judging import MAX_CAMPAIGN_SAMPLES
 
+#: What a verification writes into its --out folder (an earlier verification's are replaced as a whole).
+VERIFY_OUTPUTS = ("report.html", "verify.json", "drop_*.nc", "coastdown.nc", "campaign*.zarr")
 #: Exit status by verdict (2 is bad input, as for every command): a script can gate on it.
 EXIT_STATUS = {"pass": 0, "fail": 1, "incomplete": 3}
 
@@ -57,8 +60,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     from auxbearing.report.verify_html import verdict_rows
     from auxbearing.verify.run import verify
 
-    if campaign_samples is not None and not 0 <= campaign_samples <= 100000:
-        raise InputError.for_field("--campaign-samples", campaign_samples, "must lie in [0, 100000]")
+    if campaign_samples is not None and not 0 <= campaign_samples <= MAX_CAMPAIGN_SAMPLES:
+        raise InputError.for_field("--campaign-samples", campaign_samples, f"must lie in [0, {MAX_CAMPAIGN_SAMPLES}]")
     if workers is not None and not 1 <= workers <= 256:
         raise InputError.for_field("--workers", workers, "must lie in [1, 256]")
     specs = None
@@ -66,7 +69,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         specs = [c.strip() for c in candidates.split(",")]
         if not all(specs):
             raise InputError.for_field("--candidates", candidates, "a comma-separated list of bearings, no empty item")
-    with atomic_output_dir(out_dir) as tmp:
+    with atomic_output_dir(out_dir, owned=VERIFY_OUTPUTS) as tmp:
         # its fraction counts stages, whose work differs a hundredfold: a percentage or time left would mislead
         with ProgressReporter(f"verify {machine_spec}", quiet, time_left=False) as progress:
             steps = {"n": 0}
@@ -76,7 +79,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
                 progress(min(0.99, steps["n"] / 40.0), text)
 
             result = verify(machine_spec, tmp, specs, quick=quick, samples=campaign_samples, workers=workers,
-                            scheduler=scheduler, with_recommendation=not no_recommendation, progress=say)
+                            scheduler=scheduler, with_recommendation=not no_recommendation, progress=say,
+                            candidates_option="--candidates")
         result.save(tmp)
     if as_json:
         echo_json({k: v for k, v in result.items() if k in ("verdict", "reason", "machine", "criteria", "worst_margin",
@@ -103,7 +107,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
             if c.passed is None:
                 console.print(f"Not checked: {c.name}: {c.evidence}", highlight=False, soft_wrap=True)
     if result["candidates"]:
-        console.print("Candidates ranked by worst margin: " + ", ".join(result["ranking"]), highlight=False)
+        console.print("Candidates ranked (fewest criteria failed, then fewest not checked, then the larger worst "
+                      "margin): " + ", ".join(result["ranking"]), highlight=False)
     if result["recommendation"]:
         rec = result["recommendation"]
         if not rec["passes"]:

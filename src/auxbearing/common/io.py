@@ -323,11 +323,14 @@ def remove_stale_scratch(target: str | Path) -> list[Path]:
 
 
 @contextlib.contextmanager
-def atomic_output_dir(target: str | Path, field: str = "--out") -> Iterator[Path]:
+def atomic_output_dir(target: str | Path, field: str = "--out", owned: tuple[str, ...] = ()) -> Iterator[Path]:
     """Yield a scratch folder; on success its files replace those in ``target``, on error it vanishes.
 
     The scratch folder is a hidden sibling of ``target`` holding a marker with this process's id, so a
     later run can tell a killed run's leftovers (:func:`remove_stale_scratch`) from a running one's.
+    ``owned``: glob patterns of the files the command writes; on success those in ``target`` that this run did
+    not write (an earlier run's, of another machine or with more cases) are removed, so the folder holds one
+    run; anything else in it is left alone.
     """
     target = check_output_dir(target, field)
     try:
@@ -345,6 +348,15 @@ def atomic_output_dir(target: str | Path, field: str = "--out") -> Iterator[Path
         raise
     (scratch / SCRATCH_OWNER).unlink()
     target.mkdir(exist_ok=True)
+    written = {item.name for item in scratch.iterdir()}
+    for pattern in owned:
+        for old in target.glob(pattern):
+            if old.name in written:
+                continue
+            if old.is_dir():
+                shutil.rmtree(old)
+            else:
+                old.unlink()
     for item in scratch.iterdir():
         dest = target / item.name
         if dest.is_dir():

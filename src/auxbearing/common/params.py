@@ -18,7 +18,7 @@ from auxbearing.common.dimensions import _DISPLAY_SCALE, EXTRA_UNITS, SI_UNITS, 
 from auxbearing.common.errors import InputError
 
 RULES = ("positive", "nonnegative", "unit_interval", "fraction", "finite", "tolerance", "optional_positive",
-         "optional_nonnegative", "count")
+         "optional_nonnegative", "count", "optional_count")
 #: How close (difflib's ratio) a mistyped key must be to an allowed one to be suggested.
 SUGGESTION_CUTOFF = 0.6
 
@@ -174,7 +174,7 @@ def check(param: Param, value: object, field: str | None = None, typed: object =
         raise InputError.for_field(name, shown, "must lie in (0, 0.01]")
     if rule == "temperature_rise" and not 0.0 <= value <= 10.0:  # "0.05 degC" reads as 273.2 K: refused here
         raise InputError.for_field(name, shown, "must be a temperature rise in K within [0, 10]")
-    if rule == "count" and (value != int(value) or value < 1):
+    if rule in ("count", "optional_count") and (value != int(value) or value < 1):
         raise InputError.for_field(name, shown, "must be a whole number >= 1")
 
 

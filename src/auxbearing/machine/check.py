@@ -29,7 +29,14 @@ from pathlib import Path
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import unknown
 from auxbearing.machine.combinations import SEAT_TOLERANCE, param_of, typed
-from auxbearing.machine.judging import CRITERIA_TABLE, candidate_tables, read_criteria, verify_settings
+from auxbearing.machine.judging import (
+    CRITERIA_TABLE,
+    MAX_CAMPAIGN_SAMPLES,
+    VERIFY_TABLE,
+    candidate_tables,
+    read_criteria,
+    verify_settings,
+)
 from auxbearing.machine.model import Machine, machine_from_mapping, read_bearing_spec
 from auxbearing.machine.stations import TABLES as STATION_TABLES
 
@@ -110,8 +117,15 @@ def _check_judging(data: dict, machine: Machine, criteria: dict, settings: dict)
         raise InputError.for_field("verify.low_speed", typed(verify, "low_speed"), "not below rotor.speed = "
                                    f"{typed(data.get('rotor'), 'speed')!r}: the low-speed drop is the slower one")
     if {"friction_low", "friction_high"} <= set(settings) and settings["friction_low"] > settings["friction_high"]:
-        raise InputError.for_field("verify.friction_low", typed(verify, "friction_low"), "above verify.friction_high "
-                                   f"= {typed(verify, 'friction_high')!r}")
+        # blame the end the file gives (the other may be the default), quoting the other as it stands
+        low, high = (typed(verify, key, VERIFY_TABLE[key]) for key in ("friction_low", "friction_high"))
+        if "friction_low" in verify:
+            raise InputError.for_field("verify.friction_low", low, f"above verify.friction_high = {high!r}")
+        raise InputError.for_field("verify.friction_high", high, f"below verify.friction_low = {low!r}")
+    samples = settings.get("campaign_samples")
+    if samples is not None and not (samples == int(samples) and 0 <= samples <= MAX_CAMPAIGN_SAMPLES):
+        raise InputError.for_field("verify.campaign_samples", typed(verify, "campaign_samples"),
+                                   f"must be a whole number in [0, {MAX_CAMPAIGN_SAMPLES}] (0: no campaign)")
 
 
 # ----------------------------------------------------------------------------- candidates in the design's seat

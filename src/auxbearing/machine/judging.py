@@ -11,7 +11,7 @@ import copy
 from pathlib import Path
 
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import Param, by_key, read_table
+from auxbearing.common.params import Param, by_key, display_value, read_table
 
 #: The ``[criteria]`` rows: what the verdict judges against.
 CRITERIA: tuple[Param, ...] = (
@@ -25,18 +25,18 @@ CRITERIA: tuple[Param, ...] = (
           "check your bearing's and its lubricant's"),
     Param("criteria", "max_preload_stress", "pressure", 4200e6, "MPa", "positive",
           "Ball stress at rest of the preload a closing internal clearance makes", "ISO 76:2006 (4200 MPa at rest)"),
-    Param("criteria", "required_drops", "dimensionless", None, "", "optional_positive",
+    Param("criteria", "required_drops", "dimensionless", None, "", "optional_count",
           "Drops (each with its coast-down) the bearings must survive; default life.required_drops",
           "the machine file's life.required_drops (itself an assumption unless you set it)"),
     Param("criteria", "amb_air_gap", "length", None, "mm", "optional_positive",
           "Radial air gap of the magnetic bearings; without it the air-gap criterion is not checked", "user input"),
-    Param("criteria", "air_gap_fraction", "dimensionless", 0.5, "", "unit_interval",
+    Param("criteria", "air_gap_fraction", "dimensionless", 0.5, "", "fraction",
           "Largest touchdown clearance (at the top of its fit tolerance, with thermal growth) as a fraction of the "
           "magnetic air gap",
           "ours: common practice of about half the air gap; not a clause we could read in ISO 14839-5"),
     Param("criteria", "seal_clearance", "length", None, "mm", "optional_positive",
           "Radial clearance of the tightest seal; the journal's largest excursion must stay inside it", "user input"),
-    Param("criteria", "max_backward_whirl_probability", "dimensionless", 0.05, "", "unit_interval",
+    Param("criteria", "max_backward_whirl_probability", "dimensionless", 0.05, "", "fraction",
           "Largest probability of sustained backward whirl over the campaign's uncertain drop conditions", "ours"),
     Param("criteria", "max_amb_current_share", "dimensionless", 1.0, "", "fraction",
           "Largest control current per axis in any scenario, as a share of each magnetic bearing's own limit "
@@ -65,12 +65,14 @@ FRICTION_SOURCE = ("Gieck & Gieck, Engineering Formulas, 7th ed. (1997): steel o
 #: (Sobol' balance) whose whirl-free outcome shows P(backward whirl) within the default 5 % at 95 % confidence
 #: (Wilson's bound for no events, 1.96^2 / (n + 1.96^2), is 0.029 at 128 and 0.057 at 64).
 CAMPAIGN_SAMPLES = 128
+#: Largest campaign of a verification (the command line's --campaign-samples, the API's samples, the file's key).
+MAX_CAMPAIGN_SAMPLES = 100000
 
 VERIFY: tuple[Param, ...] = (
     Param("verify", "low_speed", "angular_speed", None, "rpm", "optional_positive",
           "Speed of the low-speed drop; default a quarter of rotor.speed", "ours"),
-    Param("verify", "campaign_samples", "dimensionless", float(CAMPAIGN_SAMPLES), "", "count",
-          "Samples of the verification's campaign",
+    Param("verify", "campaign_samples", "dimensionless", float(CAMPAIGN_SAMPLES), "", "nonnegative",
+          "Samples of the verification's campaign (a whole number up to 100000; 0: no campaign)",
           "ours: 128 whirl-free drops show P(backward whirl) <= 0.05 at 95 %"),
     Param("verify", "friction_low", "dimensionless", FRICTION_RANGE[0], "", "unit_interval",
           "Lowest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
@@ -119,6 +121,21 @@ def verify_settings(data: dict) -> dict:
     return {p.key: given.get(p.key, p.default) for p in VERIFY}
 
 
+#: Touchdown keys that belong to the design's bearing: a candidate gets its own from its geometry (Hertz's K_b of
+#: Eq. 15, the shoulder at a quarter of its ball diameter, its rings' mass and inertia, its line and face contacts).
+CANDIDATE_DERIVED = ("race_mass", "race_inertia", "line_stiffness", "face_stiffness", "face_radius", "ball_constant",
+                     "shoulder_height")
+
+
+def as_typed(values: dict, table: dict[str, Param]) -> dict:
+    """SI values of a table's keys as a user would type them, with their units (``120 degC``), for files and reports.
+
+    >>> as_typed({"max_temperature": 393.15, "amb_air_gap": None, "given": []}, CRITERIA_TABLE)
+    {'max_temperature': '120 degC', 'amb_air_gap': None}
+    """
+    return {k: None if v is None else display_value(table[k], v) for k, v in values.items() if k in table}
+
+
 def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
     """(label, machine tables) per candidate; a spec is a catalogue name, a bearing TOML path or a table."""
     out = []
@@ -146,7 +163,7 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
             plane.pop("preload", None)  # the design's preload is not the candidate's
             if preload is not None:
                 plane["preload"] = preload
-            for derived in ("race_mass", "race_inertia", "line_stiffness", "face_stiffness", "face_radius"):
+            for derived in CANDIDATE_DERIVED:
                 plane.pop(derived, None)  # follow the new bearing
         out.append((label, tables))
     return out

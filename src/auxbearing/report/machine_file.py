@@ -53,7 +53,8 @@ stiffness and damping coefficients |
 | `[criteria]` | the acceptance values `verify` judges against |
 | `[verify]` | the cases and the campaign of `verify` |
 | `[[candidate]]` | bearings for the same seats (same bore, no larger outside diameter, width within `axial_room`): \
-`name`, `bearing`, `preload` |
+`name`, `bearing`, `preload`; a candidate takes the design's seat and mount, but its own ring masses, contact \
+stiffnesses, `ball_constant` and `shoulder_height` from its geometry, not the design's overrides |
 | `[campaign]` | a Monte Carlo campaign over this machine (`auxbearing campaign --config`; keys below) |
 
 In `[[touchdown]]`, `bearing` is a catalogue name (`auxbearing bearings`), the path of a bearing TOML

@@ -44,12 +44,14 @@ def _fmt(value, unit: str = "") -> str:
 def _margin(value) -> str:
     """A margin as the report prints it; "-" where no checked criterion has one (the worst margin is then NaN).
 
-    >>> _margin(0.051), _margin(float("nan")), _margin(None), _margin(float("inf"))
-    ('+5.1 %', '-', '-', '∞')
+    >>> _margin(0.051), _margin(float("nan")), _margin(None), _margin(float("inf")), _margin(float("-inf"))
+    ('+5.1 %', '-', '-', '∞', '-∞')
     """
     if value is None or math.isnan(value):
         return "-"
-    return "∞" if math.isinf(value) else f"{100.0 * value:+.1f} %"
+    if math.isinf(value):
+        return "∞" if value > 0 else "-∞"
+    return f"{100.0 * value:+.1f} %"
 
 
 def _figure(fig, caption: str) -> str:

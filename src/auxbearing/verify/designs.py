@@ -64,6 +64,7 @@ def _design_tables(data: dict, machine, x: np.ndarray) -> dict:
         table["inner_groove_ratio"] = float(x[1])
         table["outer_groove_ratio"] = float(x[1] + offset)
         plane["bearing"] = table
+        plane.pop("ball_constant", None)  # Hertz's K_b (Eq. 15) follows the new contact angle and groove ratios
         pair = machine.planes[k].bearing_set
         if pair is not None:  # the new geometry is each row's: the pair keeps its arrangement and preload
             table["arrangement"] = pair.arrangement

@@ -59,12 +59,26 @@ class Verification(dict):
         if cases.coastdown is not None:
             save_dataset(cases.coastdown.history, folder / "coastdown.nc", {"machine": cases.machine.describe()})
         self.to_html(folder / "report.html")
-        write_json(self.public(), folder / "verify.json", self["inputs"])
+        write_json(self.public(), folder / "verify.json", self.typed_inputs())
         return folder
 
+    def typed_inputs(self) -> dict:
+        """The inputs with the criteria as a user types them, with units (SI in this object, for the figures)."""
+        from auxbearing.machine.judging import CRITERIA_TABLE, as_typed
+
+        inputs = self["inputs"]
+        return {**inputs, "criteria": as_typed(inputs["criteria"], CRITERIA_TABLE)} if "criteria" in inputs else inputs
+
     def public(self) -> dict:
-        """What ``verify.json`` holds."""
-        return {k: v for k, v in self.items() if k not in PUBLIC_KEYS_LEFT_OUT}
+        """What ``verify.json`` holds: criteria and settings with their units (a bare 393.15 reads as no unit)."""
+        from auxbearing.machine.judging import VERIFY_TABLE, as_typed
+
+        out = {k: v for k, v in self.items() if k not in PUBLIC_KEYS_LEFT_OUT}
+        if "inputs" in out:
+            out["inputs"] = self.typed_inputs()
+        if isinstance(out.get("settings"), dict):
+            out["settings"] = as_typed(out["settings"], VERIFY_TABLE)
+        return out
 
     def __repr__(self) -> str:
         n = len(self["criteria"])
