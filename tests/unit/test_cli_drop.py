@@ -24,7 +24,8 @@ def test_drop_json_has_the_issue_keys():
     data = json.loads(r.output)
     assert set(ISSUE_KEYS) <= set(data)
     assert data["impacts"] >= 1 and data["peak_contact_force_N"] > 100
-    assert data["whirl"] in ("forward", "backward", "none")
+    # 20 ms at 6000 rpm is shorter than one whirl window: its whirl is not known, and says so
+    assert data["whirl"] in ("forward", "backward", "none", "not classified")
 
 
 def test_plain_numbers_take_the_documented_units():

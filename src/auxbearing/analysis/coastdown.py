@@ -666,7 +666,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         verdict, reason = limits.update(temps, session.t)
     record(2)  # the drop's end, also when the drop itself left the model's range
     while verdict == OK and session.t < t_end - 1e-12:
-        if until_stop and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
+        if abs(session.y[cm.OMEGA]) <= coast.stop_speed:  # a run for a duration ends at standstill too
             stopped_at = session.t
             break
         marks.append((session.t, abs(float(session.y[cm.OMEGA]))))
@@ -785,8 +785,14 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         if progress is not None:
             progress(done(),
                      f"t = {session.t:.2f} s, {abs(stretch.rotor_speed) * 30 / math.pi:.0f} rpm")
-    if verdict == OK and until_stop and stopped_at is None and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
+    if verdict == OK and stopped_at is None and abs(session.y[cm.OMEGA]) <= coast.stop_speed:
         stopped_at = session.t
+    if verdict == OK and to_standstill and stopped_at is None:
+        # coastdown.max_time bounds the work of a run to standstill: reaching it is no finding about the machine
+        verdict = TIME_BUDGET
+        reason = (f"coastdown.max_time = {coast.max_time:g} s was reached at "
+                  f"{abs(float(session.y[cm.OMEGA])) * 30.0 / math.pi:.0f} rpm, before standstill "
+                  f"(coastdown.stop_speed = {coast.stop_speed * 30.0 / math.pi:g} rpm); raise it to go on")
     history_ds = _history(machine, history)
     # a drop that did not finish leaves a stress history cut at its range exit or budget: damage counted
     # from it would be a number from outside the model, so no life is computed
@@ -799,6 +805,23 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     history_ds.attrs["summary"] = _json(summary)
     return CoastdownRun(drop, history_ds, summary, lives)
 
+
+def _partial_life_note(verdict: str, simulated: float) -> str:
+    """What a life counted over a coast-down that did not reach standstill covers."""
+    why = "run for a duration" if verdict == OK else f"stopped: {verdict.replace('_', ' ')}"
+    return (f"counted over the first {simulated:.1f} s only ({why}, before standstill): the damage per drop is a lower "
+            "bound and the drops to failure an upper bound")
+
+
+def required_drops_source(machine: Machine) -> str:
+    """Where the number of drops the bearings must survive comes from: the machine file, or our assumption."""
+    if "required_drops" in machine.life.given:
+        return "the machine file's life.required_drops"
+    return "an assumption of auxbearing (life.required_drops), not a standard's clause: set it in your file"
+
+
+#: Verdict of a run to standstill that reached coastdown.max_time first (a budget: its outcome is not known).
+TIME_BUDGET = "time_budget"
 
 #: Span over which the deceleration the tail is extrapolated at is measured [s] (a rattle's windows scatter).
 DECELERATION_SPAN = 0.1
@@ -964,7 +987,8 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
             figures = dict.fromkeys(_LIFE_KEYS)
             figures["life_note"] = f"not computed: the drop ended with verdict {drop.summary['verdict']}"
         else:
-            figures = {
+            figures = {"life_note": _partial_life_note(verdict, session.t)} if stopped_at is None else {}
+            figures |= {
                 "damage_per_drop": life["damage_per_drop"], "drop_damage": life["drop_damage"],
                 "coastdown_damage": life["coastdown_damage"], "drops_to_failure": life["drops_to_failure"],
                 "drops_to_dent_limit": life["drops_to_dent_limit"], "dent_depth_per_drop_um": life["dent_depth_um"],
@@ -994,6 +1018,6 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
         "final_rotor_speed_rpm": float(session.y[cm.OMEGA]) * 30.0 / math.pi,
         "energy_balance_error": float(session.energy_error()), "wall_time_s": wall,
         "required_drops": machine.life.required_drops,
-        "required_drops_source": "an assumption of auxbearing (life.required_drops), not a standard's clause",
+        "required_drops_source": required_drops_source(machine),
         "drop_verdict": drop.summary["verdict"], "planes": planes,
     }

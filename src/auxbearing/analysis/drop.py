@@ -527,8 +527,9 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
             "peak_force_time_ms": float(watch.peak_time[0, k]) * 1e3,
             "peak_stress_time_ms": float(watch.peak_time[1, k]) * 1e3,
             "max_mount_deflection_um": float(np.max(of_plane("mount_deflection", k))) * 1e6,
-            "max_excursion_um": float(np.max(np.hypot(of_plane("journal_x", k) - of_plane("ring_x", k),
-                                                      of_plane("journal_y", k) - of_plane("ring_y", k)))) * 1e6,
+            # from the machine's axis, where its seals and magnetic bearings are centred: not from the outer ring,
+            # which moves on a compliant mount (the blower's by 25 um) while the seals stay in the housing
+            "max_excursion_um": float(np.max(np.hypot(of_plane("journal_x", k), of_plane("journal_y", k)))) * 1e6,
             "line_stiffness_N_per_m10_9": plane.line_stiffness,
             "defaults_used": list(plane.defaults),
         })

@@ -420,13 +420,14 @@ def governing(fatigue, dent, required_drops=None) -> dict:
     fatigue, dent : dict or float
         Results of :func:`drop_damage` and :func:`dent_per_drop`, or their drop counts.
     required_drops : float, optional
-        Drops the machine must survive.
+        Drops the machine must survive; with it, ``margin`` = allowed / required - 1 (the share of drops to spare,
+        as every margin of a verification) and ``ok``.
 
     Examples
     --------
     >>> g = governing(5000.0, 800.0, required_drops=200)
     >>> g["limit"], g["allowed_drops"], g["margin"], g["ok"]
-    ('dent', 800.0, 4.0, True)
+    ('dent', 800.0, 3.0, True)
     """
     n_fatigue = float(fatigue["drops_to_failure"] if isinstance(fatigue, dict) else fatigue)
     n_dent = float(dent["drops_to_dent_limit"] if isinstance(dent, dict) else dent)
@@ -434,6 +435,6 @@ def governing(fatigue, dent, required_drops=None) -> dict:
     out = {"limit": "fatigue" if n_fatigue <= n_dent else "dent", "allowed_drops": allowed,
            "fatigue_drops": n_fatigue, "dent_drops": n_dent}
     if required_drops is not None:
-        out.update(required_drops=float(required_drops), margin=allowed / float(required_drops),
+        out.update(required_drops=float(required_drops), margin=allowed / float(required_drops) - 1.0,
                    ok=bool(allowed >= required_drops))
     return out

@@ -96,6 +96,10 @@ def natural_frequency(force: float, line_stiffness: float, support_stiffness: fl
     return math.sqrt(k / mass)
 
 
+#: The whirl of a run that closed no whirl window.
+UNCLASSIFIED = "not classified"
+
+
 def timeline(records: np.ndarray, window: float, clearance: float, journal_radius: float,
              natural: np.ndarray) -> dict:
     """Classes over the windows of one plane, the onset of sustained backward whirl, and the end state.
@@ -116,14 +120,15 @@ def timeline(records: np.ndarray, window: float, clearance: float, journal_radiu
         if run == SUSTAINED and onset is None:
             onset = (i - SUSTAINED + 1) * window
     tail = classes[-SUSTAINED:]
-    final = tail[-1] if tail else "none"
+    # a run shorter than one whirl window (drop.whirl_window) closes none: its whirl is unknown, not "none"
+    final = tail[-1] if tail else UNCLASSIFIED
     if tail and len(set(tail)) == 1:
         final = tail[0]
     speed = records[-1, _F["whirl_speed"]] if len(records) else 0.0
     return {"classes": classes, "window_s": window, "whirl_speed_rad_s": [float(r[_F["whirl_speed"]]) for r in records],
             "backward_whirl_onset_ms": None if onset is None else onset * 1e3, "whirl": final,
             "backward_at_end": final in BACKWARD,
-            "whirl_frequency_Hz": None if final == "none" else abs(float(speed)) / (2.0 * math.pi)}
+            "whirl_frequency_Hz": None if final in ("none", UNCLASSIFIED) else abs(float(speed)) / (2.0 * math.pi)}
 
 
 def spectral_whirl(t: np.ndarray, x: np.ndarray, y: np.ndarray, clearance: float, spin: float = 1.0,

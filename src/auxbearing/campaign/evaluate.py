@@ -54,7 +54,7 @@ PLANE_OUTPUTS: dict[str, tuple[str, str, str, str, float]] = {
     "peak_axial_force": ("f8", "N", "Peak axial (face) force", "peak_axial_force_N", 1.0),
     "max_mount_deflection": ("f8", "m", "Largest radial travel of the outer ring in its mount",
                              "max_mount_deflection_um", 1e-6),
-    "max_excursion": ("f8", "m", "Largest journal excursion from its bearing centre", "max_excursion_um", 1e-6),
+    "max_excursion": ("f8", "m", "Largest journal excursion from the machine's axis", "max_excursion_um", 1e-6),
 }
 #: Per-plane whirl outputs (codes and flags).
 WHIRL_OUTPUTS: dict[str, tuple[str, str, str]] = {

@@ -118,10 +118,10 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
         console.print(f"Drops to failure {summary['planes'][0]['life_note']}", highlight=False)
     stop = summary["coastdown_time_s"]
     console.print(f"{'standstill after ' + format(stop, '.1f') + ' s' if stop is not None else 'not at standstill'}"
-                  f"; simulated {summary['simulated_s']:.1f} s in {summary['wall_time_s']:.1f} s "
+                  f"; simulated {summary['simulated_s']:.3g} s in {summary['wall_time_s']:.1f} s "
                   f"({summary['full_dynamics_s']:.2f} s of full dynamics); energy balance error "
                   f"{summary['energy_balance_error']:.1e}; required drops {summary['required_drops']:g} "
-                  f"(an assumption unless your file sets life.required_drops)", highlight=False)
+                  f"({summary['required_drops_source']})", highlight=False)
     from auxbearing.analysis.coastdown import rattle_note, tail_note
 
     for note in (tail_note(summary.get("tail")), rattle_note(summary)):

@@ -202,7 +202,8 @@ def drop_command(ctx, machine_spec, bearing_spec, config, params, max_ball_conta
 
     With --machine: a rigid rotor on one or more touchdown planes (gyroscopics, axial touchdown,
     compliant mounts). The run watches the model's range and ends with a verdict: "ok", or the limit it
-    crossed (then no peak is reported as a result). Whirl is judged window by window.
+    crossed, where it stops (its peaks and s0 then cover the run up to that stop only). Whirl is judged window
+    by window.
 
     Without --machine: the source paper's planar drop (Sec. II.D, Eq. 17-26, corrected): Table II
     defaults with the corrected units, clearance 0.2 mm, 6000 rpm, 0.15 s. Values take units

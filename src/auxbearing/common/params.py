@@ -213,13 +213,28 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
         if key not in table:
             raise unknown(prefix + key, value, key, table)
         param = table[key]
-        if isinstance(value, (int, float)) and not isinstance(value, bool) and param.dimension not in (
-                "dimensionless",) and si_unit(param.dimension):
-            raise InputError.for_field(prefix + key, value,
-                                       f"needs a unit, e.g. '{value} {param.display_unit or si_unit(param.dimension)}'")
+        # a number, or a number in quotes ("25"), is no quantity: read as SI it made 25 degC 25 K
+        number = value if isinstance(value, (int, float)) and not isinstance(value, bool) else _bare_number(value)
+        if number is not None and param.dimension not in ("dimensionless",) and si_unit(param.dimension):
+            raise InputError.for_field(prefix + key, value, f"needs a unit, e.g. "
+                                       f"'{str(value).strip()} {param.display_unit or si_unit(param.dimension)}'")
         out[key] = convert(prefix + key, value, param.dimension)
         check(param, out[key], prefix + key, value)
     return out
+
+
+def _bare_number(value: object) -> float | None:
+    """The number a text holds with nothing else ("25", " 1e3 "), else None.
+
+    >>> _bare_number("25"), _bare_number("25 degC"), _bare_number(3.0)
+    (25.0, None, None)
+    """
+    if not isinstance(value, str):
+        return None
+    try:
+        return float(value.strip())
+    except ValueError:
+        return None
 
 
 def by_key(rows: tuple[Param, ...], section: str) -> dict[str, Param]:

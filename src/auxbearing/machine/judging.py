@@ -35,7 +35,9 @@ CRITERIA: tuple[Param, ...] = (
           "magnetic air gap",
           "ours: common practice of about half the air gap; not a clause we could read in ISO 14839-5"),
     Param("criteria", "seal_clearance", "length", None, "mm", "optional_positive",
-          "Radial clearance of the tightest seal; the journal's largest excursion must stay inside it", "user input"),
+          "Radial clearance of the tightest seal; the journal's largest excursion from the machine's axis (where the "
+          "seals are centred; a compliant mount lets the bearing move with the journal) must stay inside it",
+          "user input"),
     Param("criteria", "max_backward_whirl_probability", "dimensionless", 0.05, "", "fraction",
           "Largest probability of sustained backward whirl over the campaign's uncertain drop conditions", "ours"),
     Param("criteria", "max_amb_current_share", "dimensionless", 1.0, "", "fraction",
@@ -127,10 +129,10 @@ CANDIDATE_DERIVED = ("race_mass", "race_inertia", "line_stiffness", "face_stiffn
                      "shoulder_height")
 
 
-def as_typed(values: dict, table: dict[str, Param]) -> dict:
+def typed_values(values: dict, table: dict[str, Param]) -> dict:
     """SI values of a table's keys as a user would type them, with their units (``120 degC``), for files and reports.
 
-    >>> as_typed({"max_temperature": 393.15, "amb_air_gap": None, "given": []}, CRITERIA_TABLE)
+    >>> typed_values({"max_temperature": 393.15, "amb_air_gap": None, "given": []}, CRITERIA_TABLE)
     {'max_temperature': '120 degC', 'amb_air_gap': None}
     """
     return {k: None if v is None else display_value(table[k], v) for k, v in values.items() if k in table}

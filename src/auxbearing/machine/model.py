@@ -18,7 +18,7 @@ from pathlib import Path
 from auxbearing.bearings.duplex import DuplexSet
 from auxbearing.bearings.geometry import BearingGeometry, bearing_from_mapping
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import accept, display_value, read_table, unknown
+from auxbearing.common.params import accept, as_typed, display_value, read_table, unknown
 from auxbearing.core.hertz import line_contact_constant
 from auxbearing.machine.params import (
     AXIAL_DIRECTIONS,
@@ -246,6 +246,8 @@ class Simulation:
         if self.output_step > self.duration:
             raise InputError.for_field("drop.output_step", f"{self.output_step:g} s",
                                        f"must not exceed drop.duration = {self.duration:g} s")
+        if self.max_output_points < 2:  # a run's output holds its start and its end at least
+            raise InputError.for_field("drop.max_output_points", int(self.max_output_points), "must be 2 or more")
 
 
 @dataclass(frozen=True)
@@ -281,6 +283,8 @@ class Life:
     required_drops: float = default("life", "required_drops")
     #: how the dents of successive drops add up (:data:`auxbearing.machine.params.DENT_ACCUMULATION`)
     dent_accumulation: str = "same_spot"
+    #: the keys the machine file gives (the rest are auxbearing's assumptions), for what the outputs say of them
+    given: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         for p in LIFE:
@@ -540,6 +544,12 @@ def make_plane(bearing: BearingGeometry | DuplexSet, values: dict, name: str, in
         if face_radius is None:
             face_radius = 0.5 * (bore_radius + 0.5 * bearing.inner_raceway_diameter)
             filled.append("face_radius")
+        elif not bore_radius <= face_radius <= 0.5 * bearing.inner_raceway_diameter:
+            # the axial contact is the inner ring's side face against its shoulder: between the bore and the raceway
+            raise InputError.for_field(where + "face_radius", values.get("face_radius"),
+                                       f"must lie on the inner ring's face of {bearing.name}, between its bore radius "
+                                       f"{bore_radius * 1e3:g} mm and its raceway radius "
+                                       f"{0.5 * bearing.inner_raceway_diameter * 1e3:g} mm")
         face_k = given.get("face_stiffness")
         if face_k is None:
             area = math.pi * ((0.5 * bearing.inner_raceway_diameter) ** 2 - bore_radius**2)
@@ -569,6 +579,12 @@ def make_plane(bearing: BearingGeometry | DuplexSet, values: dict, name: str, in
     if shoulder is None:
         shoulder = SHOULDER_FRACTION * bearing.ball_diameter
         filled.append("shoulder_height")
+    elif shoulder >= 0.5 * bearing.ball_diameter:
+        # a land at or past the ball's centre could not let the ball in: a typing slip that would switch off the
+        # contact ellipse's shoulder limit
+        raise InputError.for_field(where + "shoulder_height", values.get("shoulder_height"),
+                                   f"must be below the ball radius of {bearing.name}, "
+                                   f"{0.5 * bearing.ball_diameter * 1e3:g} mm")
     return TouchdownPlane(
         name=name, bearing=bearing, position=value("position"), radial_clearance=s, journal_radius=r,
         race_mass=race_mass, race_inertia=race_inertia, line_stiffness=k_l, line_damping=value("line_damping"),
@@ -807,7 +823,10 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
             if "position" not in values:
                 raise InputError(f"{where}position: missing; with rotor.matrices every plane sits on a node")
             values["position"] -= centre
-        planes.append(make_plane(bearing, values, name, k))
+        try:
+            planes.append(make_plane(bearing, values, name, k))
+        except InputError as err:  # its checks are made on SI values: tell them with the values as the file wrote them
+            raise as_typed(err, table, where) from None
     sim_values = read_table(data.get("drop"), TABLES["drop"], "drop.")
     if not isinstance(data.get("coastdown") or {}, dict):
         raise InputError.for_field("coastdown", data["coastdown"], "must be a table of keys")
@@ -825,7 +844,7 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                       orientation=_text(head, "orientation", "machine.", "horizontal"),
                       simulation=Simulation(**sim_values), source=str(head.get("source", "user input")),
                       coastdown=Coastdown(**coast_values, vacuum=vacuum),
-                      life=Life(**life_values, dent_accumulation=accumulation),
+                      life=Life(**life_values, dent_accumulation=accumulation, given=tuple(life_values)),
                       stations=stations, scenarios=tuple(s.shifted(centre) for s in read_scenarios(
                           data.get("scenario"), of_kind(stations, "amb"))))
     check_combinations(data, machine)

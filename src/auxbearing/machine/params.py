@@ -172,7 +172,7 @@ SIMULATION: tuple[Param, ...] = (
     Param("drop", "ball_stress_limit", "pressure", 6000e6, "MPa", "positive",
           "Ball contact stress beyond which elastic Hertz values mean nothing (the run stops)",
           "ours: Palmgren's dent grows as sigma^6, so 6000 MPa dents about 8.5x ISO 76's 1e-4 D"),
-    Param("drop", "energy_tolerance", "dimensionless", 1e-3, "", "unit_interval",
+    Param("drop", "energy_tolerance", "dimensionless", 1e-3, "", "fraction",
           "Energy gain, relative to the energies in play, that stops a run as a numerical run-away", "ours"),
 )
 

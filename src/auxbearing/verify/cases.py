@@ -25,7 +25,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from auxbearing.analysis.coastdown import CoastdownRun, drop_of, rattle_note, run_coastdown, tail_note
+from auxbearing.analysis.coastdown import TIME_BUDGET, CoastdownRun, drop_of, rattle_note, run_coastdown, tail_note
 from auxbearing.analysis.drop import MachineRun, run_machine
 from auxbearing.common.errors import InputError
 from auxbearing.machine.combinations import SEAT_TOLERANCE
@@ -37,6 +37,10 @@ from auxbearing.machine.judging import (
 )
 from auxbearing.machine.model import Machine, machine_from_mapping
 from auxbearing.machine.scenario import SCENARIO_CASE
+
+#: Verdicts of a run that reached a budget of work (steps, the interactive wall-time guard, coastdown.max_time): its
+#: outcome is not known, so it is never a pass or a fail.
+BUDGETS = ("step_budget", "wall_time_budget", TIME_BUDGET)
 
 #: The first case: its run is the coast-down's own drop (:func:`submit_cases`).
 MAX_SPEED = "drop at the maximum speed"
@@ -219,7 +223,7 @@ def collect_cases(cases: Cases, futures: dict) -> Cases:
                            "clearances and life cover that part")
         if coastdown.summary["coastdown_time_s"] is None:
             cases.partial_coastdown = "only the first part of the coast-down ran (--quick): run without --quick"
-    elif coastdown.summary["verdict"] in ("step_budget", "wall_time_budget"):
+    elif coastdown.summary["verdict"] in BUDGETS:
         cases.partial_coastdown = f"the coast-down reached a budget ({coastdown.summary['reason']})"
     elif coastdown.summary["coastdown_time_s"] is None:
         # stopped on a limit (a thermal run-away, a clearance closed) or at coastdown.max_time: the peaks and the

@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 from auxbearing.analysis.scenario_outcome import SATURATED, SETTLED, SETTLED_MIN
-from auxbearing.analysis.whirl import BACKWARD
+from auxbearing.analysis.whirl import BACKWARD, UNCLASSIFIED
 from auxbearing.campaign.evaluate import FAILED, OUT_OF_RANGE
 from auxbearing.machine.scenario import SCENARIO_CASE
-from auxbearing.verify.cases import Cases, largest_clearance_tolerances, thermal_openings
+from auxbearing.verify.cases import BUDGETS, Cases, largest_clearance_tolerances, thermal_openings
 from auxbearing.verify.criteria import (
     Criterion,
     lower_bound,
@@ -71,7 +71,7 @@ def judge(cases: Cases, criteria: dict, final: bool = False) -> list[Criterion]:
                                "(stress at rest of the preload it makes)"))
         required = criteria["required_drops"] or cases.machine.life.required_drops
         source = origin("required_drops", criteria) if criteria["required_drops"] else (
-            "the machine file's life.required_drops" if "life" in cases.tables else
+            "the machine file's life.required_drops" if "required_drops" in cases.machine.life.given else
             "an assumption of auxbearing (life.required_drops = 10), not a standard's clause")
         lives = [(p["allowed_drops"], p["name"], p["governing"]) for p in coast["planes"]
                  if p["allowed_drops"] is not None]
@@ -161,7 +161,7 @@ def _air_gap(cases: Cases, criteria: dict) -> Criterion:
 
 
 def _seal(cases: Cases, criteria: dict) -> Criterion:
-    """The journal's largest excursion from its bearing centre in the drops against the seal clearance.
+    """The journal's largest excursion from the machine's axis in the drops against the seal clearance.
 
     A campaign drop that goes past the seal fails it too (its conditions are drops the machine may see); short of
     it, the case drops' figure stands and the campaign's stays in its own table (as for s0).
@@ -171,11 +171,11 @@ def _seal(cases: Cases, criteria: dict) -> Criterion:
     if limit is None:
         return not_checked(name, "give criteria.seal_clearance to check it", "user input")
     excursion, case = max((run.summary["largest_excursion_m"], case) for case, run in cases.drops.items())
-    where = f"largest journal excursion from its bearing centre in the drops: {case}"
+    where = f"largest journal excursion from the machine's axis in the drops: {case}"
     reached = (cases.campaign or {}).get("largest_excursion_mm")
     if reached is not None and reached * 1e-3 > max(limit, excursion):
         excursion = reached * 1e-3
-        where = (f"largest journal excursion from its bearing centre in the campaign's {cases.campaign['ok']} drops "
+        where = (f"largest journal excursion from the machine's axis in the campaign's {cases.campaign['ok']} drops "
                  "that ended ok")
     return upper_bound(name, excursion * 1e3, limit * 1e3, "mm", origin("seal_clearance", criteria), where)
 
@@ -190,10 +190,14 @@ def _sustained_whirl(cases: Cases) -> Criterion:
         found += [f"coast-down, {p['name']}: backward whirl sustained from {p['backward_whirl_from_s']:.2f} s, "
                   f"{p['backward_whirl_s']:.2f} s of it" for p in cases.coastdown.summary["planes"]
                   if p.get("backward_whirl_from_s") is not None]
-    return yes_no("no sustained backward whirl or dry whip", "none in any drop or in the coast-down",
-                  "; ".join(found) or "none", not found,
-                  "Jiang & Ulbrich 2005 and Jiang 2007: backward whirl and dry whip destroy touchdown bearings",
-                  "whirl judged window by window (auxbearing.analysis.whirl)")
+    c = yes_no("no sustained backward whirl or dry whip", "none in any drop or in the coast-down",
+               "; ".join(found) or "none", not found,
+               "Jiang & Ulbrich 2005 and Jiang 2007: backward whirl and dry whip destroy touchdown bearings",
+               "whirl judged window by window (auxbearing.analysis.whirl)")
+    unknown = [f"{case}, {p['name']}" for case, _, p in _drop_planes(cases) if p["whirl"] == UNCLASSIFIED]
+    if unknown and c.passed:  # a drop shorter than one whirl window shows no whirl either way
+        return _unsettled(c, "no whirl window closed in " + "; ".join(unknown) + " (shorter than drop.whirl_window)")
+    return c
 
 
 def _campaign_exits(campaign: dict | None) -> tuple[str, str] | None:
@@ -256,8 +260,6 @@ def _static_safety(cases: Cases, criteria: dict) -> Criterion:
                        origin("min_s0", criteria), where)
 
 
-#: Verdicts of a run that reached a budget of work: its outcome is not known.
-BUDGETS = ("step_budget", "wall_time_budget")
 
 #: Name of the criterion that no run leaves the model's range.
 RANGE = "no run leaves the model's range or a limit"

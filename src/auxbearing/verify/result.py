@@ -64,20 +64,22 @@ class Verification(dict):
 
     def typed_inputs(self) -> dict:
         """The inputs with the criteria as a user types them, with units (SI in this object, for the figures)."""
-        from auxbearing.machine.judging import CRITERIA_TABLE, as_typed
+        from auxbearing.machine.judging import CRITERIA_TABLE, typed_values
 
         inputs = self["inputs"]
-        return {**inputs, "criteria": as_typed(inputs["criteria"], CRITERIA_TABLE)} if "criteria" in inputs else inputs
+        if "criteria" not in inputs:
+            return inputs
+        return {**inputs, "criteria": typed_values(inputs["criteria"], CRITERIA_TABLE)}
 
     def public(self) -> dict:
         """What ``verify.json`` holds: criteria and settings with their units (a bare 393.15 reads as no unit)."""
-        from auxbearing.machine.judging import VERIFY_TABLE, as_typed
+        from auxbearing.machine.judging import VERIFY_TABLE, typed_values
 
         out = {k: v for k, v in self.items() if k not in PUBLIC_KEYS_LEFT_OUT}
         if "inputs" in out:
             out["inputs"] = self.typed_inputs()
         if isinstance(out.get("settings"), dict):
-            out["settings"] = as_typed(out["settings"], VERIFY_TABLE)
+            out["settings"] = typed_values(out["settings"], VERIFY_TABLE)
         return out
 
     def __repr__(self) -> str:
