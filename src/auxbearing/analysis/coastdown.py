@@ -546,8 +546,8 @@ class _Limits:
                 return "radial_clearance_closed", (
                     f"{plane.name}: thermal growth closed the journal/race clearance at t = {t:.2f} s: the journal "
                     "seizes in the race")
-            if pd < 0.0:
-                stress = _preload_stress(self.session.core.ballsets[k], pd)
+            if pd < 0.0 or plane.bearing_set is not None:
+                stress = rest_stress(plane, self.session.core.ballsets[k], pd)
                 if stress > ISO76_BALL_STRESS:
                     return "internal_clearance_preload", (
                         f"{plane.name}: the internal clearance closed to {pd * 1e6:.1f} um at t = {t:.2f} s, a preload "
@@ -555,8 +555,19 @@ class _Limits:
         return OK, None
 
 
-def _preload_stress(ballset, clearance: float) -> float:
-    st = ballset_state(np.zeros(5), ballset, clearance=clearance)
+def rest_stress(plane, ballset, clearance: float) -> float:
+    """Largest ball stress at rest [Pa] of a plane's bearing whose internal clearance is ``clearance`` [m].
+
+    A single row is stressed only once thermal growth has closed its clearance into a preload (negative); each row
+    of a matched pair is also pushed its share of the set's preload into its balls
+    (:attr:`auxbearing.bearings.duplex.DuplexSet.row_preload_displacement`), which the closing adds to (the 7208
+    DB pair with 8 um: 675 MPa from the preload alone, 894 MPa with 5.07 um closed; the row alone gave 584).
+    Ball-set law of Eq. 14/16 at the race's rest displacement.
+    """
+    push = plane.bearing_set.row_preload_displacement if plane.bearing_set is not None else 0.0
+    if clearance >= 0.0 and push == 0.0:
+        return 0.0
+    st = ballset_state(np.array([push, 0.0, 0.0, 0.0, 0.0]), ballset, clearance=clearance)
     return float(max(st.stress_inner.max(), st.stress_outer.max()))
 
 

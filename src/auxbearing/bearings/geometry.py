@@ -115,6 +115,12 @@ class BearingGeometry:
             raise InputError.for_field(
                 "contact_angle", _deg(angle), "must lie in [0, 90) deg"
             )
+        if self.type == "four_point" and angle == 0.0:
+            raise InputError.for_field(
+                "contact_angle", _deg(angle),
+                "a four_point bearing's two contacts per ring coincide at 0 deg (each would carry half the load the "
+                "one real contact carries): give its angle above 0 deg, or type deep_groove",
+            )
         if self.type == "deep_groove" and angle != 0.0:
             raise InputError.for_field(
                 "contact_angle", _deg(angle),

@@ -83,9 +83,9 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
                             candidates_option="--candidates")
         result.save(tmp)
     if as_json:
-        echo_json({k: v for k, v in result.items() if k in ("verdict", "reason", "machine", "criteria", "worst_margin",
-                                                            "candidates", "ranking", "recommendation",
-                                                            "wall_time_s", "margins")} | {"out": str(out_dir)})
+        shown = ("verdict", "reason", "machine", "criteria", "worst_margin", "candidates", "ranking", "recommendation",
+                 "recommendation_note", "wall_time_s", "margins")
+        echo_json({k: v for k, v in result.items() if k in shown} | {"out": str(out_dir)})
         click.get_current_context().exit(EXIT_STATUS[result["verdict"]])
     rows, _ = verdict_rows(result["design"]["criteria"])
     table = Table(title=f"Verification of {result['machine']}: {result['verdict'].upper()}")
@@ -109,6 +109,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
     if result["candidates"]:
         console.print("Candidates ranked (fewest criteria failed, then fewest not checked, then the larger worst "
                       "margin): " + ", ".join(result["ranking"]), highlight=False)
+    if result.get("recommendation_note"):
+        console.print(f"No recommendation: {result['recommendation_note']}", highlight=False)
     if result["recommendation"]:
         rec = result["recommendation"]
         if not rec["passes"]:

@@ -203,6 +203,9 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                             "checked ones; designs alike in all three by the margins their unchecked findings show, "
                             "worst first."))
         parts += [_figure(f, c) for f, c in figures.get("candidates", [])]
+    if result.get("recommendation_note"):
+        parts.append("<h2>Recommendation: geometry of the bearing family</h2>")
+        parts.append(f"<p><b>No geometry search:</b> {_e(result['recommendation_note'])}.</p>")
     if result.get("recommendation"):
         rec = result["recommendation"]
         parts.append("<h2>Recommendation: geometry of the bearing family</h2>")

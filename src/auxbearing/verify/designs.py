@@ -101,6 +101,15 @@ def _point_summary(tables: dict, name: str, base: Path | None) -> dict:
         return {"invalid": str(err)}
 
 
+def search_refused(machine) -> str | None:
+    """Why the geometry search cannot serve this machine, or None: it varies one family's geometry in every plane."""
+    families = sorted({p.bearing.type.replace("_", " ") for p in machine.planes})
+    if len(families) > 1:  # a deep-groove plane's 0 deg would make the four-point plane a four-point bearing at 0 deg
+        return (f"the planes carry bearings of different families ({', '.join(families)}), and the search varies one "
+                "family's contact angle and groove ratios in every plane; verify a machine of one family per search")
+    return None
+
+
 def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: bool = False,
               progress=None, executor=None, as_built=None) -> dict:
     """The geometry of the machine's bearing family that maximises the worst drop margin (module docstring).

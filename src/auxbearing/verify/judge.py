@@ -58,17 +58,19 @@ def judge(cases: Cases, criteria: dict, final: bool = False) -> list[Criterion]:
     coast = cases.coastdown.summary if cases.coastdown is not None else None
     if coast is not None:
         out.append(_peak_temperature(cases, criteria))
-        from auxbearing.analysis.coastdown import _preload_stress
+        from auxbearing.analysis.coastdown import rest_stress
 
         stresses = []
         for k, p in enumerate(coast["planes"]):
             pd = p["min_internal_clearance_um"] * 1e-6
-            stresses.append((_preload_stress(_ballset(cases, k), pd) / 1e6 if pd < 0.0 else 0.0, p["name"], pd))
+            plane = cases.machine.planes[k]
+            paired = ", with the matched pair's own preload" if plane.bearing_set is not None else ""
+            stresses.append((rest_stress(plane, _ballset(cases, k), pd) / 1e6, p["name"], pd, paired))
         worst_pre = max(stresses)
         out.append(upper_bound("preload of a closing internal clearance", worst_pre[0],
                                criteria["max_preload_stress"] / 1e6, "MPa", origin("max_preload_stress", criteria),
                                f"{worst_pre[1]}: smallest internal clearance {worst_pre[2] * 1e6:.2f} um "
-                               "(stress at rest of the preload it makes)"))
+                               f"(stress at rest of the preload it makes{worst_pre[3]})"))
         required = criteria["required_drops"] or cases.machine.life.required_drops
         source = origin("required_drops", criteria) if criteria["required_drops"] else (
             "the machine file's life.required_drops" if "required_drops" in cases.machine.life.given else

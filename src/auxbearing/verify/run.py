@@ -35,7 +35,7 @@ from auxbearing.verify.cases import (
 )
 from auxbearing.verify.convergence import convergence_started
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, worst_margin
-from auxbearing.verify.designs import recommend, recommended_tables
+from auxbearing.verify.designs import recommend, recommended_tables, search_refused
 from auxbearing.verify.judge import WHIRL_PROBABILITY, judge
 from auxbearing.verify.result import Verification
 from auxbearing.verify.schedule import verification_cluster
@@ -218,13 +218,15 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
                                                            quick, samples, out_dir, executor, address,
                                                            with_recommendation, say, report_figures)
     machine = design["cases"].machine
+    skipped = rec.pop("skipped") if rec is not None and "skipped" in rec else None
+    rec = None if skipped is not None else rec
     result = {
         "machine": machine.name, "verdict": design["verdict"], "design": design, "quick": quick,
         "criteria": [c.as_json() for c in design["criteria"]], "worst_margin": design["worst_margin"],
         "candidates": [{"bearing": label, "verdict": d["verdict"], "worst_margin": d["worst_margin"],
                         "criteria": [c.as_json() for c in d["criteria"]]} for label, d in others],
-        "recommendation": rec, "settings": settings, "wall_time_s": 0.0, "convergence": converged,
-        "figures": figures,
+        "recommendation": rec, "recommendation_note": skipped, "settings": settings, "wall_time_s": 0.0,
+        "convergence": converged, "figures": figures,
         "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
                    "candidates": [label for label, _ in candidate_list], "quick": quick},
     }
@@ -318,6 +320,10 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
         # it ran (the search would otherwise run the same drop again)
         design_drop = max_speed_drop(planned["design"][1])
         as_built = None if design_drop is None else ahead.submit(drop_summary, design_drop)
+        refused = search_refused(planned["design"][0].machine)
+        if refused is not None:
+            say(f"no geometry search: {refused}")
+            return {"skipped": refused}
         rec = recommend(data, name, base, criteria, quick, say, ahead, as_built)
         if rec is not None and rec["passes"]:
             _verify_recommendation(rec, data, name, base, criteria, quick, n, out_dir, ahead, address, say)
