@@ -45,8 +45,8 @@ class NameParts:
     preload: str | None = None
 
 
-def split_name(name: str) -> NameParts:
-    """Take a name apart into base designation, hybrid flag, arrangement and preload class.
+def split_name(name: str, field: str = "bearing") -> NameParts:
+    """Take a name apart into base designation, hybrid flag, arrangement and preload class (``field``: for errors).
 
     Examples
     --------
@@ -66,13 +66,21 @@ def split_name(name: str) -> NameParts:
         if bare in HYBRID_WORDS:
             hybrid = True
         elif bare.upper() in ("DB", "DF", "DT"):
+            if arrangement is not None:  # the last one used to win without a word
+                raise InputError.for_field(field, name, f"two arrangements ({arrangement}, {bare.upper()}): "
+                                           "give one")
             arrangement = bare.upper()
         elif bare in PRELOAD_WORDS and arrangement is not None:
+            if preload is not None:
+                raise InputError.for_field(field, name, f"two preloads ({preload}, {bare}): give one")
             preload = bare
         elif arrangement is not None and preload is None:
             # everything after the arrangement is its preload ("8 um", "500 N"), checked where the set is made
             preload = " ".join(tokens[i:])
             break
+        elif preload is not None:  # "7208 DB light 500 N": a class and a force
+            raise InputError.for_field(field, name, f"two preloads ({preload}, {' '.join(tokens[i:])}): "
+                                       "give one")
         else:
             kept.append(token)
     base = " ".join(kept).replace(" /", "/").strip().rstrip("/")
@@ -106,6 +114,11 @@ _MATERIAL_WORDS = ("hybrid", "ceramic", "si3n4", "nitride", "zirconia", "zro2")
 _CLEARANCE_GROUP = re.compile(r"(?:^|[^A-Z0-9])C([2-5])(?![0-9])|(?<=[0-9])C([2-5])(?![0-9])")
 
 
+#: A maker's pair suffix inside a designation's suffix: DB, DF or DT, maybe after a 2 (two bearings), maybe with the
+#: preload class letter (SKF's DBA, DBB, DBC), at the end of a word ('BECBPDB', '/DBC', '/2DB').
+_PAIR_SUFFIX = re.compile(r"(?:^|[a-z])2?d[bft][abc]?$")
+
+
 def _check_suffix(base: str, designation: str, suffix: str, field: str) -> None:
     """Refuse a maker suffix that would change the physics if it were read, since suffixes are otherwise ignored.
 
@@ -130,6 +143,11 @@ def _check_suffix(base: str, designation: str, suffix: str, field: str) -> None:
             raise InputError.for_field(field, base, "a ball material is not read from a maker's suffix (the balls "
                                        "would be steel); write the word 'hybrid' apart for silicon-nitride balls, "
                                        f"e.g. '{designation} hybrid'")
+    paired = [w for w in words if _PAIR_SUFFIX.search(w)]
+    if paired:  # read as one row, a pair's second row and preload would be lost
+        raise InputError.for_field(field, base, f"a matched pair ('{paired[0].upper()}') is not read from a maker's "
+                                   "suffix (it would be one bearing); write the arrangement and the preload apart, "
+                                   f"e.g. '{designation} DB light'")
     group = _CLEARANCE_GROUP.search(suffix.upper())
     if group:
         c = group.group(1) or group.group(2)
@@ -187,7 +205,7 @@ def lookup(name: str, field: str = "bearing"):
     """
     if not isinstance(name, str) or not name.strip():
         raise InputError.for_field(field, name, _unknown_text())
-    parts = split_name(name)
+    parts = split_name(name, field)
     if not parts.base:
         raise InputError.for_field(field, name, "names no bearing; " + _unknown_text())
     bearing = resolve_single(parts.base, field)
@@ -207,7 +225,9 @@ def lookup(name: str, field: str = "bearing"):
     try:
         return duplex_set(bearing, parts.arrangement, preload=preload, name=label)
     except InputError as err:  # named as the user wrote it: the preload is part of the name
-        raise InputError.for_field(field, name, f"its preload {str(err).split(' = ', 1)[-1]}") from None
+        # the rule alone, quoted with the preload as the name gives it ("-3 um", not the offset in metres)
+        rule = str(err).split(": ", 1)[-1]
+        raise InputError.for_field(field, name, f"its preload '{preload}': {rule}") from None
 
 
 #: Bearing types the listing filters on, with the words a person may type for them.

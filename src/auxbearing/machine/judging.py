@@ -150,6 +150,8 @@ def candidate_tables(data: dict, specs: list) -> list[tuple[str, dict]]:
             if "bearing" not in spec:
                 raise InputError(f"candidate.{i}.bearing: missing; a [[candidate]] names its bearing")
             bearing, label = spec["bearing"], str(spec.get("name", spec["bearing"]))
+            if not label.strip():  # a ranking and a report row without a name
+                raise InputError.for_field(f"candidate.{i}.name", spec.get("name"), "must not be empty")
             preload = spec.get("preload")
         else:
             preload = None
@@ -181,7 +183,13 @@ def _check_bearing_name(spec: str, field: str) -> None:
     if spec.lower().endswith(".toml"):
         raise InputError.for_field(field, spec, f"no such bearing file (looked in {Path.cwd()})")
     try:
-        get_bearing(spec)
-    except (InputError, KeyError, ValueError):
-        raise InputError.for_field(field, spec, "neither a catalogue bearing (e.g. " + ", ".join(bearing_names())
-                                   + "; `auxbearing bearings` lists them all) nor a bearing TOML file") from None
+        get_bearing(spec, field)
+    except (InputError, KeyError, ValueError) as err:
+        from auxbearing.bearings.catalogue import resolve_single, split_name
+
+        try:  # a catalogue bearing with a bad preload or suffix: its own rule, not "no such bearing"
+            resolve_single(split_name(spec, field).base.split()[0], field)
+        except (InputError, KeyError, ValueError, IndexError):
+            raise InputError.for_field(field, spec, "neither a catalogue bearing (e.g. " + ", ".join(bearing_names())
+                                       + "; `auxbearing bearings` lists them all) nor a bearing TOML file") from None
+        raise (err if isinstance(err, InputError) else InputError.for_field(field, spec, str(err))) from None

@@ -796,7 +796,8 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
         if "preload" in table:
             from auxbearing.bearings.catalogue import split_name
 
-            named = split_name(table["bearing"]).preload if isinstance(table.get("bearing"), str) else None
+            named = (split_name(table["bearing"], where + "bearing").preload
+                     if isinstance(table.get("bearing"), str) else None)
             if named is not None:  # two preloads for one pair: neither may quietly win
                 raise InputError.for_field(where + "preload", table["preload"], f"the bearing's name gives its "
                                            f"preload already ({table['bearing']!r}); give it once")
