@@ -108,7 +108,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
                 console.print(f"Not checked: {c.name}: {c.evidence}", highlight=False, soft_wrap=True)
     if result["candidates"]:
         console.print("Candidates ranked (fewest criteria failed, then fewest not checked, then the larger worst "
-                      "margin): " + ", ".join(result["ranking"]), highlight=False)
+                      "margin" + ("; --quick: an order of figures not checked, which the full run may change"
+                                  if result["quick"] else "") + "): " + ", ".join(result["ranking"]), highlight=False)
     if result.get("recommendation_note"):
         console.print(f"No recommendation: {result['recommendation_note']}", highlight=False)
     if result["recommendation"]:

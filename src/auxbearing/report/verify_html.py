@@ -228,7 +228,8 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                      f"{_margin(rec['as_is'])} as built.</p>")
         parts.append("<p class='small'>Each point of the search is judged by its drop at the maximum speed on the "
                      "verdict's own criteria a drop checks (s0, the model's range, backward whirl, the seal and the "
-                     "air gap, each margin as in the verdict table); the best point has the largest smallest "
+                     "air gap, each margin as in the verdict table but the air gap's, which leaves out the "
+                     "coast-down's thermal opening the verdict adds); the best point has the largest smallest "
                      f"margin, and of points that tie on it (within {rec.get('tie_margin', 0.0) * 100:g} "
                      "percentage point) the largest next smallest, and so on. The "
                      "coast-down and the campaign would need a whole verification per point, so the recommended "
