@@ -188,7 +188,8 @@ COASTDOWN: tuple[Param, ...] = (
     Param("coastdown", "ambient_temperature", "temperature", 293.15, "degC", "positive",
           "Ambient (and initial) temperature", "ISO 1 reference temperature, 20 degC"),
     Param("coastdown", "max_time", "time", 3600.0, "s", "positive",
-          "Longest simulated coast-down (--until-stop stops at standstill or here)", "ours: one hour"),
+          "Longest simulated coast-down: a run to standstill that reaches it first ends with verdict time_budget, "
+          "not checked in a verification; a campaign's coast-downs take it as their horizon", "ours: one hour"),
     Param("coastdown", "stop_speed", "angular_speed", math.pi / 30.0, "rpm", "positive",
           "Rotor speed counted as standstill", "ours"),
     Param("coastdown", "max_temperature", "temperature", 423.15, "degC", "positive",
