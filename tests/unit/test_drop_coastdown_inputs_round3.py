@@ -73,3 +73,17 @@ def test_a_run_to_standstill_cut_by_max_time_is_a_budget_and_its_life_says_what_
     assert "coastdown.max_time = 0.3 s was reached at" in summary["reason"]
     note = summary["planes"][0]["life_note"]
     assert note.startswith("counted over the first 0.3 s only (stopped: time budget, before standstill)")
+
+
+def test_a_drop_shorter_than_one_output_step_is_refused_from_a_file_the_api_and_the_command_line():
+    from auxbearing.analysis.drop import run_machine
+
+    with pytest.raises(InputError, match=r"^drop\.duration = '5e-06 s': shorter than drop\.output_step = 1e-05 s"):
+        _blower("drop", duration="5 us")
+    with pytest.raises(InputError, match=r"^duration = '5 us': shorter than drop\.output_step = 1e-05 s"):
+        run_machine("blower", duration="5 us")
+
+
+def test_a_count_given_as_true_is_told_it_must_be_a_plain_number():
+    with pytest.raises(InputError, match=r"^drop\.max_steps = True: must be a plain number$"):
+        _blower("drop", max_steps=True)

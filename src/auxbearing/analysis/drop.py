@@ -28,7 +28,7 @@ from auxbearing.analysis.whirl import natural_frequency, timeline
 from auxbearing.bearings.ballset import ballset_state
 from auxbearing.bearings.ratings import ISO76_BALL_STRESS, safety_factor
 from auxbearing.common import interrupt
-from auxbearing.common.errors import ConvergenceError
+from auxbearing.common.errors import ConvergenceError, InputError
 from auxbearing.common.io import to_jsonable
 from auxbearing.common.params import convert
 from auxbearing.core import drive, probes
@@ -198,8 +198,6 @@ def as_machine(machine) -> Machine:
 
 def simulated_time(value, field: str = "duration") -> float:
     """A simulated time from a number (s) or a string with a unit ("50 ms") [s]; positive and finite."""
-    from auxbearing.common.errors import InputError
-
     seconds = convert(field, value, "time")
     if not (math.isfinite(seconds) and seconds > 0.0):
         raise InputError.for_field(field, value, "must be a positive, finite time")
@@ -227,7 +225,13 @@ def run_machine(machine: Machine | str, duration: float | str | None = None,
     MachineRun
     """
     machine = as_machine(machine)
-    duration = machine.simulation.duration if duration is None else simulated_time(duration)
+    if duration is not None:
+        given, duration = duration, simulated_time(duration)
+        if duration < machine.simulation.output_step:  # as a file's drop.duration is (Simulation)
+            raise InputError.for_field("duration", given, "shorter than drop.output_step = "
+                                       f"{machine.simulation.output_step:g} s")
+    else:
+        duration = machine.simulation.duration
     run = integrate_machine(machine, duration, None, progress)
     ds = machine_dataset(machine, run.model, run.grid, run.output_step, lean)
     summary = machine_summary(machine, run, ds, duration)

@@ -333,6 +333,9 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
         seconds = to_si("--duration", duration, "time", "s")
         if not 0.0 < seconds < 1e6:
             raise InputError.for_field("--duration", duration, "must lie between 0 and 1e6 s")
+        if seconds < machine.simulation.output_step:  # one output sample: no history to summarise
+            raise InputError.for_field("--duration", duration, "shorter than drop.output_step = "
+                                       f"{machine.simulation.output_step:g} s")
     if wall is not None:
         machine = machine.with_simulation(max_wall_time=wall)
     check_budget(machine, seconds if seconds is not None else machine.simulation.duration,

@@ -99,6 +99,8 @@ def _convert(field: str, value: object, dimension: str, default_unit: str | None
     from auxbearing.common.units import Quantity, parse_quantity
 
     if isinstance(value, bool) or not isinstance(value, (int, float, str, pint.Quantity)):
+        if not si_unit(dimension):  # a count or a ratio has no unit to name
+            raise InputError.for_field(field, value, "must be a plain number")
         raise InputError.for_field(field, value, f"must be a number with a unit such as {_examples(dimension)}")
     unit = si_unit(dimension)
     if isinstance(value, (int, float)):

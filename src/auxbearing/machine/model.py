@@ -243,9 +243,10 @@ class Simulation:
     def __post_init__(self) -> None:
         for p in SIMULATION:
             object.__setattr__(self, p.key, accept(p, getattr(self, p.key)))
-        if self.output_step > self.duration:
-            raise InputError.for_field("drop.output_step", f"{self.output_step:g} s",
-                                       f"must not exceed drop.duration = {self.duration:g} s")
+        if self.output_step > self.duration:  # either may be the one given: name both
+            raise InputError.for_field("drop.duration", f"{self.duration:g} s",
+                                       f"shorter than drop.output_step = {self.output_step:g} s: give a longer "
+                                       "duration or a shorter output_step")
         if self.max_output_points < 2:  # a run's output holds its start and its end at least
             raise InputError.for_field("drop.max_output_points", int(self.max_output_points), "must be 2 or more")
 
