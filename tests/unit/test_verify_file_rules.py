@@ -72,3 +72,15 @@ def test_the_api_takes_candidates_as_the_command_line_writes_them_and_refuses_on
         verify("blower", str(tmp_path), "6208, 6208", quick=True)
     with pytest.raises(InputError, match=r"^candidates = '6208,': a comma-separated list"):
         verify("blower", tmp_path, "6208,", quick=True)
+
+
+def test_the_command_line_refuses_an_empty_candidate_in_its_list_writing_nothing(tmp_path):
+    from click.testing import CliRunner
+
+    from auxbearing.cli.main import cli
+
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["verify", "--machine", "blower", "--out", str(out), "--quick",
+                                       "--candidates", "6208,"])
+    assert result.exit_code == 2 and not out.exists()
+    assert "--candidates = '6208,': a comma-separated list of bearings, no empty item" in result.output

@@ -64,11 +64,6 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
         raise InputError.for_field("--campaign-samples", campaign_samples, f"must lie in [0, {MAX_CAMPAIGN_SAMPLES}]")
     if workers is not None and not 1 <= workers <= 256:
         raise InputError.for_field("--workers", workers, "must lie in [1, 256]")
-    specs = None
-    if candidates is not None:
-        specs = [c.strip() for c in candidates.split(",")]
-        if not all(specs):
-            raise InputError.for_field("--candidates", candidates, "a comma-separated list of bearings, no empty item")
     with atomic_output_dir(out_dir, owned=VERIFY_OUTPUTS) as tmp:
         # its fraction counts stages, whose work differs a hundredfold: a percentage or time left would mislead
         with ProgressReporter(f"verify {machine_spec}", quiet, time_left=False) as progress:
@@ -78,7 +73,7 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
                 steps["n"] += 1
                 progress(min(0.99, steps["n"] / 40.0), text)
 
-            result = verify(machine_spec, tmp, specs, quick=quick, samples=campaign_samples, workers=workers,
+            result = verify(machine_spec, tmp, candidates, quick=quick, samples=campaign_samples, workers=workers,
                             scheduler=scheduler, with_recommendation=not no_recommendation, progress=say,
                             candidates_option="--candidates")
         result.save(tmp)

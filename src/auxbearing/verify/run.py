@@ -213,13 +213,15 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         if progress is not None:
             progress(text)
 
+    skipped = search_refused(design_machine) if with_recommendation else None
+    if skipped is not None:
+        say(f"no geometry search: {skipped}")
+        with_recommendation = False
     with verification_cluster(scheduler, workers) as (executor, address):
         design, others, rec, converged, figures = _run_all(data, name, base, criteria, settings, candidate_list,
                                                            quick, samples, out_dir, executor, address,
                                                            with_recommendation, say, report_figures)
     machine = design["cases"].machine
-    skipped = rec.pop("skipped") if rec is not None and "skipped" in rec else None
-    rec = None if skipped is not None else rec
     result = {
         "machine": machine.name, "verdict": design["verdict"], "design": design, "quick": quick,
         "criteria": [c.as_json() for c in design["criteria"]], "worst_margin": design["worst_margin"],
@@ -320,10 +322,6 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
         # it ran (the search would otherwise run the same drop again)
         design_drop = max_speed_drop(planned["design"][1])
         as_built = None if design_drop is None else ahead.submit(drop_summary, design_drop)
-        refused = search_refused(planned["design"][0].machine)
-        if refused is not None:
-            say(f"no geometry search: {refused}")
-            return {"skipped": refused}
         rec = recommend(data, name, base, criteria, quick, say, ahead, as_built)
         if rec is not None and rec["passes"]:
             _verify_recommendation(rec, data, name, base, criteria, quick, n, out_dir, ahead, address, say)
