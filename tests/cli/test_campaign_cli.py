@@ -101,7 +101,7 @@ def test_out_that_is_a_file_and_report_of_no_store(tmp_path):
     r = CliRunner().invoke(cli, ["campaign", "--config", str(config), "--out", str(tmp_path / "file")])
     assert r.exit_code == 2 and "not a folder" in r.stderr
     r = CliRunner().invoke(cli, ["campaign-report", str(tmp_path / "nothing"), "--out", str(tmp_path / "rep")])
-    assert r.exit_code == 2 and "not a campaign store" in r.stderr and not (tmp_path / "rep").exists()
+    assert r.exit_code == 2 and "does not exist" in r.stderr and not (tmp_path / "rep").exists()
 
 
 ISSUE_KEYS = ("samples", "completed", "failed", "out_of_range", "p_backward_whirl", "peak_ball_stress_MPa",

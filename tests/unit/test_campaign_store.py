@@ -88,7 +88,7 @@ def test_a_folder_that_is_not_a_store_is_refused(tmp_path):
     c = small()
     with pytest.raises(InputError, match="not a campaign store"):
         prepare_store(tmp_path / "x", c, design(c))
-    with pytest.raises(InputError, match="not a campaign store"):
+    with pytest.raises(InputError, match="nothing': does not exist"):
         load_results(tmp_path / "nothing")
 
 

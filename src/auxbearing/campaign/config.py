@@ -130,20 +130,70 @@ class Campaign:
 
     def describe(self) -> dict:
         """Everything that fixes the samples and their results (JSON-able, SI)."""
-        return {"name": self.name, "tables": self.tables, "base": self.base, "sampler": self.sampler,
+        return {"name": self.name, "tables": self.tables, "files": self.named_files(), "base": self.base,
+                "sampler": self.sampler,
                 "samples": self.samples, "runs": self.runs, "seed": self.seed, "analysis": self.analysis,
                 "second_order": self.second_order, "batch_size": self.batch_size,
                 "inputs": [{"key": i.key, "unit": i.unit, **i.distribution.describe()} for i in self.inputs]}
+
+    def named_files(self) -> dict[str, str]:
+        """The files the machine tables name (bearing files, a rotor's matrices): as written -> content hash."""
+        return {text: _file_hash(path) for text, path in _files_in(self.tables, self.base).items()}
 
     def fingerprint(self) -> str:
         """A hash of :meth:`describe` but the name and folder: a store holds results of one fingerprint.
 
         The file's name and folder are left out, so a campaign file that is renamed or moved (with any
-        bearing files it names) still finds its store.
+        bearing files it names) still finds its store; the files the tables name count by their contents, so
+        an edited bearing file is another campaign, wherever it lies.
         """
+        files = self.named_files()
         fixed = {k: v for k, v in self.describe().items() if k not in ("name", "base")}
+        fixed["tables"] = _swap_strings(fixed["tables"], files)
         text = json.dumps(fixed, sort_keys=True, default=str)
         return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def _files_in(tables, base: str | None) -> dict[str, Path]:
+    """Every string in ``tables`` that names an existing file (absolute, or relative to ``base``)."""
+    found: dict[str, Path] = {}
+
+    def walk(value) -> None:
+        if isinstance(value, dict):
+            for item in value.values():
+                walk(item)
+        elif isinstance(value, list):
+            for item in value:
+                walk(item)
+        elif isinstance(value, str) and value.strip() and "\n" not in value:
+            path = Path(value.strip()).expanduser()
+            if not path.is_absolute():
+                if base is None:
+                    return
+                path = Path(base) / path
+            try:
+                if path.is_file():
+                    found[value] = path
+            except OSError:  # a name too long for a path, say
+                pass
+
+    walk(tables)
+    return found
+
+
+def _file_hash(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()[:16]
+
+
+def _swap_strings(value, swaps: dict[str, str]):
+    """``value`` with every string in ``swaps`` replaced by its swap (tables of tables and lists walked)."""
+    if isinstance(value, dict):
+        return {k: _swap_strings(v, swaps) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_swap_strings(v, swaps) for v in value]
+    if isinstance(value, str) and value in swaps:
+        return f"file {swaps[value]}"
+    return value
 
 
 def read_campaign(path: str | Path) -> Campaign:
@@ -160,7 +210,9 @@ def _integer(table: dict, key: str, default: int | None, low: int, high: int) ->
         raise InputError(f"campaign.{key}: missing; give a whole number")
     if isinstance(value, float) and value.is_integer():
         value = int(value)
-    if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+    if isinstance(value, bool):  # quoted as the file spells it
+        raise InputError(f"campaign.{key} = {str(value).lower()}: must be a whole number from {low} to {high}")
+    if not isinstance(value, int) or not low <= value <= high:
         raise InputError.for_field(f"campaign.{key}", value, f"must be a whole number from {low} to {high}")
     return value
 
@@ -171,6 +223,7 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
     from auxbearing.machine.files import machine_document, machine_names
 
     tables: dict = {}
+    machine_base = base
     spec = head.get("machine")
     if spec is not None:
         if not isinstance(spec, str) or not spec.strip():
@@ -178,19 +231,20 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
         spec = spec.strip()
         if spec in machine_names():
             # its folder too: the files a catalogue machine names (an elastic rotor's matrices) sit beside it
-            tables, _, base = machine_document(spec)
+            tables, _, machine_base = machine_document(spec)
         else:
             path = Path(spec) if base is None or Path(spec).is_absolute() else base / spec
             if not path.is_file():
                 raise InputError.for_field("campaign.machine", spec, "neither a file nor a catalogue machine ("
                                            + ", ".join(machine_names()) + ")")
             tables = read_toml(path, "campaign.machine")
-            base = path.parent
+            machine_base = path.parent
         tables.setdefault("machine", {}).setdefault("name", spec)
+    here = base  # the campaign file's folder: the files its own tables name lie relative to it
     for key in MACHINE_TABLES:
         if key not in data:
             continue
-        over = data[key]
+        over = _anchored(data[key], here) if here is not None and machine_base != here else data[key]
         if key == "touchdown":
             if not isinstance(over, list):
                 raise InputError.for_field("touchdown", over, "give [[touchdown]] tables")
@@ -205,7 +259,27 @@ def _machine_tables(data: dict, head: dict, base: Path | None) -> tuple[dict, Pa
     if not tables:
         raise InputError("campaign.machine: missing; give machine = NAME (or a file) or the machine tables "
                          "[rotor], [[touchdown]] in the campaign file")
-    return tables, base
+    return tables, machine_base
+
+
+def _anchored(value, folder: Path):
+    """``value`` with each relative name of a file beside the campaign file made absolute (tables walked).
+
+    The machine's own files are read relative to the machine's folder; a bearing file the campaign file names is
+    the user's, beside the campaign file.
+    """
+    if isinstance(value, dict):
+        return {k: _anchored(v, folder) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_anchored(v, folder) for v in value]
+    if isinstance(value, str) and value.strip() and not Path(value.strip()).expanduser().is_absolute():
+        try:
+            path = folder / value.strip()
+            if path.is_file():
+                return str(path.resolve())
+        except OSError:
+            pass
+    return value
 
 
 def resolve_key(key: object, n_planes: int, where: str) -> tuple[str, str, tuple[int, ...], Param]:
@@ -276,7 +350,7 @@ def _inputs(head: dict, n_planes: int) -> tuple[tuple[CampaignInput, ...], list[
             seen[slot] = key
         share = share_outside_rule(dist, param)
         if share > OUTSIDE_NOTE:
-            notes.append(f"{key}: {share:.2g} of the samples fall outside its rule ({param.rule}); they are "
+            notes.append(f"{key}: {100.0 * share:.3g} % of the samples fall outside its rule ({param.rule}); they are "
                          "recorded as invalid_input (a truncated_normal keeps them inside)")
         inputs.append(CampaignInput(key, section, name, planes, param, dist))
     return tuple(inputs), notes
@@ -371,6 +445,9 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
     second_order = head.get("second_order", False)
     if not isinstance(second_order, bool):
         raise InputError.for_field("campaign.second_order", second_order, "must be true or false")
+    if second_order and sampler != "saltelli":
+        raise InputError.for_field("campaign.second_order", second_order, "second-order Sobol' indices need "
+                                   f"sampler = \"saltelli\" (this campaign's is {sampler!r})")
     required = head.get("required_s0", DEFAULT_REQUIRED_S0)
     if isinstance(required, bool) or not isinstance(required, (int, float)) or not 0.0 < required < math.inf:
         raise InputError.for_field("campaign.required_s0", required, "must be a number > 0")

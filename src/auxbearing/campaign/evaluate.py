@@ -59,7 +59,8 @@ PLANE_OUTPUTS: dict[str, tuple[str, str, str, str, float]] = {
 #: Per-plane whirl outputs (codes and flags).
 WHIRL_OUTPUTS: dict[str, tuple[str, str, str]] = {
     "whirl": ("i1", "", "Whirl class at the end (index into the store's 'whirl_classes' attribute)"),
-    "backward_whirl": ("f8", "", "1 when the plane whirls backward at the end or had sustained backward whirl"),
+    "backward_whirl": ("f8", "", "1 when the plane whirls backward at the end or had sustained backward whirl, "
+                       "NaN when the drop closed no whirl window"),
 }
 #: Per-plane outputs of a coast-down (auxbearing.analysis.coastdown): name -> (dtype, units, long name, summary key).
 COASTDOWN_PLANE_OUTPUTS: dict[str, tuple[str, str, str, str]] = {
@@ -142,8 +143,11 @@ def _record_from_summary(summary: dict, record: dict, n_planes: int) -> None:
             record[name][k] = np.nan if value is None else float(value) * scale
         whirl = plane.get("whirl")
         record["whirl"][k] = WHIRL_CODES.index(whirl) if whirl in WHIRL_CODES else 0
-        record["backward_whirl"][k] = float(whirl in BACKWARD_CLASSES or plane.get("backward_whirl_onset_ms")
-                                            is not None)
+        if whirl in WHIRL_CODES[1:]:
+            record["backward_whirl"][k] = float(whirl in BACKWARD_CLASSES
+                                                or plane.get("backward_whirl_onset_ms") is not None)
+        else:  # a drop shorter than one whirl window closed none: whether it whirled is unknown, not "no"
+            record["backward_whirl"][k] = np.nan
 
 
 def _coastdown_record(result, record: dict, n_planes: int) -> None:

@@ -48,15 +48,37 @@ MARK = "auxbearing_campaign"
 DESIGN_CHUNK = 4096
 
 
-def _display(param) -> tuple[str, float]:
-    """Display unit of an input and the factor from SI to it (1 when it has none)."""
-    from auxbearing.common.params import si_unit
+def _conversion(si: str, unit: str) -> tuple[str, float, float]:
+    """(unit, scale, offset) with value in ``unit`` = scale * SI value + offset; the SI unit where none is given.
+
+    The offset is that of a temperature shown in degC: 300 K is 26.85 degC, not 300 times a factor.
+    """
     from auxbearing.common.units import Quantity
 
-    unit, si = param.display_unit, si_unit(param.dimension)
     if not unit or unit == si or not si:
-        return si, 1.0
-    return unit, float(Quantity(1.0, si).to(unit).magnitude)
+        return si, 1.0, 0.0
+    zero = float(Quantity(0.0, si).to(unit).magnitude)
+    return unit, float(Quantity(1.0, si).to(unit).magnitude) - zero, zero
+
+
+def _display(param) -> tuple[str, float]:
+    """Display unit of an input and the factor from a difference in SI to one in it (1 when it has none)."""
+    from auxbearing.common.params import si_unit
+
+    unit, scale, _ = _conversion(si_unit(param.dimension), param.display_unit)
+    return unit, scale
+
+
+def input_display(ds, j: int) -> tuple[str, float, float]:
+    """Input ``j`` of a store as a person reads it: (display unit, scale, offset) from its SI value.
+
+    Taken from the store's unit coordinates, so a store written before the offset was known reads right too.
+    """
+    si = str(ds["input_unit"].values[j]) if "input_unit" in ds.coords else ""
+    unit = str(ds["input_display_unit"].values[j]) if "input_display_unit" in ds.coords else ""
+    if not si:
+        return unit, float(ds["input_display_scale"].values[j]) if "input_display_scale" in ds.coords else 1.0, 0.0
+    return _conversion(si, unit)
 
 
 def _template(campaign: Campaign, design: Design):
@@ -196,6 +218,8 @@ def read_attrs(path: str | Path) -> dict:
     """The attributes of a campaign store; a one-line error when ``path`` is none or they cannot be read."""
     path = Path(path)
     meta = path / ".zattrs"
+    if not path.exists():
+        raise InputError(f"store = '{path}': does not exist; give the folder `auxbearing campaign --out` wrote")
     if not meta.is_file():
         raise InputError(f"store = '{path}': not a campaign store (no Zarr attributes); give the folder "
                          "`auxbearing campaign --out` wrote")
@@ -251,7 +275,22 @@ def prepare_store(path: str | Path, campaign: Campaign, design: Design) -> bool:
     if not same:
         raise InputError(f"out = '{path}': its samples differ from those this campaign gives now (another "
                          "scipy or SALib version?); give a new --out")
+    _judge_as_now(path, attrs, campaign)
     return False
+
+
+#: Settings that judge a store's runs and change none of them: a resume takes the campaign file's values.
+JUDGING_ATTRS = ("required_s0", "whirl_map")
+
+
+def _judge_as_now(path: Path, attrs: dict, campaign: Campaign) -> None:
+    """Store the campaign file's judging settings (:data:`JUDGING_ATTRS`), so its statistics use what it says."""
+    now = {"required_s0": campaign.required_s0, "whirl_map": list(campaign.whirl_map or [])}
+    if all(attrs.get(k) == v for k, v in now.items()):
+        return
+    import zarr
+
+    zarr.open_group(str(path), mode="r+").attrs.update(now)
 
 
 def open_store(path: str | Path):

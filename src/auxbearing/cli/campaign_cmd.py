@@ -33,8 +33,9 @@ def _workers(text: str | None, scheduler: str | None) -> int | None:
 
 
 def _status(p) -> tuple[float, str]:
-    left = "" if p.remaining_s is None else f", ~{p.remaining_s:.0f} s left"
-    return p.done / p.runs, f"{p.done}/{p.runs} samples, {p.rate:.2f} drops/s{left}"
+    # the time left is the progress line's own estimate: a second one from the drop rate alone (no start-up)
+    # contradicted it
+    return p.done / p.runs, f"{p.done}/{p.runs} samples, {p.rate:.2f} drops/s"
 
 
 @click.command("campaign")
@@ -76,8 +77,10 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
         with ProgressReporter(f"campaign {campaign.name}", quiet) as reporter:
             result = run_campaign(campaign, store, scheduler, workers,
                                   progress=lambda p: reporter(*_status(p)))
-    except CampaignInterrupted as stop:
-        click.echo(f"interrupted: {stop.done} of {stop.runs} samples are in {store}; run the same command to "
+    except KeyboardInterrupt as stop:  # in the batches, or while the cluster starts or winds down
+        done, runs = (stop.done, stop.runs) if isinstance(stop, CampaignInterrupted) else (
+            _stored(store), campaign.runs)
+        click.echo(f"interrupted: {done} of {runs} samples are in {store}; run the same command to "
                    "resume", err=True)
         raise SystemExit(EXIT_INTERRUPTED) from None
     finally:
@@ -89,7 +92,7 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
     out = {**headline(stats), "wall_time_s": result["wall_time_s"], "drops_per_second": result["drops_per_second"],
            "new": result["new"], "lost": result["lost"], "workers": result["workers"],
            "startup_s": result["startup_s"], "warm_up_s": result["warm_up_s"], "run_s": result["run_s"],
-           "store": str(store), "campaign": campaign.name, "runs": campaign.runs, "sampler": campaign.sampler,
+           "store": str(store), "campaign": campaign.name, "runs": campaign.runs, "base_samples": campaign.samples, "sampler": campaign.sampler,
            "seed": campaign.seed}
     if as_json:
         echo_json(out)
@@ -97,12 +100,25 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
     _print(out, stats)
 
 
+def _stored(store) -> int:
+    """Samples complete in the store (0 when it was not made yet or cannot be read)."""
+    from auxbearing.campaign.store import completed
+
+    try:
+        return int(completed(store).sum())
+    except Exception:  # noqa: BLE001 - an interrupted start may leave no store, or half of one
+        return 0
+
+
 def _print(out: dict, stats: dict) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    table = Table(title=f"Campaign {out['campaign']}: {out['completed']} of {out['samples']} samples "
-                        f"({out['sampler']}, seed {out['seed']})")
+    design = (f"saltelli on {out['base_samples']} base samples" if out["sampler"] == "saltelli"
+              else out["sampler"])
+    what = "runs" if out["sampler"] == "saltelli" else "samples"  # a Saltelli design runs N (D + 2) of them
+    table = Table(title=f"Campaign {out['campaign']}: {out['completed']} of {out['samples']} {what} "
+                        f"({design}, seed {out['seed']})")
     table.add_column("quantity")
     table.add_column("value", justify="right")
     table.add_column("95 % interval", justify="right")
@@ -116,6 +132,8 @@ def _print(out: dict, stats: dict) -> None:
         low, high = stress["interval"][tag]
         table.add_row(f"peak ball stress {tag} [MPa]", _shown(stress[tag], "{:.0f}"), _interval(low, high, "{:.0f}"))
     Console().print(table)
+    for note in stats.get("notes", []):
+        click.echo(f"note: {note}")
     if not out["ok"]:
         click.echo("No run ended ok, so there is nothing to estimate: the store's records say why each ended "
                    "(invalid_input: its reason)")
@@ -134,8 +152,8 @@ def _print(out: dict, stats: dict) -> None:
 def campaign_report_command(store, out_dir, whirl_map, as_json):
     """Statistics, sensitivity and figures of a campaign store (complete or not).
 
-    Writes statistics.json, probabilities.csv (Wilson intervals), quantiles.csv (bootstrap
-    intervals), sensitivity.csv (Sobol' indices for a complete saltelli design whose runs all ended
+    Writes statistics.json, probabilities.csv (Wilson intervals), quantiles.csv (distribution-free
+    intervals from the order statistics, an end left empty where too few runs bound it), sensitivity.csv (Sobol' indices for a complete saltelli design whose runs all ended
     ok, Spearman rank correlations otherwise), samples.csv and the figures histograms, scatter_matrix
     and whirl_map.
     """
@@ -151,6 +169,8 @@ def campaign_report_command(store, out_dir, whirl_map, as_json):
     if as_json:
         echo_json({**headline(stats), "sensitivity": stats["sensitivity"], "out": str(out_dir)})
         return
+    for note in stats.get("notes", []):
+        click.echo(f"note: {note}")
     click.echo(f"{stats['completed']} of {stats['samples']} samples: P(backward whirl) = "
                f"{_shown(stats['p_backward_whirl']['value'], '{:.3f}')}; wrote statistics and figures in {out_dir}/")
 
@@ -163,7 +183,12 @@ def _shown(value, fmt: str) -> str:
 
 
 def _interval(low, high, fmt: str) -> str:
-    return "-" if "-" in (_shown(low, fmt), _shown(high, fmt)) else f"{fmt.format(low)} - {fmt.format(high)}"
+    """An interval as printed; an end too few runs can bound reads as one-sided ("≥ low"), both as "-"."""
+    low_text, high_text = _shown(low, fmt), _shown(high, fmt)
+    if "-" in (low_text, high_text):
+        return {(True, False): f"≥ {low_text}", (False, True): f"≤ {high_text}"}.get(
+            (low_text != "-", high_text != "-"), "-")
+    return f"{low_text} - {high_text}"
 
 
 COMMANDS = [campaign_command, campaign_report_command]

@@ -51,10 +51,11 @@ def sample_classes(ds) -> np.ndarray:
 
 def _input(ds, key: str) -> tuple[np.ndarray, str]:
     """Values of an input in its display unit, and an axis label."""
+    from auxbearing.campaign.store import input_display
+
     j = [str(k) for k in ds["input"].values].index(key)
-    unit = str(ds["input_display_unit"].values[j])
-    scale = float(ds["input_display_scale"].values[j])
-    return ds["value"].values[:, j] * scale, f"{key} [{unit or '-'}]"
+    unit, scale, offset = input_display(ds, j)
+    return ds["value"].values[:, j] * scale + offset, f"{key} [{unit or '-'}]"
 
 
 def plot_histograms(ds, fig=None) -> Figure:
@@ -194,8 +195,9 @@ def plot_whirl_map(ds, x_key: str, y_key: str, ax=None, bins: int | None = None)
     _scatter_classes(ax, x[done], y[done], sample_classes(ds)[done], size=10)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
-    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, title="whirl at the end",
-              title_fontsize=7)
+    if ax.get_legend_handles_labels()[0]:  # no sample with a whirl class (none closed a window): no legend
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, title="whirl at the end",
+                  title_fontsize=7)
     ax.set_title("Backward whirl over two inputs")
     return fig
 

@@ -15,7 +15,11 @@ from pathlib import Path
 import numpy as np
 
 from auxbearing.campaign.statistics import QUANTILES, campaign_statistics, sample_outputs, verdict_masks
+from auxbearing.campaign.store import input_display
 from auxbearing.common.errors import InputError
+
+#: Parameters of a distribution that are differences of the input, shown without a unit's offset.
+SPREADS = ("std",)
 
 PROBABILITIES = ("p_backward_whirl", "p_backward_whirl_at_end", "p_out_of_range", "p_s0_below_required",
                  "p_s0_below_required_or_out_of_range")
@@ -46,6 +50,8 @@ def whirl_map_keys(ds, keys: tuple[str, str] | None) -> tuple[str, str] | None:
         if key not in inputs:
             raise InputError.for_field("--whirl-map", key, "not an input of this campaign; inputs: "
                                        + ", ".join(inputs))
+    if chosen[0] == chosen[1]:  # a map of one input against itself is a line, as the campaign file is told
+        raise InputError.for_field("--whirl-map", " ".join(chosen), "give two different inputs")
     return chosen[0], chosen[1]
 
 
@@ -147,10 +153,11 @@ def _page(ds, stats: dict, figures: list, note: str | None) -> str:
              f"<style>{_CSS}</style></head><body><h1>Campaign {_e(name)}</h1><p>{_e(counts)}</p>"]
     rows = []
     for j, spec in enumerate(described.get("inputs") or []):
-        unit = str(ds["input_display_unit"].values[j]) if "input_display_unit" in ds else ""
-        scale = float(ds["input_display_scale"].values[j]) if "input_display_scale" in ds else 1.0
+        unit, scale, offset = input_display(ds, j) if "input_unit" in ds.coords else ("", 1.0, 0.0)
         numbers = {k: v for k, v in spec.items() if isinstance(v, (int, float)) and k not in ("key",)}
-        shown = ", ".join(f"{k} {v * scale:.4g}{' ' + unit if unit else ''}" for k, v in numbers.items())
+        # a spread (std) is a difference, with no offset: 5 K of spread is 5 degC of it
+        shown = ", ".join(f"{k} {v * scale + (0.0 if k in SPREADS else offset):.4g}{' ' + unit if unit else ''}"
+                          for k, v in numbers.items())
         rows.append([_label(spec.get("key", "?")), spec.get("distribution", "?"), shown])
     if rows:
         parts.append("<h2>Inputs varied</h2>" + _table(["input", "distribution", "parameters"], rows))
@@ -164,7 +171,8 @@ def _page(ds, stats: dict, figures: list, note: str | None) -> str:
         rows.append([f"Sustained backward whirl at {plane}", _percent(p["value"]),
                      f"{_percent(p['low'])} to {_percent(p['high'])}", f"{p['successes']} of {p['trials']}"])
     parts.append("<h2>Probabilities</h2>" + _table(["event", "estimate", "95 % interval (Wilson)", "counted"],
-                                                    rows))
+                                                    rows)
+                 + "".join(f"<p>{_e(note)}</p>" for note in stats.get("notes", [])))
     rows = []
     for key, entry in stats["quantiles"].items():
         if entry["n"] == 0:
@@ -184,7 +192,8 @@ def _page(ds, stats: dict, figures: list, note: str | None) -> str:
         rows = [[_label(i), *(_number(sens["outputs"][o].get(i, {}).get(field)) for o in outputs)] for i in inputs]
         parts.append(f"<h2>What drives the outcomes ({what})</h2>"
                      + (_table(["input", *(_label(o) for o in outputs)], rows) if outputs else
-                        "<p>No outcome varied enough over the runs to rank its drivers.</p>"))
+                        "<p>No outcome varied enough over the runs to rank its drivers.</p>")
+                     + (f"<p>{_e(sens['note'])}</p>" if sens.get("note") else ""))
     else:
         parts.append(f"<h2>What drives the outcomes</h2><p>{_e(sens.get('note', 'not computed'))}</p>")
     parts.append("<h2>Figures</h2>")
@@ -213,9 +222,9 @@ def _samples_csv(ds, path: Path) -> None:
     header = ["sample"]
     columns = []
     for j, key in enumerate(ds["input"].values):
-        unit = str(ds["input_display_unit"].values[j]) or "-"
-        header.append(f"{key} [{unit}]")
-        columns.append(ds["value"].values[:, j] * float(ds["input_display_scale"].values[j]))
+        unit, scale, offset = input_display(ds, j)
+        header.append(f"{key} [{unit or '-'}]")
+        columns.append(ds["value"].values[:, j] * scale + offset)
     header += ["verdict"] + [f"{name} [{unit}]" for name, (_, unit) in outputs.items()] + ["sample_time [s]"]
     times = ds["sample_time"].values
     with path.open("w", newline="") as handle:

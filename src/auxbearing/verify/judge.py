@@ -355,12 +355,18 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
         return not_checked(WHIRL_PROBABILITY, f"none of the campaign's {campaign.get('samples', 0)} drops ended "
                            "inside the model's range", source)
     p = campaign["p_backward_whirl"]
+    unclassified = campaign.get("whirl_unclassified", 0)
+    if not p.get("trials", campaign["ok"]):
+        return not_checked(WHIRL_PROBABILITY, f"none of the campaign's {campaign['ok']} drops that ended ok closed a "
+                           "whirl window (drop.whirl_window), so none shows whether it whirled", source)
     evidence = (f"campaign of {campaign['ok']} drops that ended ok: estimate {p['value']:.3f}, 95 % interval "
                 f"{p['low']:.3f}-{p['high']:.3f}")
     if campaign.get("stopped_decided"):
         evidence += (f" (stopped after its first {campaign['samples']} of {campaign['planned']} drops: even with "
                      "every drop left ending without whirl the estimate stays above the limit)")
     lost = {v: n for v, n in campaign.get("verdicts", {}).items() if v in FAILED and n}
+    if unclassified:  # drops too short to close a whirl window: whether they whirled is unknown too
+        lost["whirl not classified"] = unclassified
     if lost:  # a budget reached, a sample refused, an error: no result, so no whirl either way
         evidence += (f"; {sum(lost.values())} drops gave no result ("
                      + ", ".join(f"{v.replace('_', ' ')}: {n}" for v, n in lost.items()) + ")")

@@ -102,7 +102,8 @@ def _campaign_rows(stats: dict | None, spreads: list | None = None) -> tuple[lis
                        ("p_out_of_range", "probability of leaving the model's range"),
                        ("p_s0_below_required", "probability of s0 below the required value")):
         p = stats[key]
-        rows.append([label, f"{p['value']:.3f}", f"{p['low']:.3f}-{p['high']:.3f}", p["among"]])
+        value = f"{p['value']:.3f}" if p["trials"] else "-"  # no run to count
+        rows.append([label, value, f"{p['low']:.3f}-{p['high']:.3f}", f"{p['among']} ({p['trials']})"])
     stress = stats.get("quantiles", {}).get("peak_ball_stress_MPa")
     if stress and stress.get("p95") is not None and math.isfinite(stress["p95"]):
         rows.append(["peak ball contact stress, median / 95th percentile",
