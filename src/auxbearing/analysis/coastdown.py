@@ -531,17 +531,18 @@ class _Limits:
             growth[k] = net.expansion[JOURNAL] * net.journal_radius * (tk[JOURNAL] - net.ambient_temperature)
         self.session.set_clearances(radial, internal, growth)
         self.radial, self.internal = radial[:n], internal[:n]
+        for k, plane in enumerate(self.machine.planes):  # every plane's smallest first: the history records them all
+            self.min_radial[k] = min(self.min_radial[k], plane.radial_clearance + radial[k])
+            self.min_internal[k] = min(self.min_internal[k], plane.bearing.diametral_clearance + internal[k])
         for k, plane in enumerate(self.machine.planes):
             s = plane.radial_clearance + radial[k]
             pd = plane.bearing.diametral_clearance + internal[k]
-            self.min_radial[k] = min(self.min_radial[k], s)
-            self.min_internal[k] = min(self.min_internal[k], pd)
             hottest = int(np.argmax(self.temps[k]))
             if self.temps[k][hottest] > self.machine.coastdown.max_temperature:
+                limit = self.machine.coastdown.max_temperature - 273.15
                 return "thermal_runaway", (
-                    f"{plane.name}: the {NODE_NAMES[hottest].replace('_', ' ')} reached "
-                    f"{self.temps[k][hottest] - 273.15:.0f} degC at t = {t:.2f} s, above coastdown.max_temperature = "
-                    f"{self.machine.coastdown.max_temperature - 273.15:.0f} degC")
+                    f"{plane.name}: the {NODE_NAMES[hottest].replace('_', ' ')} passed coastdown.max_temperature = "
+                    f"{limit:g} degC at t = {t:.2f} s")
             if s <= 0.0:
                 return "radial_clearance_closed", (
                     f"{plane.name}: thermal growth closed the journal/race clearance at t = {t:.2f} s: the journal "
@@ -579,6 +580,34 @@ def shortest_coastdown(machine: Machine) -> float:
     return 2.0 * machine.simulation.output_step * (1.0 - 1e-9)
 
 
+def _race_speeds(session) -> list[float]:
+    """Each plane's race speed in the session's state [rad/s]."""
+    return [float(session.y[cm.N_ROTOR + k * cm.N_PLANE + cm.ROMEGA]) for k in range(len(session.machine.planes))]
+
+
+def _check_output_step(machine: Machine) -> None:
+    """Refuse a drop record too coarse for the drop's fatigue count, before anything runs.
+
+    The count follows each ball over its raceway from sample to sample, so a ball may move at most half the
+    ball spacing pi / Z per output step (:func:`auxbearing.analysis.life.drop_damage`). The faster of the two
+    tracks is the inner raceway's, which passes under the balls at omega_r (1 + gamma) / 2 with the outer ring
+    fixed (the inner race's ball-pass frequency, Harris & Kotzalas, Rolling Bearing Analysis, 5th ed., 2007,
+    Sec. 8.2; the cage turns at omega_r (1 - gamma) / 2), the race at most at the rotor's speed (rolling on a
+    journal smaller than its bore).
+    """
+    step = machine.simulation.output_step
+    spin = abs(machine.rotor.speed)
+    for plane in machine.planes:
+        b = plane.bearing
+        gamma = b.ball_diameter * math.cos(b.contact_angle) / b.pitch_diameter
+        passing = spin * (1.0 + gamma) / 2.0
+        if passing * step > math.pi / b.ball_count:
+            longest = math.pi / b.ball_count / passing
+            raise InputError(f"drop.output_step = {step * 1e6:g} us: too coarse for the fatigue count of "
+                             f"{plane.name}: at {spin * 30.0 / math.pi:.0f} rpm its balls move more than half their "
+                             f"spacing per sample; use {longest * 1e6:.0f} us or less")
+
+
 def shortest_coastdown_rule(machine: Machine) -> str:
     """The rule :func:`shortest_coastdown` sets, as an error says it."""
     return (f"must be at least {2e6 * machine.simulation.output_step:g} us (two of the drop's output steps, the "
@@ -596,7 +625,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     until_stop : bool
         Go on until the rotor turns slower than ``coastdown.stop_speed`` (at most ``coastdown.max_time``).
     duration : float or str, optional
-        Simulated time (s, or a string with a unit) instead of running to standstill.
+        Simulated time (s, or a string with a unit) instead of running to standstill: given, it replaces
+        ``until_stop`` (the run still ends at standstill, if it comes first).
     mode : {"auto", "full"}
         "auto" hands settled stretches to the reduced model; "full" keeps full dynamics throughout
         (for checking the reduced model; slow for long coast-downs).
@@ -606,15 +636,26 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     if mode not in ("auto", "full"):
         raise InputError.for_field("mode", mode, "must be 'auto' or 'full'")
     machine = as_machine(machine)
+    _check_output_step(machine)
     coast = machine.coastdown
+    if not isinstance(until_stop, bool):  # 'no' is a true value to Python, not to the person who wrote it
+        raise InputError.for_field("until_stop", until_stop, "must be True or False")
     if duration is not None:
         given = duration
         duration = simulated_time(duration)
         if duration < shortest_coastdown(machine):
             raise InputError.for_field("duration", given, shortest_coastdown_rule(machine))
+        until_stop = False  # a duration replaces the run to standstill, in the API as on the command line
     elif not until_stop:
-        raise InputError.for_field("until_stop", False, "needs a duration (or run to standstill)")
+        raise InputError.for_field("until_stop", until_stop, "needs a duration (or run to standstill)")
     t_end = coast.max_time if (until_stop and duration is None) else float(duration or coast.max_time)
+    if duration is None and t_end < shortest_coastdown(machine):
+        from auxbearing.common.params import display_value
+        from auxbearing.machine.params import COASTDOWN
+
+        row = next(p for p in COASTDOWN if p.key == "max_time")
+        raise InputError.for_field("coastdown.max_time", display_value(row, t_end),
+                                   shortest_coastdown_rule(machine))
     wall_start = time.perf_counter()
     drop_length = min(machine.simulation.duration, t_end)
     run = integrate_machine(machine, drop_length, None, None)
@@ -703,6 +744,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         # a window holds at least one closed whirl window, which its states are judged on
         length = min(max(coast.check_window, session.window) * window_scale, t_end - session.t)
         omega_start = float(session.y[cm.OMEGA])
+        races_start = _race_speeds(session)
         status, watch, ledger = session.full(length)
         counts["windows"] += 1
         full_time += length
@@ -721,9 +763,14 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         omega_mean = 0.5 * (omega_start + float(session.y[cm.OMEGA]))
         windows = _window_planes(machine, watch, powers)
         backward.window(windows, session.t, length)
+        races_end = _race_speeds(session)
         for k, w in enumerate(windows):
-            revs = abs(w.race_speed) * length / (2.0 * math.pi)
-            overrolling[k].append((revs, w.load))
+            if w.whirl_classes:
+                overrolling[k].append((abs(w.race_speed) * length / (2.0 * math.pi), w.load))
+            else:  # a last window shorter than a whirl window closed none: its race still turned, under the
+                # load of the window before it (or the plane's share of the weight after the drop)
+                revs = 0.5 * (abs(races_start[k]) + abs(races_end[k])) * length / (2.0 * math.pi)
+                overrolling[k].append((revs, overrolling[k][-1][1] if overrolling[k] else _static_share(machine, k)))
         if ending is not None and ending.left(windows):
             ending = None
         verdict, reason = limits.update(temps, session.t)
@@ -820,7 +867,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
 def _partial_life_note(verdict: str, simulated: float) -> str:
     """What a life counted over a coast-down that did not reach standstill covers."""
     why = "run for a duration" if verdict == OK else f"stopped: {verdict.replace('_', ' ')}"
-    return (f"counted over the first {simulated:.1f} s only ({why}, before standstill): the damage per drop is a lower "
+    return (f"counted over the first {simulated:.3g} s only ({why}, before standstill): the damage per drop is a lower "
             "bound and the drops to failure an upper bound")
 
 
@@ -1006,11 +1053,13 @@ def _summary(machine, drop, session, limits, lives, verdict, reason, stopped_at,
                 "dent_assumption": life["dent_assumption"],
                 "governing": life["governing"]["limit"], "allowed_drops": life["governing"]["allowed_drops"],
                 "drops_margin": life["governing"].get("margin")}
+        ran = life is not None  # a drop that did not finish started no coast-down: no heat, no clearance to show
         planes.append({
             "name": plane.name, "bearing": plane.unit.name,
-            "max_temperature_C": {name: float(limits.max_temps[k][i] - 273.15) for i, name in enumerate(NODE_NAMES)},
-            "min_radial_clearance_um": limits.min_radial[k] * 1e6,
-            "min_internal_clearance_um": limits.min_internal[k] * 1e6,
+            "max_temperature_C": {name: float(limits.max_temps[k][i] - 273.15) for i, name in enumerate(NODE_NAMES)}
+            if ran else None,
+            "min_radial_clearance_um": limits.min_radial[k] * 1e6 if ran else None,
+            "min_internal_clearance_um": limits.min_internal[k] * 1e6 if ran else None,
             **figures, "required_drops": machine.life.required_drops,
             "dynamic_load_rating_N": dynamic_load_rating(plane.unit),
             "peak_contact_force_N": drop.summary["planes"][k]["peak_contact_force_N"],

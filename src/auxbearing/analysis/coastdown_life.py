@@ -34,12 +34,13 @@ from auxbearing.analysis.drop import plane_ball_arrays
 from auxbearing.analysis.life import dent_per_drop, drop_damage, dynamic_load_rating, governing
 from auxbearing.core import fatigue as cf
 
-#: Equivalent-load factors by bearing type (ISO 281:2007 6.2; four-point and angular contact as the makers
-#: give them, :mod:`auxbearing.core.fatigue`); a deep-groove bearing is taken as radially loaded (X = 1, Y = 0).
-_RADIAL_ONLY = (math.inf, 1.0, 0.0, 1.0, 0.0)
 
+def _factors(bearing, axial: float = 0.0) -> tuple:
+    """Equivalent-load factors (e, X1, Y1, X2, Y2) by bearing type (ISO 281:2007 6.2).
 
-def _factors(bearing) -> tuple:
+    Four-point and angular contact as the makers give them, a deep-groove bearing by ISO 281 Table 3 at its
+    f0 Fa / C0 (:mod:`auxbearing.core.fatigue`).
+    """
     row = getattr(bearing, "row", None)
     if row is not None:  # a matched pair: DB/DF as a double row, DT as its rows
         table = cf.ANGULAR_CONTACT_FACTORS if bearing.arrangement == "DT" else cf.ANGULAR_CONTACT_PAIR_FACTORS
@@ -51,12 +52,16 @@ def _factors(bearing) -> tuple:
         angles = sorted(cf.ANGULAR_CONTACT_FACTORS)
         nearest = min(angles, key=lambda a: abs(a - math.degrees(bearing.contact_angle)))
         return cf.ANGULAR_CONTACT_FACTORS[nearest]
-    return _RADIAL_ONLY
+    # deep groove: the thrust it carries loads its balls at an angle the table's e and Y follow (ISO 281 Table 3)
+    from auxbearing.bearings.ratings import iso76_f0, static_load_rating
+
+    f0 = iso76_f0(bearing.ball_diameter / bearing.pitch_diameter)
+    return cf.deep_groove_factors(f0 * abs(axial) / static_load_rating(bearing))
 
 
 def equivalent_load(bearing, radial: float, axial: float) -> float:
     """ISO 281 dynamic equivalent load P = X Fr + Y Fa [N] of a bearing type or a matched pair."""
-    return float(cf.equivalent_dynamic_load(abs(radial), abs(axial), _factors(bearing)))
+    return float(cf.equivalent_dynamic_load(abs(radial), abs(axial), _factors(bearing, axial)))
 
 
 def _drop_fatigue(plane, drop_ds: xr.Dataset, k: int) -> dict:
@@ -103,9 +108,13 @@ def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolli
         fatigue = _drop_fatigue(plane, drop_ds, k)
         out["drop_damage"] = float(fatigue["damage"])
         out["worst_contact"] = fatigue["worst_contact"]
-    else:  # a drop too long to keep its ball arrays: count it as the coast-down does
+    else:  # a drop too long to keep its ball arrays: count it as the coast-down counts a window
         fatigue = None
-        out["drop_damage"] = 0.0
+        revolutions, load = _drop_overrolling(plane, drop_ds, k)
+        out["drop_damage"] = (revolutions / (float(cf.rating_life(dynamic_load_rating(plane.unit), load)) * 1e6)
+                              if load > 0.0 and revolutions > 0.0 else 0.0)
+        out["drop_damage_method"] = ("over-rolling at the drop's mean load (its ball stresses were too many to keep): "
+                                     "the ISO 281 rating life, as for the coast-down's windows")
     rating = dynamic_load_rating(plane.unit)
     coast = 0.0
     for revolutions, load in overrolling:
@@ -124,6 +133,27 @@ def plane_life(machine, k: int, drop_ds: xr.Dataset, drop_plane: dict, overrolli
     out["governing"] = governing(out["drops_to_failure"], out["drops_to_dent_limit"], machine.life.required_drops)
     out["fatigue"] = fatigue
     return out
+
+
+def _drop_overrolling(plane, drop_ds: xr.Dataset, k: int) -> tuple[float, float]:
+    """Race revolutions of the drop and its ISO 281 equivalent load [N], as a coast-down window is counted.
+
+    The radial part is the mean of the ball set's varying reaction weighted by the revolutions,
+    F_m = (integral of F^3 dN / N)^(1/3) (Mott, Machine Elements in Mechanical Design, 4th ed., 2004,
+    Eq. 14-11), the axial part the mean thrust on the balls.
+    """
+    t = drop_ds.time.values
+    turns = np.abs(drop_ds.race_speed.isel(plane=k).values) / (2.0 * math.pi)
+    radial = np.hypot(drop_ds.ball_force_x.isel(plane=k).values, drop_ds.ball_force_y.isel(plane=k).values)
+    axial = np.abs(drop_ds.ball_force_axial.isel(plane=k).values)
+    dn = 0.5 * (turns[1:] + turns[:-1]) * np.diff(t)
+    revolutions = float(dn.sum())
+    if revolutions <= 0.0:
+        return 0.0, 0.0
+    f3 = 0.5 * (radial[1:] ** 3 + radial[:-1] ** 3)
+    mean_radial = float((f3 * dn).sum() / revolutions) ** (1.0 / 3.0)
+    mean_axial = float((0.5 * (axial[1:] + axial[:-1]) * dn).sum() / revolutions)
+    return revolutions, equivalent_load(plane.unit, mean_radial, mean_axial)
 
 
 def cycles_of_worst_contact(life: dict) -> dict | None:

@@ -196,11 +196,22 @@ def as_machine(machine) -> Machine:
     return read_machine(machine)
 
 
+#: The longest simulated time a run takes [s], as the command line's --duration (about 11.6 days).
+LONGEST_RUN = 1e6
+
+
 def simulated_time(value, field: str = "duration") -> float:
-    """A simulated time from a number (s) or a string with a unit ("50 ms") [s]; positive and finite."""
+    """A simulated time from a number (s) or a string with a unit ("50 ms") [s], in (0, :data:`LONGEST_RUN`]."""
+    if isinstance(value, str):
+        try:  # a quoted number has no unit: "0.2" may be ms or s to whoever wrote it
+            float(value.strip())
+        except ValueError:
+            pass
+        else:
+            raise InputError.for_field(field, value, f"needs a unit, e.g. '{value.strip()} s'")
     seconds = convert(field, value, "time")
-    if not (math.isfinite(seconds) and seconds > 0.0):
-        raise InputError.for_field(field, value, "must be a positive, finite time")
+    if not (math.isfinite(seconds) and 0.0 < seconds <= LONGEST_RUN):
+        raise InputError.for_field(field, value, f"must lie in (0, {LONGEST_RUN:g}] s")
     return seconds
 
 

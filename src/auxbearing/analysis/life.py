@@ -40,6 +40,7 @@ import math
 import numpy as np
 
 from auxbearing.bearings.geometry import BearingGeometry
+from auxbearing.common.errors import InputError
 from auxbearing.core import fatigue as cf
 from auxbearing.core.hertz import ball_raceway_curvature, ellipticity, stress_coefficient
 from auxbearing.machine.params import DENT_ACCUMULATION
@@ -383,6 +384,14 @@ def dent_per_drop(peak_load, bearing: BearingGeometry, accumulation: str = "same
     """
     if accumulation not in DENT_ACCUMULATION:
         raise ValueError(f"accumulation = {accumulation!r}: must be one of {', '.join(DENT_ACCUMULATION)}")
+    if isinstance(bearing, str):  # a catalogue name, as dynamic_load_rating takes it
+        from auxbearing.bearings.catalogue import get_bearing
+
+        bearing = get_bearing(bearing)
+    if isinstance(peak_load, str):  # "1 kN", as everywhere in the API
+        from auxbearing.common.params import convert
+
+        peak_load = convert("peak_load", peak_load, "force")
     loads = np.broadcast_to(np.asarray(peak_load, dtype=float), (2,))
     if np.any(~np.isfinite(loads)) or np.any(loads < 0.0):
         raise ValueError(f"peak_load = {peak_load!r}: must be finite and >= 0 N")
@@ -429,11 +438,21 @@ def governing(fatigue, dent, required_drops=None) -> dict:
     >>> g["limit"], g["allowed_drops"], g["margin"], g["ok"]
     ('dent', 800.0, 3.0, True)
     """
-    n_fatigue = float(fatigue["drops_to_failure"] if isinstance(fatigue, dict) else fatigue)
-    n_dent = float(dent["drops_to_dent_limit"] if isinstance(dent, dict) else dent)
+    counts = []
+    for name, value, key in (("fatigue", fatigue, "drops_to_failure"), ("dent", dent, "drops_to_dent_limit")):
+        value = value[key] if isinstance(value, dict) else value
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not value >= 0.0:
+            raise InputError.for_field(name, value, "must be a number of drops >= 0 (inf where nothing limits)")
+        counts.append(float(value))
+    n_fatigue, n_dent = counts
+    if required_drops is not None and (isinstance(required_drops, bool)
+                                       or not isinstance(required_drops, (int, float, np.floating))
+                                       or not 0.0 < required_drops < math.inf):
+        raise InputError.for_field("required_drops", required_drops, "must be a finite number of drops > 0")
     allowed = min(n_fatigue, n_dent)
-    out = {"limit": "fatigue" if n_fatigue <= n_dent else "dent", "allowed_drops": allowed,
-           "fatigue_drops": n_fatigue, "dent_drops": n_dent}
+    # neither limits a plane that carries no load in the drop (an upper plane of a vertical machine, say)
+    limit = "none" if math.isinf(allowed) else "fatigue" if n_fatigue <= n_dent else "dent"
+    out = {"limit": limit, "allowed_drops": allowed, "fatigue_drops": n_fatigue, "dent_drops": n_dent}
     if required_drops is not None:
         out.update(required_drops=float(required_drops), margin=allowed / float(required_drops) - 1.0,
                    ok=bool(allowed >= required_drops))

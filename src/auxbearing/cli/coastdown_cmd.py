@@ -6,6 +6,7 @@ Heavy libraries are imported inside the command, so ``--help`` answers at once.
 from __future__ import annotations
 
 import contextlib
+import math
 from pathlib import Path
 
 import click
@@ -15,13 +16,21 @@ from auxbearing.cli.drop_checks import MAX_BALL_CONTACTS
 from auxbearing.common.errors import InputError
 
 
+def _given_on_command_line(name: str) -> bool:
+    """Whether the user typed the option (not its default)."""
+    from click.core import ParameterSource
+
+    return click.get_current_context().get_parameter_source(name) == ParameterSource.COMMANDLINE
+
+
 @click.command("coastdown")
 @click.option("--machine", "machine_spec", required=True, metavar="FILE|NAME",
               help="A machine TOML file or an example machine (`auxbearing machines`).")
 @click.option("--until-stop/--duration-only", "until_stop", default=True, show_default=True,
               help="Run to standstill (at most the file's coastdown.max_time), or only for --duration.")
 @click.option("--duration", default=None, metavar="TIME",
-              help="Simulated time instead of running to standstill (plain numbers in s).")
+              help="Simulated time instead of running to standstill (plain numbers in s); it stops at standstill "
+                   "too, and may exceed the file's coastdown.max_time, which bounds the run to standstill.")
 @click.option("--mode", type=click.Choice(["auto", "full"]), default="auto", show_default=True,
               help="auto: settled stretches go to the reduced model; full: full dynamics throughout (slow).")
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
@@ -30,7 +39,8 @@ from auxbearing.common.errors import InputError
                    "and the figures into this folder.")
 @click.option("--max-ball-contacts", default=MAX_BALL_CONTACTS, show_default=True, type=click.IntRange(min=1),
               metavar="N",
-              help="Budget: most ball contact pairs (balls x pairs) per touchdown plane; every step evaluates each.")
+              help="Budget: most ball contact pairs (balls x pairs x rows) per touchdown plane; every step evaluates "
+                   "each.")
 @json_option()
 @click.option("--quiet", is_flag=True, help="No progress output.")
 def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_ball_contacts, as_json, quiet):
@@ -59,6 +69,8 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     warn(*stiffness_warnings(machine, machine.simulation.duration, f"--machine = {machine_spec!r}: "))
     warn(*plausibility(machine, machine_input_names(machine_spec)))
     seconds = None
+    if duration is not None and until_stop and _given_on_command_line("until_stop"):
+        raise InputError.for_field("--until-stop", "given", f"contradicts --duration {duration}: give one of them")
     if duration is not None:
         seconds = to_si("--duration", duration, "time", "s")
         if not 0.0 < seconds <= 1e6:
@@ -100,13 +112,16 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
         table.add_column(plane["name"], justify="right")
 
     def shown(fmt, value):  # a clearance that moved by -1e-9 um is "0.00", not "-0.00"
+        if isinstance(value, float) and math.isinf(value):  # a plane the drop left unloaded: nothing limits it
+            return "no limit"
         text = fmt.format(value)
         return text[1:] if text.startswith("-") and isinstance(value, float) and float(text) == 0.0 else text
 
     def row(label, unit, fmt, key):
         table.add_row(label, unit, *("-" if p.get(key) is None else shown(fmt, p[key]) for p in summary["planes"]))
 
-    table.add_row("Hottest part", "°C", *(f"{max(p['max_temperature_C'].values()):.1f}" for p in summary["planes"]))
+    table.add_row("Hottest part", "°C", *("-" if p["max_temperature_C"] is None else
+                                          f"{max(p['max_temperature_C'].values()):.1f}" for p in summary["planes"]))
     row("Smallest journal/race clearance", "µm", "{:.1f}", "min_radial_clearance_um")
     row("Smallest internal clearance", "µm", "{:.2f}", "min_internal_clearance_um")
     row("Fatigue damage per drop", "-", "{:.3g}", "damage_per_drop")
@@ -119,7 +134,7 @@ def coastdown_command(machine_spec, until_stop, duration, mode, out_dir, max_bal
     stop = summary["coastdown_time_s"]
     console.print(f"{'standstill after ' + format(stop, '.1f') + ' s' if stop is not None else 'not at standstill'}"
                   f"; simulated {summary['simulated_s']:.3g} s in {summary['wall_time_s']:.1f} s "
-                  f"({summary['full_dynamics_s']:.2f} s of full dynamics); energy balance error "
+                  f"({summary['full_dynamics_s']:.3g} s of full dynamics); energy balance error "
                   f"{summary['energy_balance_error']:.1e}; required drops {summary['required_drops']:g} "
                   f"({summary['required_drops_source']})", highlight=False)
     from auxbearing.analysis.coastdown import rattle_note, tail_note

@@ -20,11 +20,12 @@ def check_ball_contacts(machine, budget: int, blame: str) -> None:
     """Refuse a plane whose ball set has more contact pairs than the budget (checked before any step)."""
     for plane in machine.planes:
         b = plane.bearing
-        pairs = b.ball_count * b.pairs_per_ball
+        pairs = b.ball_count * b.pairs_per_ball * plane.rows  # a matched pair's rows each carry their balls
         if pairs > budget:
-            raise InputError(f"{blame}: {plane.name} has {b.ball_count} balls x {b.pairs_per_ball} contact pairs = "
-                             f"{pairs} contacts, each evaluated at every step: beyond the budget --max-ball-contacts "
-                             f"{budget}; raise --max-ball-contacts to run it anyway")
+            rows = f" x {plane.rows} rows" if plane.rows > 1 else ""
+            raise InputError(f"{blame}: {plane.name} has {b.ball_count} balls x {b.pairs_per_ball} contact pairs"
+                             f"{rows} = {pairs} contacts, each evaluated at every step: beyond the budget "
+                             f"--max-ball-contacts {budget}; raise --max-ball-contacts to run it anyway")
 
 
 def check_budget(machine, duration: float, blame: str, raise_with: str) -> None:

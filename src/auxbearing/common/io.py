@@ -100,6 +100,8 @@ def _checked_text(text: str, encoding: str) -> str:
 
 def existing_file(path: str | Path, field: str = "file") -> Path:
     """``path`` as a Path when it is a file; otherwise a one-line error naming ``field``."""
+    if isinstance(path, str) and not path.strip():  # Path("") is ".", the current folder
+        raise InputError.for_field(field, path, "is empty; give a file")
     path = Path(path)
     if path.is_dir():
         raise InputError.for_field(field, str(path), "is a folder, not a file")

@@ -114,7 +114,15 @@ def parse_quantity(field: str, value: object, dimension: str, default_unit: str 
     return quantity
 
 
+#: Text pint would read otherwise than a person meant: a decimal comma or a thousands separator ("1,5" is 15 to
+#: pint), and numbers side by side ("2 3 s", "1 000 s"), which pint multiplies.
+_AMBIGUOUS = re.compile(r",|\d\s+[-+]?\d[\d.]*(?:[eE][-+]?\d+)?(?=\s|$|[A-Za-z])")
+
+
 def _parse_string(field: str, text: str, dimension: str, default_unit: str | None) -> pint.Quantity:
+    if _AMBIGUOUS.search(text):
+        raise InputError.for_field(field, text, "one number with a decimal point and its unit, such as "
+                                                f"'{_example_value(dimension)}' (no commas, no spaces inside it)")
     try:
         parsed = ureg.Quantity(text.strip())
     except pint.OffsetUnitCalculusError:

@@ -76,6 +76,30 @@ ANGULAR_CONTACT_PAIR_FACTORS = {25: (0.68, 1.0, 0.92, 0.67, 1.41), 30: (0.80, 1.
                                 40: (1.14, 1.0, 0.55, 0.57, 0.93)}
 
 
+#: ISO 281:2007 Table 3, single-row radial deep-groove ball bearings: f0 Fa / C0, then e and Y for Fa / Fr > e
+#: (X = 0.56 there; X = 1, Y = 0 at or below e). The same table stands in the makers' catalogues (SKF, NSK) beside
+#: their deep-groove bearings. Between its rows linear interpolation, as ISO 281 allows; outside it the end rows.
+DEEP_GROOVE_RELATIVE_AXIAL = (0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89)
+DEEP_GROOVE_E = (0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44)
+DEEP_GROOVE_Y = (2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00)
+
+
+def deep_groove_factors(relative_axial: float) -> tuple[float, float, float, float, float]:
+    """(e, X1, Y1, X2, Y2) of a single-row deep-groove ball bearing at f0 Fa / C0 (ISO 281:2007 Table 3).
+
+    Examples
+    --------
+    >>> [round(v, 3) for v in deep_groove_factors(0.068)]   # below the table: its first row
+    [0.19, 1.0, 0.0, 0.56, 2.3]
+    >>> round(deep_groove_factors(0.5)[4], 3)                # between 0.345 (1.99) and 0.689 (1.71)
+    1.864
+    """
+    x = float(np.clip(relative_axial, DEEP_GROOVE_RELATIVE_AXIAL[0], DEEP_GROOVE_RELATIVE_AXIAL[-1]))
+    e = float(np.interp(x, DEEP_GROOVE_RELATIVE_AXIAL, DEEP_GROOVE_E))
+    y = float(np.interp(x, DEEP_GROOVE_RELATIVE_AXIAL, DEEP_GROOVE_Y))
+    return e, 1.0, 0.0, 0.56, y
+
+
 def iso281_fc(gamma):
     """ISO 281:2007 Table 2 factor f_c [-] at gamma = D_w cos(alpha)/D_pw, linear interpolation.
 

@@ -38,6 +38,9 @@ def machine_document(spec: str | Path) -> tuple[dict, str, Path | None]:
         # the catalogue's folder, for the files a catalogue machine names (an elastic rotor's matrices)
         folder = resources.files("auxbearing.catalog").joinpath("machines")
         return tomllib.loads(_catalogue_files()[text]), text, Path(str(folder))
+    if not text.strip():  # Path("") is the current folder
+        raise InputError.for_field("machine", text, "is empty; give a machine file or a catalogue machine ("
+                                   + ", ".join(machine_names()) + ")")
     path = Path(text)
     if not path.exists():
         raise InputError.for_field("machine", text, "neither a file nor a catalogue machine ("

@@ -50,6 +50,8 @@ def _tightened(machine, coastdown: bool):
 def _coastdown_quantity(name: str, summary: dict, history, touchdowns) -> float | None:
     """The governing coast-down quantity of criterion ``name`` in a run (``touchdowns``: the machine's planes)."""
     planes = summary["planes"]
+    if any(p["max_temperature_C"] is None for p in planes):  # its drop did not finish: no coast-down ran
+        return None
     if name == "peak bearing temperature":
         return max(max(p["max_temperature_C"].values()) for p in planes)
     if name == "preload of a closing internal clearance":

@@ -56,7 +56,13 @@ def judge(cases: Cases, criteria: dict, final: bool = False) -> list[Criterion]:
                                range_origin))
     out.append(_sustained_whirl(cases))
     coast = cases.coastdown.summary if cases.coastdown is not None else None
-    if coast is not None:
+    if coast is not None and any(p["max_temperature_C"] is None for p in coast["planes"]):
+        # its drop did not finish: the figures of a coast-down that never started are no finding
+        why = f"the coast-down's own drop ended {coast['drop_verdict'].replace('_', ' ')}: no coast-down ran"
+        for name in ("peak bearing temperature", "preload of a closing internal clearance",
+                     "drops to failure (fatigue or dent)"):
+            out.append(not_checked(name, why, ""))
+    elif coast is not None:
         out.append(_peak_temperature(cases, criteria))
         from auxbearing.analysis.coastdown import rest_stress
 

@@ -83,8 +83,9 @@ def _n(value, fmt: str) -> str:
 def _coastdown_rows(cases: Cases) -> list[list]:
     if cases.coastdown is None:
         return []
-    return [[p["name"], f"{max(p['max_temperature_C'].values()):.1f}", f"{p['min_radial_clearance_um']:.1f}",
-             f"{p['min_internal_clearance_um']:.2f}", _n(p["damage_per_drop"], "{:.3g}"),
+    return [[p["name"], "-" if p["max_temperature_C"] is None else f"{max(p['max_temperature_C'].values()):.1f}",
+             _n(p["min_radial_clearance_um"], "{:.1f}"),
+             _n(p["min_internal_clearance_um"], "{:.2f}"), _n(p["damage_per_drop"], "{:.3g}"),
              _n(p["drops_to_failure"], "{:.3g}"), _n(p["drops_to_dent_limit"], "{:.3g}"), p["governing"] or "-"]
             for p in cases.coastdown.summary["planes"]]
 
@@ -102,8 +103,10 @@ def _campaign_rows(stats: dict | None, spreads: list | None = None) -> tuple[lis
                        ("p_out_of_range", "probability of leaving the model's range"),
                        ("p_s0_below_required", "probability of s0 below the required value")):
         p = stats[key]
-        value = f"{p['value']:.3f}" if p["trials"] else "-"  # no run to count
-        rows.append([label, value, f"{p['low']:.3f}-{p['high']:.3f}", f"{p['among']} ({p['trials']})"])
+        counted = p.get("trials")
+        value = "-" if counted == 0 or not math.isfinite(p["value"]) else f"{p['value']:.3f}"  # no run to count
+        rows.append([label, value, f"{p['low']:.3f}-{p['high']:.3f}",
+                     p["among"] if counted is None else f"{p['among']} ({counted})"])
     stress = stats.get("quantiles", {}).get("peak_ball_stress_MPa")
     if stress and stress.get("p95") is not None and math.isfinite(stress["p95"]):
         rows.append(["peak ball contact stress, median / 95th percentile",
