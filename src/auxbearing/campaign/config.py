@@ -114,6 +114,9 @@ class Campaign:
     required_s0: float = DEFAULT_REQUIRED_S0
     whirl_map: tuple[str, str] | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
+    #: (as written, content hash) of each file the tables name, taken when the campaign file was read: the
+    #: campaign is what the files held then, whatever happens to them while it runs
+    files: tuple[tuple[str, str], ...] = ()
 
     @property
     def runs(self) -> int:
@@ -138,7 +141,7 @@ class Campaign:
 
     def named_files(self) -> dict[str, str]:
         """The files the machine tables name (bearing files, a rotor's matrices): as written -> content hash."""
-        return {text: _file_hash(path) for text, path in _files_in(self.tables, self.base).items()}
+        return dict(self.files)
 
     def fingerprint(self) -> str:
         """A hash of :meth:`describe` but the name and folder: a store holds results of one fingerprint.
@@ -179,6 +182,11 @@ def _files_in(tables, base: str | None) -> dict[str, Path]:
 
     walk(tables)
     return found
+
+
+def named_file_hashes(tables: dict, base) -> dict[str, str]:
+    """Each file the tables name (:func:`_files_in`): as written -> a hash of its contents."""
+    return {text: _file_hash(path) for text, path in _files_in(tables, None if base is None else str(base)).items()}
 
 
 def _file_hash(path: Path) -> str:
@@ -484,4 +492,5 @@ def campaign_from_mapping(data: dict, name: str = "campaign", base: Path | None 
                     base=None if base is None else str(Path(base).resolve()), sampler=sampler, samples=samples,
                     seed=seed, analysis=analysis, inputs=inputs, batch_size=batch,
                     plane_names=tuple(p.name for p in machine.planes), second_order=second_order,
-                    required_s0=float(required), whirl_map=whirl_map, notes=tuple(notes))
+                    required_s0=float(required), whirl_map=whirl_map, notes=tuple(notes),
+                    files=tuple(sorted(named_file_hashes(tables, base).items())))
