@@ -76,25 +76,28 @@ def bearings_command(types, bore, sources, as_json):
                    "names": "as makers write them; add 'hybrid' for Si3N4 balls, 'DB'/'DF'/'DT' for a matched pair"})
         return
     from rich.console import Console
+    from rich.markup import escape
     from rich.table import Table
 
-    table = Table(title=f"Bearings ({len(rows)}): C, C0 computed [kN] (the maker's in brackets)")
+    # rich reads a lowercase [..] as a style tag and drops it ("[kN]", "[kg/m³]"): every title, header and cell
+    # goes through escape, the catalogue's names and sources too
+    table = Table(title=escape(f"Bearings ({len(rows)}): C, C0 computed [kN] (the maker's in brackets)"))
     for col in ("name", "type", "d×D×B mm", "Z × D_w mm", "C kN", "C0 kN", "geometry"):
-        table.add_column(col, no_wrap=True)
+        table.add_column(escape(col), no_wrap=True)
     short = {"deep_groove": "DG", "angular_contact": "AC", "four_point": "4P"}
     for r in rows:
         envelope = "×".join(f"{r[k]:g}" for k in ("bore_mm", "outside_diameter_mm", "width_mm") if r.get(k) is not None)
         table.add_row(
-            r["name"], f"{short[r['type']]} {r['contact_angle_deg']:g}°", envelope,
+            escape(r["name"]), f"{short[r['type']]} {r['contact_angle_deg']:g}°", envelope,
             f"{r['ball_count']} × {r['ball_diameter_mm']:.2f}",
             f"{r['C_N'] / 1e3:.1f}" + ("" if r["C_published_N"] is None else f" ({r['C_published_N'] / 1e3:g})"),
             f"{r['C0_N'] / 1e3:.1f}" + ("" if r["C0_published_N"] is None else f" ({r['C0_published_N'] / 1e3:g})"),
             "estimated" if r["estimated"] else "source")
     mats = Table(title="Materials")
     for col in ("name", "E [GPa]", "ν", "ρ [kg/m³]"):
-        mats.add_column(col, no_wrap=True)
+        mats.add_column(escape(col), no_wrap=True)
     for m in materials:
-        mats.add_row(m["name"], f"{m['elastic_modulus_GPa']:g}", f"{m['poisson_ratio']:g}",
+        mats.add_row(escape(m["name"]), f"{m['elastic_modulus_GPa']:g}", f"{m['poisson_ratio']:g}",
                      "" if m["density_kg_m3"] is None else f"{m['density_kg_m3']:g}")
     console = Console()
     console.print(table)
@@ -102,7 +105,7 @@ def bearings_command(types, bore, sources, as_json):
     if sources:
         console.print("Sources:")
         for entry in rows + materials:
-            console.print(f"  {entry['name']}: {entry['source']}", highlight=False)
+            console.print(escape(f"  {entry['name']}: {entry['source']}"), highlight=False)
 
 
 COMMANDS = [bearings_command]
