@@ -111,13 +111,13 @@ def test_bad_bearings_and_scenarios_name_the_key(amb, scenario, expected):
 
 
 def test_an_unknown_scenario_names_the_scenarios_there_are():
-    machine = _blower(amb={}, scenario=HELD)
+    machine = _blower(amb={}, scenario=HELD, axial_force="0 N")  # no thrust bearing here to carry a thrust
     with pytest.raises(InputError, match=r"^--scenario = 'nope': no such \[\[scenario\]\] in blower \(it has: held\)"):
         machine.with_scenario("nope", "--scenario")
 
 
 def test_the_drop_records_each_bearings_currents():
-    machine = _blower(amb={"ki": f"{KINT} A/(m*s)"}, scenario=HELD).with_scenario("held")
+    machine = _blower(amb={"ki": f"{KINT} A/(m*s)"}, scenario=HELD, axial_force="0 N").with_scenario("held")
     run = run_machine(machine.with_simulation(duration=0.01))
     ds = run.dataset
     assert list(ds["amb"].values) == ["drive end", "non-drive end"]

@@ -76,7 +76,9 @@ def test_a_ross_rotor_from_python_is_the_rotor_its_file_holds():
 def test_the_compressor_from_ross_drops_as_the_shipped_compressor():
     """The shipped compressor's shaft rebuilt in ROSS (examples/compressor_ross, Euler-Bernoulli elements with
     consistent rotary inertia where ours lumps it): free-free bending 390.2, 760.7, 1246.9, 2079.2 Hz against our
-    390.2, 760.6, 1246.5, 2078.9 Hz (3.3e-4 at most) and the same drop peaks to the tenth of a newton (measured)."""
+    390.2, 760.6, 1246.5, 2078.9 Hz (3.3e-4 at most). A 30 ms drop's peaks then differ by the impacts' amplification
+    of that: 1831.2 / 1121.1 N against 1831.5 / 1124.5 N (0.3 %, measured with the thrust bearing that carries the
+    process thrust; 0.08 % before it was added), so the peaks are held to 0.5 %."""
     pytest.importorskip("ross")
     from auxbearing.analysis.drop import run_machine
     from auxbearing.machine.files import read_machine
@@ -89,4 +91,4 @@ def test_the_compressor_from_ross_drops_as_the_shipped_compressor():
     assert theirs.rotor.mass == pytest.approx(ours.rotor.mass, rel=1e-9)
     peaks = [[p["peak_contact_force_N"] for p in run_machine(m, duration=0.03).summary["planes"]]
              for m in (ours, theirs)]
-    assert peaks[1] == pytest.approx(peaks[0], rel=1e-3)
+    assert peaks[1] == pytest.approx(peaks[0], rel=5e-3)

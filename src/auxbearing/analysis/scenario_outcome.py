@@ -2,8 +2,10 @@
 
 Read from a run's time series (:func:`auxbearing.analysis.drop.machine_dataset`) on its output grid, so a contact
 shorter than the output step between two samples is not seen there; the first contact is the earliest of the grid's
-and the planes' first impacts (from the observer at every step). Contacts count over the whole run: a rotor that
-its bearings let fall before the strike has touched down (``touched_before_strike``). The classes:
+and the planes' first impacts (from the observer at every step). A contact is the journal on its race or a rotor
+collar on a race face (the axial touchdown: a thrust bearing's loss lands the rotor there first;
+``first_face_contact_ms``, from the grid). Contacts count over the whole run: a rotor that its bearings let fall
+before the strike has touched down (``touched_before_strike``). The classes:
 
 * ``not struck``: the run ends before the scenario's time (``struck`` false): nothing of it was simulated;
 * ``no touchdown``: the rotor never touched a touchdown bearing;
@@ -76,6 +78,10 @@ def outcome(machine, ds, planes: list[dict]) -> dict:
     if not s.levitated or len(t) < 2:
         return out
     touching = (ds.normal_force.values > 0.0).any(axis=1)
+    # the collar pressed into a race face (its penetration positive) is a touchdown too: the axial one
+    face = (ds.axial_penetration.values > 0.0).any(axis=1) if "axial_penetration" in ds else np.zeros(t.size, bool)
+    touching = touching | face
+    out["first_face_contact_ms"] = float(t[face][0]) * 1e3 if face.any() else None
     end = float(t[-1])
     bearings = of_kind(machine.stations, "amb")
     powered = all(math.isinf(v) or (s.restore_time is not None and end >= s.time + s.restore_time)
@@ -151,3 +157,18 @@ def _saturation(s, bearings, ds, t: np.ndarray) -> list[dict]:
                     "saturated_at_end": bool(spans and spans[-1][1] >= end),
                     "first_intervals_ms": [[a * 1e3, c * 1e3] for a, c in spans[:5]]})
     return out
+
+
+def late_loads(machine, end: float) -> list[str]:
+    """A notice for each ``[[load]]`` that starts at or after the run's end ``end`` [s]: it never acts.
+
+    The same rule as a scenario's ``not struck``: nothing of it is simulated, which a summary would otherwise pass
+    over in silence. One sentence each, naming the key as the file writes it (``load.N.start``).
+    """
+    from auxbearing.common.params import display_value
+    from auxbearing.machine.stations import of_kind
+    from auxbearing.machine.stations.load import TABLE
+
+    return [f"load.{i}.start = {display_value(TABLE['start'], load.start)!r}: not applied: the run ends at "
+            f"{end * 1e3:.4g} ms, before the load '{load.name}' starts (lengthen the run or move the load into it)"
+            for i, load in enumerate(of_kind(machine.stations, "load")) if load.start >= end]

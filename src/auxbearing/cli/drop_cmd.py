@@ -321,6 +321,7 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
     from rich.table import Table
 
     from auxbearing.analysis.drop import run_machine
+    from auxbearing.analysis.scenario_outcome import late_loads
     from auxbearing.cli.common import read_machine_file
     from auxbearing.common.io import atomic_output_dir, save_dataset, save_figure, write_json
     from auxbearing.common.units import to_si
@@ -344,6 +345,7 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
     check_ball_contacts(machine, max_contacts, f"--machine = {spec!r}")
     warn(*stiffness_warnings(machine, seconds if seconds is not None else machine.simulation.duration,
                              f"--machine = {spec!r}: "))
+    warn(*late_loads(machine, seconds if seconds is not None else machine.simulation.duration))
     warn(*plausibility(machine, machine_input_names(spec)))
     with atomic_output_dir(out_dir) if out_dir is not None else contextlib.nullcontext() as tmp:
         with ProgressReporter(f"drop of {machine.name}", quiet) as progress:

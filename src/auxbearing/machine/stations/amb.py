@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import Param, by_key, display_value
+from auxbearing.common.params import Param, by_key, display_value, unknown
 from auxbearing.core import amb as kernel
 from auxbearing.machine.stations.load import text_key
 
@@ -106,7 +106,12 @@ class MagneticBearing:
 
     def as_written(self, key: str) -> object:
         """A key's value as the file wrote it, or its SI value in the key's display unit (the Python API)."""
-        return dict(self.given).get(key, display_value(TABLE[key], getattr(self, key)))
+        given = dict(self.given)
+        if key in given:
+            return given[key]
+        if key == "controller":  # no number with a unit: what describe() calls it
+            return f"state space of order {self.order}"
+        return display_value(TABLE[key], getattr(self, key))
 
     @property
     def order(self) -> int:
@@ -119,6 +124,27 @@ class MagneticBearing:
             return self.kp + self.ki / s + self.kd * s
         a, b, c, d = (np.asarray(v, float) for v in self.controller)
         return complex(c @ np.linalg.solve(s * np.eye(len(a)) - a, b) + d)
+
+    def static_gain(self) -> float:
+        """C(0), the controller's gain at rest [A/m]: kp for the PID, D - C A^-1 B for a state space.
+
+        An integrator (a pole at s = 0) makes it infinite, with the sign C(s) takes just above s = 0 (its residue's):
+        A is then singular and C is read at a real s far below the controller's own rates instead.
+        """
+        if self.controller is None:
+            return math.inf if self.ki > 0.0 else self.kp
+        a = np.asarray(self.controller[0], float)
+        try:
+            if np.linalg.cond(a) < 1e12:
+                return self.transfer(0.0).real
+        except np.linalg.LinAlgError:
+            pass
+        rates = np.abs(np.linalg.eigvals(a))
+        probe = 1e-9 * max(float(rates.max()), 1.0)
+        gain = self.transfer(probe).real
+        # C ~ r / s grows a thousandfold from 1000 probe down to probe; a C that stays put has no integrator (its
+        # singular A has a pole at 0 that the reading or the current does not see): that value is its DC gain
+        return math.copysign(math.inf, gain) if abs(gain) > 100.0 * abs(self.transfer(1e3 * probe).real) else gain
 
     def spring_and_damper(self, speed: float) -> tuple[float, float]:
         """(k, c) of the bearing with ideal sensor and amplifier [N/m, N s/m].
@@ -199,16 +225,23 @@ def read(tables) -> tuple[MagneticBearing, ...]:
     from auxbearing.machine.stations import read_tables
 
     out = []
-    controllers, axes = [], []
+    controllers, axes, written_controllers = [], [], []
     if isinstance(tables, list):  # a controller and the axis are no numbers with units: taken out first
         tables = [dict(t) if isinstance(t, dict) else t for t in tables]
         for i, t in enumerate(tables):
-            controllers.append(read_controller(t.pop("controller"), f"{KIND}.{i}.controller")
-                               if isinstance(t, dict) and "controller" in t else None)
+            if isinstance(t, dict):  # checked whole, before the text keys leave the table: every key listed
+                allowed = [*TABLE, "name", "axis", "controller"]
+                for key in t:
+                    if key not in allowed:
+                        raise unknown(f"{KIND}.{i}.{key}", t[key], key, allowed)
+            raw = t.pop("controller") if isinstance(t, dict) and "controller" in t else None
+            written_controllers.append(raw)
+            controllers.append(read_controller(raw, f"{KIND}.{i}.controller") if raw is not None else None)
             axes.append(text_key(t, "axis", f"{KIND}.{i}.", ("radial", "axial"), "radial")
                         if isinstance(t, dict) else "radial")
-    for (where, name, values, table), controller, axis in zip(read_tables(tables, KIND, TABLE, ("position",), "AMB"),
-                                                              controllers, axes, strict=True):
+    for (where, name, values, table), controller, axis, raw in zip(
+            read_tables(tables, KIND, TABLE, ("position",), "AMB"), controllers, axes, written_controllers,
+            strict=True):
         if any(b.name == name for b in out):  # an axis_loss or sensor_failure scenario names its bearing by it
             raise InputError.for_field(where + "name", name, "two [[amb]] tables of one name (a scenario names "
                                        "the bearing it fails by it)")
@@ -262,13 +295,39 @@ def read(tables) -> tuple[MagneticBearing, ...]:
                                        "max_voltage (the amplifier's voltage limits the current's rate through it)")
         written = tuple((key, value if isinstance(value, (str, int, float)) else str(value))
                         for key, value in table.items() if key in TABLE)
+        if raw is not None:  # a refusal of the statics quotes it as written
+            written += (("controller", raw if isinstance(raw, (str, dict)) else str(raw)),)
         bearing = MagneticBearing(name=name, **values, given=written)
         if controller is None and bearing.closed_loop_stiffness() <= 0.0:
             raise InputError.for_field(where + "kp", table.get("kp"), "too small to hold the rotor: kp "
                                        "current_stiffness must exceed position_stiffness "
                                        f"({bearing.position_stiffness:g} N/m)")
+        if controller is not None:
+            _check_static_stiffness(bearing, where + "controller", raw)
         out.append(bearing)
     return tuple(out)
+
+
+def _check_static_stiffness(bearing: MagneticBearing, where: str, written) -> None:
+    """Refuse a state-space controller whose static stiffness k_i C(0) - k_s is not positive.
+
+    The same rule as kp's (k_i k_p - k_s > 0) for a controller given as a transfer function or state space: at
+    s = 0 the bearing's force per displacement is k_i C(0) - k_s (:meth:`MagneticBearing.dynamic_stiffness` at
+    s = 0, the lags' gains being 1 there; Schweitzer & Maslen, Magnetic Bearings, 2009, Ch. 2). Not positive, the
+    bias flux's pull wins over the controller's at rest and the levitated rotor has no static place: it runs to a
+    pole (a DC gain below k_s / k_i, or negative: an unstable pole of C(s) flips its sign). An integrator makes
+    C(0) infinite, of the sign of its residue.
+    """
+    gain = bearing.static_gain()
+    stiffness = bearing.current_stiffness * gain - bearing.position_stiffness
+    if stiffness > 0.0:
+        return
+    said = (f"its static gain C(0) = {gain:.4g} A/m gives k_i C(0) - k_s = {stiffness:.4g} N/m"
+            if math.isfinite(gain) else "its integrator's gain is negative (C(s) falls to -inf as s -> 0)")
+    raise InputError.for_field(where, written, f"too weak to hold the rotor at rest: {said} (k_i = "
+                               f"{bearing.current_stiffness:g} N/A, k_s = {bearing.position_stiffness:g} N/m), which "
+                               "must be positive as kp's k_i k_p - k_s (the bias flux's negative stiffness pulls the "
+                               "rotor to a pole)")
 
 
 def _filtered_pid(values: dict, where: str) -> tuple:
@@ -490,10 +549,15 @@ def levitated_state(machine, modal, bearings) -> dict:
     locked = () if machine.tilt_free else (2, 3)
     for i in locked:  # the planar rotor: tilts held at zero
         a[i, :], a[:, i], a[i, i], rhs[i] = 0.0, 0.0, 1.0, 0.0
-    try:  # square and regular when the bearings hold every rigid motion
+    levitated = machine.active_scenario().levitated
+    loose, rows_scale, cols_scale = _unheld_motion(a, n)
+    if loose is None:  # square and regular: the bearings hold every rigid motion
         solution = np.linalg.solve(a, rhs)
-    except np.linalg.LinAlgError:  # a motion nothing holds (one bearing under a tilting rotor): the least-squares one
-        solution = np.linalg.lstsq(a, rhs, rcond=None)[0]
+    elif levitated:
+        _refuse_unheld(machine, modal, bearings, loose, lateral)
+    else:  # a drop from the centre only reports these statics: the least-squares ones, the loose motion left out
+        scaled = a * rows_scale[:, None] * cols_scale[None, :]
+        solution = cols_scale * np.linalg.lstsq(scaled, rows_scale * rhs, rcond=UNHELD)[0]
     q = solution[:n]
     states, extra = [], n
     for i, b in enumerate(bearings):
@@ -511,25 +575,224 @@ def levitated_state(machine, modal, bearings) -> dict:
             else:
                 per_axis += [measured, 0.0, -b.kp * measured]
         states.append(per_axis)
-    if machine.active_scenario().levitated:  # a drop from the centre only reports the statics it never reaches
+    if levitated:  # a drop from the centre only reports the statics it never reaches
         _check_levitation(machine, bearings, states)
+        _check_axial_load(machine, axial, gravity)
+        _check_offsets(machine, modal, bearings, q[:lateral])
     return {"q": q[:lateral], "z": float(q[lateral]) if axial else 0.0, "states": states,
             "offsets": [abs(float(q[lateral])) if b.axial else float(np.hypot(*(act @ q for act, _ in axes(b, i))))
                         for i, b in enumerate(bearings)]}
 
 
 def check_levitation(machine) -> None:
-    """Refuse magnetic bearings too weak to levitate the rotor that any of the machine's scenarios starts from.
+    """Refuse magnetic bearings that cannot levitate the rotor that any of the machine's scenarios starts from.
 
-    A whole-file check (:func:`_check_levitation` on the levitated statics, which do not depend on the scenario),
-    for :func:`auxbearing.machine.combinations.check_combinations`; a run starting levitated makes it on its own.
+    A whole-file check (the levitated statics' checks in :func:`levitated_state`, which do not depend on the
+    scenario), for :func:`auxbearing.machine.combinations.check_combinations`; a run starting levitated makes it on
+    its own. The air gaps against the touchdown clearances (:func:`_check_air_gaps`) with any scenario.
     """
     from auxbearing.machine.stations import of_kind
 
     bearings = of_kind(machine.stations, KIND)
+    if not bearings:
+        return
+    _check_air_gaps(machine, bearings)
     start = next((s for s in machine.scenarios if s.levitated), None)
-    if bearings and start is not None:
+    if start is not None:
         levitated_state(machine.with_scenario(start.name), machine.modal(), bearings)
+
+
+#: Ratio of the smallest to the largest singular value of the (equilibrated) statics below which a motion counts as
+#: held by nothing: well above the rounding of a singular matrix's (1e-16 times its size) and far below what a
+#: real pair of bearings gives (their stiffnesses within a few decades of each other and of the load's lever).
+UNHELD = 1e-10
+#: The rotor's coordinates in the statics, for a refusal that says which motion nothing holds.
+MOTIONS = ("translation along x", "translation along y", "tilt about x", "tilt about y")
+
+
+def _unheld_motion(a: np.ndarray, n: int) -> tuple[np.ndarray | None, np.ndarray, np.ndarray]:
+    """The rotor's motion (its n coordinates) that the statics' matrix ``a`` does not hold, or None; the scales.
+
+    The matrix mixes stiffnesses [N/m], lever arms and controller rows of other units, so its rows and columns are
+    first brought to one scale (Ruiz's equilibration, a few sweeps); a singular value below :data:`UNHELD` of the
+    largest then is a motion with no restoring force (Golub & Van Loan, Matrix Computations, 4th ed., 2013,
+    Sec. 2.4 and 3.5.2: the numerical rank). Its right singular vector, scaled back, is that motion. The scales
+    r, c make diag(r) a diag(c) the equilibrated matrix.
+    """
+    rows, cols = np.ones(a.shape[0]), np.ones(a.shape[1])
+    scaled = a.copy()
+    for _ in range(5):
+        r = np.sqrt(np.abs(scaled).max(axis=1))
+        c = np.sqrt(np.abs(scaled).max(axis=0))
+        r[r == 0.0], c[c == 0.0] = 1.0, 1.0
+        scaled = scaled / r[:, None] / c[None, :]
+        rows, cols = rows / r, cols / c
+    _, sigma, vt = np.linalg.svd(scaled)
+    if sigma[-1] > UNHELD * sigma[0]:
+        return None, rows, cols
+    return (vt[-1] * cols)[:n], rows, cols
+
+
+def _refuse_unheld(machine, modal, bearings, motion: np.ndarray, lateral: int) -> None:
+    """Refuse a levitated start whose magnetic bearings leave a rigid motion of the rotor free (one line).
+
+    With a motion no force restores, the statics K q = f have no solution under a load with a component along it
+    (one radial bearing under a tilting rotor: the weight's moment about the bearing), and a least-squares answer
+    is no place the rotor can hang at: it ran off to 5e12 m.
+    """
+    radial = [(i, b) for i, b in enumerate(bearings) if not b.axial]
+    reach = max([abs(b.position) for b in bearings] + [abs(p.position) for p in machine.planes] + [1e-3])
+    moves = np.abs(motion[:4]) * np.array([1.0, 1.0, reach, reach])  # a tilt by its largest sideways travel
+    bending = np.abs(motion[4:lateral])
+    which = MOTIONS[int(np.argmax(moves))] if moves.max() >= bending.max(initial=0.0) else None
+    if which is None:  # an elastic mode of (nearly) no stiffness: parts of the matrices' rotor joined by nothing
+        j = int(np.argmax(bending))
+        raise InputError.for_field("rotor.matrices", "as given", f"the rotor's elastic mode {j + 1} has "
+                                   f"{modal.frequencies[j] / (2 * math.pi):.3g} Hz, next to no stiffness, and the "
+                                   "magnetic bearings do not hold it: a levitated start has no static place (is the "
+                                   "stiffness matrix K whole, every element joined?)")
+    if not radial:
+        i, key, value = 0, "axis", "axial"
+        why = "a levitated rotor needs radial magnetic bearings too (here every [[amb]] is axial)"
+    else:
+        i = radial[-1][0]
+        # as the file wrote them: a rotor of matrices places them in its own coordinates, not from the mass centre
+        places = ", ".join(f"{KIND}.{j}.position = {b.as_written('position')!r}"
+                           + (f" (sensor_position = {b.as_written('sensor_position')!r})"
+                              if b.sensor_position is not None else "") for j, b in radial)
+        key = "position"
+        value = bearings[i].as_written(key)
+        why = (f"the radial ones are {places}: a rotor free to tilt needs radial bearings at two axial positions, "
+               "and with integral action their sensors too")
+    tips = " (the load's moment about the bearing tips the rotor)" if which.startswith("tilt") else ""
+    raise InputError.for_field(f"{KIND}.{i}.{key}", value, f"the magnetic bearings do not hold the rotor's {which}: "
+                               f"{why}, else nothing restores that motion and the levitated statics K q = f have no "
+                               f"solution{tips}, so scenario '{machine.active_scenario().name}' cannot start "
+                               "levitated")
+
+
+def _check_axial_load(machine, axial: bool, gravity: tuple) -> None:
+    """Refuse a levitated start with a steady axial load that no axial magnetic bearing carries.
+
+    The rotor moves axially (a touchdown plane catches it on a race face); a constant axial force F, the process
+    thrust plus the weight along a vertical spin axis, then accelerates it at F / m until its collar meets the
+    face, after sqrt(2 c m / |F|) for an axial clearance c: the rotor rests on its touchdown bearing from the
+    start, which is no levitation (the compressor's 300 N on 40.3 kg closes 0.25 mm in 8.2 ms).
+    """
+    if axial or not machine.axial_free:
+        return
+    r = machine.rotor
+    load = r.mass * gravity[2] + r.axial_force
+    if load == 0.0:
+        return
+    from auxbearing.machine.params import TABLES
+
+    if r.axial_force != 0.0:
+        key, value = "rotor.axial_force", display_value(TABLES["rotor"]["axial_force"], r.axial_force)
+    else:
+        key, value = "machine.orientation", machine.orientation
+    side = "+z" if load > 0.0 else "-z"
+    faces = [(p.axial_clearance, k, p.name) for k, p in enumerate(machine.planes)
+             if p.catches_axially and p.axial_direction in ("both", side)]
+    if faces:
+        clearance, k, name = min(faces)
+        lands = (f"its collar closes the {clearance * 1e3:g} mm axial clearance of touchdown.{k} ({name}) in "
+                 f"sqrt(2 c m / F) = {math.sqrt(2.0 * clearance * r.mass / abs(load)) * 1e3:.3g} ms and rests on that "
+                 "face")
+    else:
+        lands = f"nothing catches it towards {side}"
+    raise InputError.for_field(key, value, f"a levitated start needs an axial magnetic bearing to carry the steady "
+                               f"axial load {load:.4g} N along {side} (the process thrust rotor.axial_force and the "
+                               f"weight along a vertical spin axis): no [[amb]] has axis = \"axial\", so {lands} "
+                               f"before scenario '{machine.active_scenario().name}' strikes; add an axial [[amb]] "
+                               "that carries it")
+
+
+def _nearest_radial(bearings, position: float) -> int:
+    """The table index of the radial magnetic bearing nearest an axial position."""
+    return min((abs(b.position - position), i) for i, b in enumerate(bearings) if not b.axial)[1]
+
+
+def _check_offsets(machine, modal, bearings, q: np.ndarray) -> None:
+    """Refuse a levitated place (or the start offset from it) outside a touchdown plane's radial clearance.
+
+    The journal's centre at plane k is the rotor's axis there (x + a theta_y, y - a theta_x, with the elastic
+    modes' shapes), measured from the bearing's centre (its misalignment). The statics sag the rotor by its load
+    over the bearings' static stiffness (F = (k_i k_p - k_s) u for a PD law, Schweitzer & Maslen, Magnetic
+    Bearings, 2009, Ch. 2); at or past the clearance the run would start with the journal inside the race.
+    rotor.start_x / start_y move the start from that place (:func:`auxbearing.machine.pack._levitate`).
+    """
+    r = machine.rotor
+    n_modes = q.size - 4  # q: the lateral coordinates, the elastic modes' after the rigid four
+    for k, p in enumerate(machine.planes):
+        x, y = q[0] + p.position * q[3], q[1] - p.position * q[2]
+        if n_modes > 0:
+            sx, sy = modal.station_shapes(p.position, f"touchdown.{k}.position")
+            x, y = x + float(sx @ q[4:4 + n_modes]), y + float(sy @ q[4:4 + n_modes])
+        mx, my = p.misalignment
+        held = math.hypot(x - mx, y - my)
+        if held >= p.radial_clearance:
+            i = _nearest_radial(bearings, p.position)
+            b = bearings[i]
+            key = "kp" if b.controller is None or "kp" in dict(b.given) else "controller"
+            static = b.current_stiffness * b.static_gain() - b.position_stiffness
+            raise InputError.for_field(f"{KIND}.{i}.{key}", b.as_written(key), f"the levitated rotor's journal sits "
+                                       f"{held * 1e3:.3g} mm from the centre of touchdown.{k} ({p.name}), not inside "
+                                       f"its radial clearance {p.radial_clearance * 1e3:g} mm: the magnetic bearings' "
+                                       f"static stiffness (k_i C(0) - k_s, here {static:.4g} N/m) sags it into the "
+                                       "race under its load; stiffen them (kp, or ki > 0, whose sensor then reads "
+                                       "zero)")
+        started = math.hypot(x + r.start_x - mx, y + r.start_y - my)
+        if started >= p.radial_clearance:
+            from auxbearing.machine.params import TABLES
+
+            key = "start_x" if r.start_x != 0.0 else "start_y"
+            raise InputError.for_field(f"rotor.{key}", display_value(TABLES["rotor"][key], getattr(r, key)),
+                                       f"the levitated start moves the journal from its levitated place "
+                                       f"({held * 1e3:.3g} mm from the centre of touchdown.{k}, {p.name}) to "
+                                       f"{started * 1e3:.3g} mm, not inside its radial clearance "
+                                       f"{p.radial_clearance * 1e3:g} mm: with a levitated scenario rotor.start_x "
+                                       "and start_y are offsets from the levitated place")
+
+
+def _check_air_gaps(machine, bearings) -> None:
+    """Refuse a magnetic circuit whose air gap the rotor can close before a touchdown bearing stops it.
+
+    The circuit's force k (i_0 + i)^2 / (g_0 - u)^2 grows without bound as the gap g_0 - u closes (Schweitzer &
+    Maslen, Magnetic Bearings, 2009, Ch. 2); the touchdown bearings are there to keep the rotor off the poles, so
+    the rotor must meet a race before a pole: the air gap must exceed the travel the touchdown clearances allow at
+    the actuator. For a rigid rotor whose journals stay within c_j + |misalignment_j| of the axis at planes a_j,
+    the travel at station a is the least over pairs of planes of c_j |a_k - a| / L + c_k |a - a_j| / L, L = |a_k
+    - a_j| (the axis through the two planes, each at its limit: a linear programme's vertex), one plane's own
+    reach with one plane. Axially: the smallest axial clearance of a plane that catches the rotor.
+    """
+    planes = machine.planes
+    reach = [(p.position, p.radial_clearance + math.hypot(*p.misalignment)) for p in planes]
+    for i, b in enumerate(bearings):
+        if not b.circuit:
+            continue
+        if b.axial:
+            faces = [(p.axial_clearance, k) for k, p in enumerate(planes) if p.catches_axially]
+            if not faces:
+                continue
+            travel, k = min(faces)
+            where = f"the axial clearance of touchdown.{k} ({planes[k].name}), {travel * 1e3:g} mm"
+        else:
+            travel = min((c for _, c in reach), default=math.inf) if len(reach) < 2 else math.inf
+            for j, (aj, cj) in enumerate(reach):
+                for ak, ck in reach[j + 1:]:
+                    span = abs(ak - aj)
+                    if span > 0.0:
+                        travel = min(travel, (cj * abs(ak - b.position) + ck * abs(b.position - aj)) / span)
+            if not math.isfinite(travel):  # every plane at one station: the rotor pivots there, its own reach
+                travel = min(c for _, c in reach)
+            where = (f"the {travel * 1e3:.3g} mm the rotor can move at {b.position * 1e3:g} mm with its journals "
+                     "inside the touchdown clearances")
+        if b.air_gap <= travel:
+            raise InputError.for_field(f"{KIND}.{i}.air_gap", b.as_written("air_gap"), f"must exceed {where}: the "
+                                       "touchdown bearings must stop the rotor before it closes the gap, where the "
+                                       "circuit's pull k (i_0 + i)^2 / (g_0 - u)^2 grows without bound and pulls it "
+                                       "onto the pole")
 
 
 def _check_levitation(machine, bearings, states) -> None:
