@@ -64,10 +64,9 @@ def test_coastdown_of_a_drop_out_of_range_reports_no_life(tmp_path):
 
 
 @pytest.mark.parametrize("polar, rule", [
-    ("1.5 kg*m^2", "no rigid body has a polar moment above twice its transverse moment"),  # J_t is 0.2 kg m^2
     ("15 g*cm^2", "radius of gyration of 0.3873 mm against a journal radius of 19.85 mm"),  # a unit slip
 ])
-def test_a_rotor_inertia_no_body_can_have_is_warned_of(tmp_path, polar, rule):
+def test_an_unlikely_rotor_inertia_is_warned_of(tmp_path, polar, rule):
     from importlib import resources
 
     text = resources.files("auxbearing.catalog").joinpath("machines/blower.toml").read_text()

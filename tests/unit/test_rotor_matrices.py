@@ -44,9 +44,9 @@ def test_mass_and_inertias_come_from_the_matrices(tmp_path):
     ({"left": "-0.25 m"}, ("touchdown.0.position", "-250 mm", "must sit on a node")),
     ({"K": None}, ("rotor.matrices", "has no array 'K'")),
     ({"nodes": np.zeros(7)}, ("rotor.matrices", "strictly increasing")),
-    ({"M": np.eye(3)}, ("rotor.matrices.mass", "28 x 28")),
-    ({"K": np.eye(28)}, ("rotor.matrices.stiffness", "ties the rotor to the ground")),
-    ({"G": np.eye(28)}, ("rotor.matrices.gyroscopic", "skew-symmetric")),
+    ({"M": np.eye(3)}, ("rotor.matrices = 'shaft.npz'", "its array 'M' has shape (3, 3)", "28 x 28")),
+    ({"K": np.eye(28)}, ("rotor.matrices = 'shaft.npz'", "its array 'K' ties the rotor to the ground")),
+    ({"G": np.eye(28)}, ("rotor.matrices = 'shaft.npz'", "its array 'G' must be skew-symmetric")),
     ({"extra": 'max_mode_frequency = "-1 Hz"'}, ("rotor.max_mode_frequency",)),
 ])
 def test_bad_matrices_are_one_line_naming_the_key(tmp_path, kwargs, names):

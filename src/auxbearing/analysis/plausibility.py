@@ -48,29 +48,43 @@ def plausibility(machine, typed: dict) -> list[str]:
                              f"{ratio:.3g} times Palmgren's constant of a steel line contact as long as the race "
                              f"({length * 1e3:g} mm: {steel:.4g}); no journal and race material is that far from "
                              f"steel (allowed: within a factor {LINE_STIFFNESS_SPAN:g})")
-    notes += inertia_notes(rotor, machine.planes, typed["polar_inertia"])
+    name = typed["polar_inertia"]
+    structure = getattr(rotor, "structure", None)
+    if structure is not None:  # its inertias come from the matrices: name the key the user wrote, not polar_inertia
+        name = name.replace("rotor.polar_inertia", f"{structure.key} = {structure.written!r}")
+    notes += inertia_notes(rotor, machine.planes, name)
     return notes
 
 
 def inertia_notes(rotor, planes, typed: str) -> list[str]:
-    """Warnings for rotor inertias no body of that mass and journal radius has.
+    """Warnings for rotor inertias unusual for a body of that mass and journal radius; impossible ones refused.
 
-    The principal moments of any rigid body obey I_1 <= I_2 + I_3 (they are sums of two of the three second
-    moments of the mass), so for a rotor symmetric about its spin axis J_p <= 2 J_t, equal for a flat disc.
-    The polar radius of gyration sqrt(J_p / m) is compared with the journal radius r_j: a solid shaft of
-    that radius has r_j / sqrt(2); below r_j / 4 or above 50 r_j an inertia is more likely in the wrong
-    unit than a rotor. ``typed`` names the polar inertia as the user gave it.
+    No body has them, so these raise :class:`~auxbearing.common.errors.InputError`: a mass or polar inertia that
+    is not positive (J_p = sum of m r^2 about the spin axis), and J_p above twice J_t. The latter is the
+    perpendicular-axis theorem: with the spin axis z, J_p = int(x^2 + y^2) dm while the transverse moments about x
+    and y add up to 2 J_t = J_p + 2 int z^2 dm, so J_p <= 2 J_t, equal for a flat disc (principal moments obey
+    I_1 <= I_2 + I_3). Merely unusual, so warned of: the polar radius of gyration sqrt(J_p / m) against the journal
+    radius r_j (a solid shaft of that radius has r_j / sqrt(2)); below r_j / 4 or above 50 r_j an inertia is more
+    likely in the wrong unit than a rotor. ``typed`` names the polar inertia as the user gave it.
 
     >>> from types import SimpleNamespace as S
-    >>> inertia_notes(S(mass=10.0, polar_inertia=0.5, transverse_inertia=0.2), [S(journal_radius=0.02)], "J_p")[0][:31]
-    'J_p: 0.5 kg*m**2 is 2.5 times t'
+    >>> planes = [S(journal_radius=0.02)]
+    >>> inertia_notes(S(mass=10.0, polar_inertia=1.5e-6, transverse_inertia=0.2), planes, "J_p")[0][:39]
+    'J_p: 1.5e-06 kg*m**2 with 10 kg is a ra'
+    >>> inertia_notes(S(mass=10.0, polar_inertia=0.5, transverse_inertia=0.2), planes, "J_p")
+    Traceback (most recent call last):
+    ...
+    auxbearing.common.errors.InputError: J_p: 0.5 kg*m**2 is 2.5 times the transverse inertia 0.2 kg*m**2; ...
     """
     notes = []
     jp, jt, m = rotor.polar_inertia, rotor.transverse_inertia, rotor.mass
+    if not (m > 0.0 and jp > 0.0):  # sqrt(J_p / m) below would fail on them; no body has them
+        raise InputError(f"{typed}: a mass of {m:.4g} kg and a polar inertia of {jp:.4g} kg*m**2: both must be > 0 "
+                         "(J_p = sum of m r^2 about the spin axis)")
     if jt is not None and jp > 2.0 * jt * (1.0 + 1e-9):
-        notes.append(f"{typed}: {jp:.4g} kg*m**2 is {jp / jt:.3g} times the transverse inertia "
-                     f"{jt:.4g} kg*m**2; no rigid body has a polar moment above twice its "
-                     "transverse moment (principal moments obey I1 <= I2 + I3; a flat disc has exactly 2)")
+        raise InputError(f"{typed}: {jp:.4g} kg*m**2 is {jp / jt:.3g} times the transverse inertia {jt:.4g} kg*m**2; "
+                         "no body has a polar moment above twice its transverse moment (the perpendicular-axis "
+                         "theorem: J_p = 2 J_t - 2 int z^2 dm, equal for a flat disc)")
     r_j = min(p.journal_radius for p in planes)
     k = math.sqrt(jp / m)
     if not JOURNAL_GYRATION_SPAN[0] * r_j <= k <= JOURNAL_GYRATION_SPAN[1] * r_j:

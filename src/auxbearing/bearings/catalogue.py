@@ -30,7 +30,11 @@ from auxbearing.common.errors import InputError
 #: Words that make a name a hybrid (silicon-nitride balls): "hybrid", or SKF's /HC5 suffix.
 HYBRID_WORDS = ("hybrid", "hc5")
 PRELOAD_WORDS = ("light", "medium", "heavy", "none")
-_DESIGNATION = re.compile(r"^(?:(QJ)\s*|([67]))([023])(\d\d)\s*[-/]?\s*([A-Z0-9/ -]*)$")
+#: A bore code is two digits: a digit right after it is no maker suffix but a longer number ('QJ2088', '62080'), a
+#: typo that must not read as QJ208 or 6208 (a suffix that starts with a digit is written apart: '6208-2RS1').
+_DESIGNATION = re.compile(r"^(?:(QJ)\s*|([67]))([023])(\d\d)(?!\d)\s*[-/]?\s*([A-Z0-9/ -]*)$")
+#: The start of a series designation followed by more digits than a bore code has, for the message.
+_LONG_CODE = re.compile(r"^((?:QJ\s*|[67])[023]\d\d)(\d+)")
 _SERIES_OF = {("6", "0"): "60", ("6", "2"): "62", ("6", "3"): "63", ("7", "2"): "72", ("7", "3"): "73",
               ("QJ", "2"): "QJ2", ("QJ", "3"): "QJ3"}
 
@@ -171,7 +175,11 @@ def resolve_single(base: str, field: str = "bearing"):
         return get_catalogue_entry(toml[base.lower()])
     designation, suffix = _series_name(base)
     if designation is None:
-        raise InputError.for_field(field, base, _unknown_text())
+        longer = _LONG_CODE.match(base.upper().strip())
+        reason = "" if longer is None else (f"a bore code has two digits, and {longer.group(1)} is followed by "
+                                            f"'{longer.group(2)}'; a maker's suffix that starts with a digit is "
+                                            "written apart, as in '6208-2RS1'")
+        raise InputError.for_field(field, base, _unknown_text(reason))
     _check_suffix(base, designation, suffix, field)
     if designation[0] == "7" and suffix and not suffix.startswith("B"):
         raise InputError.for_field(field, base, "only the 40 deg B design of angular-contact bearings is in the "
@@ -187,10 +195,10 @@ def resolve_single(base: str, field: str = "bearing"):
     return entry.bearing
 
 
-def _unknown_text() -> str:
+def _unknown_text(reason: str = "") -> str:
     from auxbearing.catalog import bearing_names
 
-    return ("unknown; catalogue names are " + ", ".join(bearing_names())
+    return ("unknown" + (f" ({reason})" if reason else "") + "; catalogue names are " + ", ".join(bearing_names())
             + " and the series 60xx, 62xx, 63xx, 72xx B, 73xx B, QJ2xx, QJ3xx with bore codes 02-20 "
             "('auxbearing bearings' lists them)")
 

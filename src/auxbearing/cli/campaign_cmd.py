@@ -92,8 +92,8 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
     out = {**headline(stats), "wall_time_s": result["wall_time_s"], "drops_per_second": result["drops_per_second"],
            "new": result["new"], "lost": result["lost"], "workers": result["workers"],
            "startup_s": result["startup_s"], "warm_up_s": result["warm_up_s"], "run_s": result["run_s"],
-           "store": str(store), "campaign": campaign.name, "runs": campaign.runs, "base_samples": campaign.samples, "sampler": campaign.sampler,
-           "seed": campaign.seed}
+           "store": str(store), "campaign": campaign.name, "runs": campaign.runs, "base_samples": campaign.samples,
+           "sampler": campaign.sampler, "seed": campaign.seed}
     if as_json:
         echo_json(out)
         return
@@ -106,7 +106,7 @@ def _stored(store) -> int:
 
     try:
         return int(completed(store).sum())
-    except Exception:  # noqa: BLE001 - an interrupted start may leave no store, or half of one
+    except Exception:
         return 0
 
 
@@ -153,9 +153,9 @@ def campaign_report_command(store, out_dir, whirl_map, as_json):
     """Statistics, sensitivity and figures of a campaign store (complete or not).
 
     Writes statistics.json, probabilities.csv (Wilson intervals), quantiles.csv (distribution-free
-    intervals from the order statistics, an end left empty where too few runs bound it), sensitivity.csv (Sobol' indices for a complete saltelli design whose runs all ended
-    ok, Spearman rank correlations otherwise), samples.csv and the figures histograms, scatter_matrix
-    and whirl_map.
+    intervals from the order statistics, an end left empty where too few runs bound it),
+    sensitivity.csv (Sobol' indices for a complete saltelli design whose runs all ended ok, Spearman
+    rank correlations otherwise), samples.csv and the figures histograms, scatter_matrix and whirl_map.
     """
     from auxbearing.campaign.statistics import headline
     from auxbearing.campaign.store import load_results

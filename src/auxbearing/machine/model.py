@@ -23,9 +23,11 @@ from auxbearing.core.hertz import line_contact_constant
 from auxbearing.machine.params import (
     AXIAL_DIRECTIONS,
     COASTDOWN,
+    COASTDOWN_TEXT,
     DENT_ACCUMULATION,
     G0,
     LIFE,
+    ROTOR_TEXT,
     SIMULATION,
     TABLES,
     TOUCHDOWN_TEXT,
@@ -37,7 +39,7 @@ from auxbearing.machine.scenario import read_scenarios
 from auxbearing.machine.stations import TABLES as STATION_TABLES
 from auxbearing.machine.stations import kinds as station_kinds
 from auxbearing.machine.stations import of_kind
-from auxbearing.machine.structure import ModalRotor, RotorStructure, modal_rotor, read_structure
+from auxbearing.machine.structure import ModalRotor, RotorStructure, check_spinning, modal_rotor, read_structure
 
 #: (1 - nu^2)/E of the journal: steel, E = 207 GPa, nu = 0.3 (the paper names no rotor material).
 JOURNAL_COMPLIANCE = (1.0 - 0.3**2) / 207e9
@@ -157,6 +159,9 @@ class MachineRotor:
     def __post_init__(self) -> None:
         if self.reduction not in REDUCTIONS:
             raise InputError.for_field("rotor.reduction", self.reduction, f"must be one of {', '.join(REDUCTIONS)}")
+        if self.structure is None and self.transverse_inertia is not None:
+            _check_inertia_pair(self.polar_inertia, self.transverse_inertia, f"{self.polar_inertia:g} kg*m**2",
+                                f"{self.transverse_inertia:g} kg*m**2")
         if self.unbalance_planes:
             if self.unbalance or self.couple_unbalance:
                 raise InputError.for_field("rotor.unbalance", f"{self.unbalance * 1e6:g} um", "give the unbalance "
@@ -169,6 +174,7 @@ class MachineRotor:
         if self.structure is None:
             return
         body = modal_rotor(self.structure)
+        check_spinning(self.structure, body)
         for key, value, own in (("mass", self.mass, body.mass), ("polar_inertia", self.polar_inertia,
                                                                     body.polar_inertia),
                                 ("transverse_inertia", self.transverse_inertia, body.transverse_inertia)):
@@ -196,6 +202,21 @@ class MachineRotor:
         if self.reduction == "static_correction" and len(self.structure.nodes) > 1:
             nodes = self.structure.nodes_at(positions)  # each on a node: Machine checks them first
         return modal_rotor(self.structure, 2.0 * math.pi * self.max_mode_frequency, self.modal_damping, nodes)
+
+
+def _check_inertia_pair(jp: float, jt: float, jp_written: object, jt_written: object) -> None:
+    """Refuse a polar inertia above twice the transverse one (the values as written name them in the message).
+
+    The perpendicular-axis theorem: with the spin axis z, J_p = int(x^2 + y^2) dm, and a rotor's transverse moments
+    about x and y are int(y^2 + z^2) dm and int(x^2 + z^2) dm, so 2 J_t = J_p + 2 int z^2 dm >= J_p: no body of any
+    length has J_p > 2 J_t, and a flat disc (z = 0 throughout) has J_p = 2 J_t exactly. The margin of 1e-9 lets a
+    disc's pair written as 0.02 and 0.01 through.
+    """
+    if jt > 0.0 and jp > 2.0 * jt * (1.0 + 1e-9):
+        raise InputError.for_field("rotor.polar_inertia", jp_written, f"is {jp / jt:.4g} times "
+                                   f"rotor.transverse_inertia = {jt_written!r}; no body has a polar moment above twice "
+                                   "its transverse one (the perpendicular-axis theorem: J_p = 2 J_t - 2 int z^2 dm, "
+                                   "equal for a flat disc)")
 
 
 def unbalance_of_planes(planes, mass: float, transverse_inertia: float, polar_inertia: float
@@ -667,7 +688,15 @@ def _ross_rotor(rotor_table: dict, base: Path | None) -> tuple:
     speed = accept(TABLES["rotor"]["speed"], rotor_table.get("speed"), "rotor.speed") if "speed" in rotor_table \
         else 0.0
     supports = supports_from_ross(rotor, speed or 0.0) if keep == "keep" else ()
-    return structure_from_ross(rotor, Path(spec).name), supports
+    source = Path(spec).name
+    try:
+        structure = structure_from_ross(rotor, source)
+    except InputError as err:  # its checks name rotor.matrices, the key of a .npz: this rotor is rotor.ross_file
+        text, prefix = str(err), f"rotor.matrices = {source!r}: "
+        if not text.startswith(prefix):
+            raise
+        raise InputError.for_field("rotor.ross_file", spec, text[len(prefix):]) from None
+    return structure.with_key("rotor.ross_file", spec), supports
 
 
 def _shifted(station, centre: float):
@@ -724,6 +753,13 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     rotor_table = data.get("rotor")
     structure = None
     ross_supports: tuple = ()
+    if isinstance(rotor_table, dict):  # every key, text ones included, before any is taken out of the table
+        for key in rotor_table:
+            if key not in TABLES["rotor"] and key not in ROTOR_TEXT:
+                raise unknown(f"rotor.{key}", rotor_table[key], key, [*TABLES["rotor"], *ROTOR_TEXT])
+        if "ross_bearings" in rotor_table and "ross_file" not in rotor_table:
+            raise InputError.for_field("rotor.ross_bearings", rotor_table["ross_bearings"], "applies to a rotor "
+                                       "given by rotor.ross_file (its bearings and seals); this rotor has none")
     if isinstance(rotor_table, dict) and "matrices" in rotor_table and "ross_file" in rotor_table:
         raise InputError.for_field("rotor.ross_file", rotor_table["ross_file"], "give rotor.matrices or "
                                    "rotor.ross_file, not both")
@@ -745,6 +781,9 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
             if isinstance(rotor_table, dict) and key in rotor_table:
                 raise InputError.for_field(f"rotor.{key}", rotor_table[key], "applies to a rotor given by its "
                                            "matrices (rotor.matrices or rotor.ross_file); this rotor is rigid")
+    if structure is None and "polar_inertia" in rotor_values and rotor_values.get("transverse_inertia"):
+        _check_inertia_pair(rotor_values["polar_inertia"], rotor_values["transverse_inertia"],
+                            rotor_table["polar_inertia"], rotor_table["transverse_inertia"])
     if structure is not None:
         for key in ("mass", "polar_inertia", "transverse_inertia"):
             if key in rotor_values:
@@ -752,6 +791,7 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
                                            "comes from the rotor's matrices (rotor.matrices or rotor.ross_file); "
                                            "give one or the other")
         body = modal_rotor(structure)
+        check_spinning(structure, body)  # before the rotor is built: its unbalance planes divide by J_t - J_p
         rotor_values.update(mass=body.mass, polar_inertia=body.polar_inertia,
                             transverse_inertia=body.transverse_inertia)
     for key in ("mass", "polar_inertia", "speed"):
@@ -833,6 +873,9 @@ def machine_from_mapping(data: dict, name: str = "machine", base: Path | None = 
     if not isinstance(data.get("coastdown") or {}, dict):
         raise InputError.for_field("coastdown", data["coastdown"], "must be a table of keys")
     coast = dict(data.get("coastdown") or {})
+    for key in coast:  # the text keys too: read_table's own list would leave them out
+        if key not in TABLES["coastdown"] and key not in COASTDOWN_TEXT:
+            raise unknown(f"coastdown.{key}", coast[key], key, [*TABLES["coastdown"], *COASTDOWN_TEXT])
     vacuum = coast.pop("vacuum", False)
     if not isinstance(vacuum, bool):
         raise InputError.for_field("coastdown.vacuum", vacuum, "must be true or false")

@@ -16,7 +16,8 @@ G0 = 9.80665  #: standard gravity [m/s^2] (CGPM 1901)
 ROTOR: tuple[Param, ...] = (
     Param("rotor", "mass", "mass", None, "kg", "positive", "Rotor mass m", "required"),
     Param("rotor", "polar_inertia", "inertia", None, "kg*m**2", "positive",
-          "Polar moment of inertia J_p about the spin axis", "required"),
+          "Polar moment of inertia J_p about the spin axis; at most 2 x transverse_inertia (the perpendicular-axis "
+          "theorem: no body has more, a flat disc exactly that)", "required"),
     Param("rotor", "transverse_inertia", "inertia", None, "kg*m**2", "optional_positive",
           "Moment of inertia J_t about a transverse axis through the mass centre", "required with two planes or more"),
     Param("rotor", "speed", "angular_speed", None, "rpm", "finite", "Spin speed at the drop", "required"),
@@ -32,8 +33,14 @@ ROTOR: tuple[Param, ...] = (
           "ours: none unless given"),
     Param("rotor", "side_force_x", "force", 0.0, "N", "finite", "Constant radial process force along x", "ours"),
     Param("rotor", "side_force_y", "force", 0.0, "N", "finite", "Constant radial process force along y", "ours"),
-    Param("rotor", "start_x", "length", 0.0, "mm", "finite", "Journal-axis position at the drop, x", "ours: centred"),
-    Param("rotor", "start_y", "length", 0.0, "mm", "finite", "Journal-axis position at the drop, y", "ours: centred"),
+    Param("rotor", "start_x", "length", 0.0, "mm", "finite",
+          "Journal-axis position at the drop, x; with a levitated [[scenario]] an offset from the levitated place, "
+          "applied after the levitated machine is linearised (it must stay inside every touchdown clearance)",
+          "ours: centred"),
+    Param("rotor", "start_y", "length", 0.0, "mm", "finite",
+          "Journal-axis position at the drop, y; with a levitated [[scenario]] an offset from the levitated place, "
+          "applied after the levitated machine is linearised (it must stay inside every touchdown clearance)",
+          "ours: centred"),
     Param("rotor", "max_mode_frequency", "frequency", 3000.0, "Hz", "positive",
           "With rotor.matrices: highest free-free natural frequency of the elastic modes kept (a mode's partner "
           "of equal frequency is kept with it)", "ours: above the drop's bounce and whirl content"),
@@ -51,8 +58,10 @@ UNBALANCE: tuple[Param, ...] = (
           "ours"),
 )
 #: Text keys of ``[rotor]``: ``matrices`` names a ``.npz`` file of the free-free rotor's matrices
-#: (:func:`auxbearing.machine.structure.read_structure`); mass and inertias then come from it.
-ROTOR_TEXT = ("matrices",)
+#: (:func:`auxbearing.machine.structure.read_structure`), ``ross_file`` a rotor saved by ROSS (mass and inertias then
+#: come from either); ``ross_bearings`` (``keep`` or ``drop``) goes with ``ross_file``, ``reduction``
+#: (:data:`auxbearing.machine.model.REDUCTIONS`) with either. Every one is in the list an unknown key's message gives.
+ROTOR_TEXT = ("matrices", "ross_file", "ross_bearings", "reduction")
 
 TOUCHDOWN: tuple[Param, ...] = (
     Param("touchdown", "position", "length", 0.0, "mm", "finite",
@@ -144,7 +153,9 @@ TOUCHDOWN: tuple[Param, ...] = (
     Param("touchdown", "emissivity", "dimensionless", 0.0, "", "unit_interval",
           "Emissivity of the housing for radiation to ambient", "ours: none unless given"),
 )
-#: Keys of ``[[touchdown]]`` that are text, not quantities.
+#: Keys of ``[[touchdown]]`` that are text, not quantities. ``axial_direction`` (with ``axial_clearance``) says which
+#: way the collar meets the race face: ``both`` (the default: the rotor is caught moving either way), ``+z`` (only
+#: moving towards +z) or ``-z`` (only towards -z), as at the two ends of a rotor that each catch one way.
 TOUCHDOWN_TEXT = ("name", "bearing", "axial_direction", "preload")
 AXIAL_DIRECTIONS = ("both", "+z", "-z")
 
@@ -224,6 +235,8 @@ COASTDOWN: tuple[Param, ...] = (
           "family and the vertical machine within 1 % at 2.5 times the computing before stretches were charged "
           "by the trapezoidal rule"),
 )
+#: Keys of ``[coastdown]`` that are no quantity: ``vacuum`` (true or false, default false) runs the machine in vacuum,
+#: where no air carries heat off the housings (no natural convection; radiation and conduction stay).
 COASTDOWN_TEXT = ("vacuum",)
 LIFE: tuple[Param, ...] = (
     Param("life", "required_drops", "dimensionless", 10.0, "", "count",

@@ -24,6 +24,7 @@ Here: SI floats and numpy arrays; units are read at the machine file's boundary.
 
 from __future__ import annotations
 
+import copy
 import math
 import zipfile
 import zlib
@@ -45,6 +46,15 @@ NODE_TOLERANCE = 1e-6
 SEMI_DEFINITE_TOLERANCE = 1e-8
 #: The matrices of a structure, by field, with the array names a .npz file gives them.
 MATRICES = {"mass": "M", "stiffness": "K", "gyroscopic": "G", "damping": "C"}
+#: Lateral rigid motions of a free-free rotor: two translations and two tilts (:meth:`RotorStructure.rigid_modes`).
+RIGID_MOTIONS = 4
+#: A generalised eigenvalue of (K, M) beyond the four rigid motions counts as zero (a mechanism) when it is below this
+#: many times the largest of the four rigid ones: those are zero in exact arithmetic, so their size is this K and M's
+#: round-off (about 1e-16 of the largest eigenvalue in double precision, 1e-10 for a float32 export; the lowest
+#: elastic mode of a 1000-node shaft sits at 5e-12).
+MECHANISM_FACTOR = 100.0
+#: ... and in any case below this fraction of the largest eigenvalue (the round-off floor of double precision).
+MECHANISM_FLOOR = 1e-13
 
 
 @dataclass(frozen=True, eq=False)
@@ -57,6 +67,9 @@ class RotorStructure:
     nodes: np.ndarray  #: axial position of each node [m], in the structure's own frame
     damping: np.ndarray | None = None  #: C [N s/m, ...] (internal damping of the shaft; None: none)
     source: str = "matrices"
+    #: the machine file's key the matrices come from, named in an error with the value as written (``given``)
+    key: str = "rotor.matrices"
+    given: str | None = None  #: the key's value as the user wrote it (None: ``source``)
 
     def __post_init__(self) -> None:
         n = DOFS_PER_NODE * len(self.nodes)
@@ -64,55 +77,72 @@ class RotorStructure:
         for name, value in given.items():
             value = np.asarray(value)
             if np.iscomplexobj(value) or not np.issubdtype(value.dtype, np.number):
-                raise InputError.for_field(f"rotor.matrices.{name}", MATRICES[name], "must hold real numbers")
+                raise self.refuse(MATRICES[name], "must hold real numbers")
             value = value.astype(float)
             if value.ndim != 2 or value.shape[0] != value.shape[1]:
-                raise InputError.for_field(f"rotor.matrices.{name}", f"shape {value.shape}",
-                                           f"must be a square {n} x {n} matrix: four lateral DOFs per node")
+                raise self.refuse(MATRICES[name], f"has shape {value.shape}: it must be a square {n} x {n} matrix, "
+                                  "four lateral DOFs per node")
             if not np.all(np.isfinite(value)):
-                raise InputError.for_field(f"rotor.matrices.{name}", MATRICES[name], "must hold finite numbers only")
+                raise self.refuse(MATRICES[name], "must hold finite numbers only")
             given[name] = value
         sizes = {value.shape[0] for value in given.values()}
         if len(sizes) == 1 and n not in sizes:
             # the matrices agree with each other, so the node list is the likelier mistake
             size = sizes.pop()
-            raise InputError.for_field("rotor.matrices.nodes", f"{len(self.nodes)} nodes",
-                                       f"the node list and the matrices disagree: the matrices are {size} x {size}, "
-                                       f"four lateral DOFs per node for {size / DOFS_PER_NODE:g} nodes")
+            raise self.refuse("nodes", f"holds {len(self.nodes)} nodes: the node list and the matrices disagree, the "
+                              f"matrices are {size} x {size}, four lateral DOFs per node for "
+                              f"{size / DOFS_PER_NODE:g} nodes")
         for name, value in given.items():
             if value.shape != (n, n):
-                raise InputError.for_field(f"rotor.matrices.{name}", f"shape {value.shape}",
-                                           f"must be {n} x {n}: four lateral DOFs per node of the "
-                                           f"{len(self.nodes)} nodes")
+                raise self.refuse(MATRICES[name], f"has shape {value.shape}: it must be {n} x {n}, four lateral DOFs "
+                                  f"per node of the {len(self.nodes)} nodes")
             object.__setattr__(self, name, value)
         if not np.allclose(self.mass, self.mass.T, rtol=1e-9, atol=0.0):
-            raise InputError.for_field("rotor.matrices.mass", "M", "must be symmetric")
+            raise self.refuse("M", "must be symmetric")
         if not np.allclose(self.stiffness, self.stiffness.T, rtol=1e-9, atol=1e-12 * np.abs(self.stiffness).max()):
-            raise InputError.for_field("rotor.matrices.stiffness", "K", "must be symmetric")
+            raise self.refuse("K", "must be symmetric")
         if not np.allclose(self.gyroscopic, -self.gyroscopic.T, atol=1e-12 * max(np.abs(self.gyroscopic).max(), 1.0)):
-            raise InputError.for_field("rotor.matrices.gyroscopic", "G", "must be skew-symmetric (G = -G^T)")
+            raise self.refuse("G", "must be skew-symmetric (G = -G^T)")
         try:
             # the modal split factors M by Cholesky (scipy's eigh): a matrix it cannot factor has no modes
             np.linalg.cholesky(self.mass)
         except np.linalg.LinAlgError:
-            raise InputError.for_field("rotor.matrices.mass", "M", "must be symmetric positive definite "
-                                       f"({_spectrum(self.mass)})") from None
+            raise self.refuse("M", f"must be symmetric positive definite ({_spectrum(self.mass)})") from None
         if not _semi_definite(self.stiffness):
-            raise InputError.for_field("rotor.matrices.stiffness", "K", "must be symmetric positive semi-definite "
-                                       f"({_spectrum(self.stiffness)})")
+            raise self.refuse("K", f"must be symmetric positive semi-definite ({_spectrum(self.stiffness)})")
         if self.damping is not None:
             # only the symmetric part dissipates; a skew part is a circulatory or gyroscopic term
             symmetric = 0.5 * (self.damping + self.damping.T)
             if not _semi_definite(symmetric):
-                raise InputError.for_field("rotor.matrices.damping", "C", "must be positive semi-definite "
-                                           f"({_spectrum(symmetric)} for (C + C^T) / 2)")
+                raise self.refuse("C", f"must be positive semi-definite ({_spectrum(symmetric)} for (C + C^T) / 2)")
+
+    @property
+    def written(self) -> str:
+        """The matrices' key's value as the user wrote it (the file's name), for a message."""
+        return self.source if self.given is None else self.given
+
+    def refuse(self, array: str, rule: str) -> InputError:
+        """The one-line error of a bad array: the key and file as written, then the array inside it.
+
+        >>> s = rigid_structure(10.0, 0.2, 0.1)
+        >>> str(s.with_key("rotor.matrices", "shaft.npz").refuse("C", "must be positive semi-definite"))
+        "rotor.matrices = 'shaft.npz': its array 'C' must be positive semi-definite"
+        """
+        return InputError.for_field(self.key, self.written, f"its array {array!r} {rule}")
+
+    def with_key(self, key: str, given: str | None) -> RotorStructure:
+        """The same matrices, named in errors as the machine file's ``key = given`` (no check made again)."""
+        named = copy.copy(self)
+        object.__setattr__(named, "key", key)
+        object.__setattr__(named, "given", given)
+        return named
 
     def mass_centre(self) -> tuple[float, float]:
         """(mass [kg], axial position of the mass centre in the structure's frame [m]), from M alone."""
         origin = self.rigid_modes(0.0)
         mass = float(origin[:, 0] @ self.mass @ origin[:, 0])
         if not mass > 0.0:
-            raise InputError.for_field("rotor.matrices.mass", f"{mass:g} kg", "must give the rotor a positive mass")
+            raise self.refuse("M", f"gives the rotor a mass of {mass:g} kg: it must be positive")
         return mass, float(origin[:, 0] @ self.mass @ origin[:, 3]) / mass
 
     def nodes_at(self, positions) -> list[int]:
@@ -216,12 +246,13 @@ def modal_rotor(structure: RotorStructure, max_frequency: float = math.inf, damp
     rigid_mass = rigid.T @ m_mat @ rigid
     jt = 0.5 * (rigid_mass[2, 2] + rigid_mass[3, 3])
     jp = float(rigid[:, 2] @ s.gyroscopic @ rigid[:, 3])
+    _check_inertias(s, float(jt), jp)
     if np.abs(k_mat @ rigid).max() > 1e-6 * max(np.abs(k_mat).max(), 1.0):
-        raise InputError.for_field("rotor.matrices.stiffness", "K",
-                                   "ties the rotor to the ground: give the free-free shaft (its bearings are stations)")
+        raise s.refuse("K", "ties the rotor to the ground: give the free-free shaft (its bearings are stations)")
     n = m_mat.shape[0]
-    if n > 4:
+    if n > RIGID_MOTIONS:
         values, vectors = eigh(k_mat, m_mat)
+        _check_mechanism(s, values)
         values, vectors = values[4:], vectors[:, 4:]  # the four rigid motions: K r = 0
         omega = np.sqrt(np.clip(values, 0.0, None))
         keep = int(np.searchsorted(omega, max_frequency, side="right"))
@@ -241,6 +272,60 @@ def modal_rotor(structure: RotorStructure, max_frequency: float = math.inf, damp
         damping = damping + phi.T @ s.damping @ phi
     return ModalRotor(mass, float(jt), jp, centre, omega, phi, damping, phi.T @ s.gyroscopic @ phi,
                       rigid[:, 2:].T @ s.gyroscopic @ phi, s.nodes - centre, residual)
+
+
+def _check_inertias(s: RotorStructure, jt: float, jp: float) -> None:
+    """Refuse matrices whose rigid body no body can be: J_p < 0, or J_p above 2 J_t.
+
+    J_p = sum of m r^2 over the rotor's mass about the spin axis, so it is not negative for any body (G holds +J_p
+    of each disk at [theta_x, theta_y]; a G of the opposite sign convention gives it negative). J_p = 0 is a
+    structure without gyroscopic terms (a beam analysed at rest): its modes stand, but it is no rotor to spin
+    (:func:`check_spinning`). The perpendicular-axis theorem bounds J_p by the transverse moment: with the spin axis
+    z, J_p = int(x^2 + y^2) dm and 2 J_t = int(x^2 + z^2) dm + int(y^2 + z^2) dm = J_p + 2 int z^2 dm, so
+    J_p <= 2 J_t, equal for a flat disc (for a body of any shape, I_1 <= I_2 + I_3).
+    """
+    if jp < 0.0:
+        raise _no_polar_inertia(s, jp)
+    if jp > 2.0 * jt * (1.0 + 1e-6):
+        raise s.refuse("G", f"gives a polar inertia J_p = {jp:.4g} kg*m**2, {jp / jt:.3g} times the transverse "
+                       f"inertia J_t = {jt:.4g} kg*m**2 that 'M' gives; no body has J_p above 2 J_t (the "
+                       "perpendicular-axis theorem: J_p = 2 J_t - 2 int z^2 dm)")
+
+
+def _no_polar_inertia(s: RotorStructure, jp: float) -> InputError:
+    return s.refuse("G", f"gives a polar inertia <= 0 (J_p = {jp:.4g} kg*m**2, G[theta_x, theta_y] summed over the "
+                    "nodes); a rotor's J_p, the sum of m r^2 about its axis, is positive, and G holds +J_p of each "
+                    "disk at [theta_x, theta_y]: a G of the opposite sign convention must be negated")
+
+
+def check_spinning(structure: RotorStructure, body: ModalRotor) -> None:
+    """Refuse a structure as a machine's rotor when its G gives no polar inertia (J_p = 0, as G = 0 gives).
+
+    A spinning rotor's gyroscopic moment J_p Omega and its spin equation J_p dOmega/dt = torque need J_p > 0:
+    every body with mass off its axis has it (J_p = sum of m r^2). :func:`modal_rotor` itself takes J_p = 0 (a
+    beam's modes at rest); a machine's rotor does not.
+    """
+    if not body.polar_inertia > 0.0:
+        raise _no_polar_inertia(structure, body.polar_inertia)
+
+
+def _check_mechanism(s: RotorStructure, values: np.ndarray) -> None:
+    """Refuse a K with more zero eigenvalues than the four rigid motions of a free-free lateral rotor.
+
+    The rigid motions (x, y translations, theta_x, theta_y tilts) are K's only zero-energy motions in a connected
+    shaft; a further one is a mechanism (a node left unconnected, a hinge, K = 0): it has no restoring force, and
+    its "mode" at 0 Hz would be taken as an elastic one. ``values`` are the generalised eigenvalues of (K, M),
+    ascending; the four lowest are the rigid motions, and their size (zero in exact arithmetic) is the round-off
+    against which a further eigenvalue counts as zero (:data:`MECHANISM_FACTOR`, :data:`MECHANISM_FLOOR`).
+    """
+    top = float(np.abs(values).max())
+    noise = float(np.abs(values[:RIGID_MOTIONS]).max())
+    zero = max(MECHANISM_FACTOR * noise, MECHANISM_FLOOR * top)
+    count = int(np.sum(values <= zero))
+    if count > RIGID_MOTIONS:
+        raise s.refuse("K", f"has {count} zero eigenvalues (rigid motions): a free-free lateral rotor has four (two "
+                       f"translations, two tilts), so {count - RIGID_MOTIONS} more are a mechanism, motions no "
+                       "stiffness resists (an unconnected node, a hinge, a K of zeros)")
 
 
 def _clean(phi: np.ndarray, rigid: np.ndarray, rigid_mass: np.ndarray, m_mat: np.ndarray) -> np.ndarray:
@@ -377,7 +462,8 @@ def read_structure(spec: str, base: Path | None, field: str) -> RotorStructure:
     nodes = data["nodes"]
     if nodes.ndim != 1 or len(nodes) < 1 or not np.all(np.isfinite(nodes)) or np.any(np.diff(nodes) <= 0.0):
         raise InputError.for_field(field, spec, "its 'nodes' must be axial positions in metres, strictly increasing")
-    return RotorStructure(data["M"], data["K"], data["G"], nodes, data.get("C"), source=path.name)
+    return RotorStructure(data["M"], data["K"], data["G"], nodes, data.get("C"), source=path.name, key=field,
+                          given=spec)
 
 
 def _one_line(err: Exception) -> str:

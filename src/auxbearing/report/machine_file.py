@@ -70,8 +70,12 @@ In `[rotor]`, `matrices = "rotor.npz"` (relative to the machine file) gives the 
 NumPy `.npz` of the arrays `M`, `K`, `G` (the gyroscopic matrix, to be multiplied by the spin speed), `nodes`
 (the nodes' axial positions in metres) and optionally `C`, in SI, over four degrees of freedom per node in the
 order x, y, theta_x, theta_y, with theta_y = dx/dz and theta_x = -dy/dz. `M` must be symmetric positive definite,
-`K` symmetric positive semi-definite (the rigid motions are its zero eigenvalues) and the symmetric part of `C`
-positive semi-definite, each square of side four times the number of nodes. Mass and inertias then come from the
+`K` symmetric positive semi-definite (the rigid motions are its zero eigenvalues: exactly four, two translations and
+two tilts; a fifth is a mechanism, refused) and the symmetric part of `C` positive semi-definite, each square of
+side four times the number of nodes; `G` holds +J_p of each disk at (theta_x, theta_y), and the polar inertia it
+gives must be positive and at most twice the transverse one `M` gives (the perpendicular-axis theorem). An error
+names the file as written and the array in it (`rotor.matrices = 'rotor.npz': its array 'C' ...`). Mass and
+inertias then come from the
 matrices (give neither), every `position` (of each `[[touchdown]]`, `[[unbalance]]` and station) is the axial
 coordinate of one of the matrices' `nodes`, in the matrices' own frame, and the rotor bends in its free-free
 elastic modes up to `max_mode_frequency` with the static correction at its stations (`reduction`): a force at a
@@ -99,6 +103,13 @@ _TEXT_ROWS = {"rotor": ["| `matrices` | - | none (a rigid rotor) | A .npz file o
                         "keeps the modes up to `max_mode_frequency` and adds, for x and y at every station, the "
                         "flexibility of the modes left out (Ritz vectors of the residual flexibility, above the cut; "
                         "not reported as modes); `modes` keeps the modes alone | Craig & Kurdila 2006, Sec. 17.4 |"],
+              "touchdown": ["| `axial_direction` | - | `both` | With `axial_clearance`: the way the collar meets the "
+                            "race face, `both` (the rotor is caught moving either way), `+z` (only moving towards "
+                            "+z) or `-z` (only towards -z), as at the two ends of a rotor that each catch one way | "
+                            "ours |"],
+              "coastdown": ["| `vacuum` | - | `false` | `true`: the machine runs in vacuum, where no air carries heat "
+                            "off the housing and journal (no convection; radiation by `emissivity`, conduction and a "
+                            "given `housing_to_ambient` stay) | ours |"],
               "scenario": ["| `name` | - | required | The scenario's name (`drop --scenario NAME`) | ours |",
                            "| `kind` | - | `power_loss` | `power_loss` (every magnetic bearing loses its amplifiers; "
                            "the coils discharge with `decay_time`), `axis_loss` (one axis of one bearing), "
