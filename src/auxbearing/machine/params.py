@@ -217,8 +217,9 @@ COASTDOWN: tuple[Param, ...] = (
     Param("coastdown", "check_window", "time", 0.01, "ms", "positive",
           "Length of the full-dynamics windows that check the motion is settled and measure the losses and the "
           "over-rolling load (the cube mean of the bearing load over each: the damage does not depend on this "
-          "length); where a steady motion's losses repeat slower than a window, the coast-down doubles it, up to "
-          "four times", "ours"),
+          "length); a window is never shorter than one whirl window (drop.whirl_window, three spin periods at the "
+          "drop speed), which its states are judged on; where a steady motion's losses repeat slower than a "
+          "window, the coast-down doubles it, up to four times", "ours"),
     Param("coastdown", "tail_temperature_rise", "temperature", 0.05, "K", "temperature_rise",
           "A run to standstill ends once the spin energy left, all of it made heat in the smallest part, would warm "
           "that part by less than this and its revolutions could add less than 0.1 % to any damage; the time left "
