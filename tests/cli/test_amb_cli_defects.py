@@ -46,6 +46,7 @@ def _refused(tmp_path, text: str, *extra: str, npz: bool = False) -> str:
     return result.stderr.strip()
 
 
+@pytest.mark.slow
 def test_a_lost_thrust_amplifier_lands_the_collar_on_its_face_and_the_outcome_says_so(tmp_path):
     """The thrust AMB's axis lost at 10 ms (no decay): 100 N on 10 kg closes the 0.2 mm axial clearance in
     sqrt(2 x 0.2e-3 / (100 / 10)) = 6.325 ms, so the collar meets the face at 16.325 ms (the grid's 16.33 ms); the
@@ -71,6 +72,7 @@ def test_a_compressor_without_its_thrust_bearing_is_refused_for_its_uncarried_th
     assert "touchdown.0 (impeller end) in sqrt(2 c m / F) = 8.2 ms" in line
 
 
+@pytest.mark.slow
 def test_the_compressor_with_a_thrust_amb_starts_levitated(tmp_path):
     """The catalogue change: a thrust AMB carrying 300 N at 300 / 200 = 1.5 A of its 8 A; the rotor levitated."""
     text = _text("compressor")  # the catalogue's, which now holds this thrust bearing
@@ -137,6 +139,7 @@ def test_an_air_gap_inside_the_touchdown_clearance_is_refused(tmp_path):
         line
 
 
+@pytest.mark.slow
 def test_a_start_offset_from_the_levitated_place_is_no_instability(tmp_path):
     """rotor.start_x = 50 um with the power loss: the levitated machine's least damped mode, -16.47 1/s at 38.76 Hz,
     as without the offset (before: 'UNSTABLE', +200 1/s = sqrt(2 k_s / m), the magnet's open loop)."""

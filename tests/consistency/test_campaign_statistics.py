@@ -79,6 +79,7 @@ def test_quantile_interval_is_the_binomial_order_statistic_interval():
         assert low <= -math.log(1 - prob) <= high  # the true quantile of Exp(1)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("n", "prob"), [(16, 0.5), (32, 0.95), (128, 0.95), (128, 0.99), (600, 0.99)])
 def test_quantile_interval_covers_at_least_its_level(n, prob):
     """Distribution-free: over 2000 normal samples the truth lies inside at least 95 % of the time, less 1.2 % of
@@ -179,6 +180,7 @@ def test_saltelli_with_a_failed_run_falls_back_to_rank_correlations(tmp_path):
     assert stats_["p_out_of_range"]["value"] == pytest.approx(1 / 128)
 
 
+@pytest.mark.slow
 def test_saltelli_probabilities_count_only_the_a_and_b_rows(tmp_path):
     """A drop condition of an A row comes back in D of its block's rows; counted there it would weigh D + 1 times."""
     from auxbearing.campaign.statistics import independent_rows
@@ -196,6 +198,7 @@ def test_saltelli_probabilities_count_only_the_a_and_b_rows(tmp_path):
     assert "independent runs" in stats_["notes"][0]
 
 
+@pytest.mark.slow
 def test_a_drop_that_closed_no_whirl_window_is_not_counted_as_without_whirl(tmp_path):
     c = _ishigami_campaign("sobol", 8)
     ds, _ = _store_with_outputs(tmp_path, c, np.ones(8))

@@ -55,6 +55,7 @@ def _controller(**controller):
                   "controller": controller}])[0]
 
 
+@pytest.mark.slow
 def test_a_lead_controller_of_dc_gain_1500_is_refused_as_kp_1500_is():
     """C(s) = (12.2387 s + 1500) / (1.5915e-4 s + 1): C(0) = 1500 A/m, k_i C(0) - k_s = 1.5e5 - 2e5 = -5e4 N/m."""
     with pytest.raises(InputError) as err:

@@ -20,6 +20,7 @@ def _config(**head):
         "drop": {"duration": "2 ms"}}
 
 
+@pytest.mark.slow
 def test_a_temperature_input_is_shown_with_its_offset(tmp_path):
     """300 K is 26.85 degC: the store held a factor of -272.15 (1 K in degC) and showed 300 K as -81 645 degC."""
     c = campaign_from_mapping({"campaign": {"machine": "paper_rig", "samples": 2, "analysis": "coastdown", "input": [
@@ -47,6 +48,7 @@ def test_a_bearing_file_beside_the_campaign_file_is_found_there(tmp_path):
     assert campaign.tables["touchdown"][0]["bearing"] == str((tmp_path / "brg.toml").resolve())
 
 
+@pytest.mark.slow
 def test_an_edited_bearing_file_is_another_campaign(tmp_path):
     """Before, the fingerprint held the file's name only: a resume after an edit mixed two bearings in one store."""
     config = _with_bearing_file(tmp_path)
@@ -62,6 +64,7 @@ def test_an_edited_bearing_file_is_another_campaign(tmp_path):
         prepare_store(tmp_path / "s.zarr", after, design(after))
 
 
+@pytest.mark.slow
 def test_a_resume_judges_with_the_file_s_required_s0(tmp_path):
     first = campaign_from_mapping(_config())
     prepare_store(tmp_path / "s.zarr", first, design(first))
@@ -81,6 +84,7 @@ def test_a_count_given_as_true_is_quoted_as_the_file_spells_it():
         campaign_from_mapping(_config(samples=True))
 
 
+@pytest.mark.slow
 def test_a_whirl_map_of_one_input_against_itself_is_refused(tmp_path):
     from auxbearing.report.campaign import whirl_map_keys
 

@@ -42,6 +42,7 @@ def test_governing_when_nothing_limits_and_on_bad_counts():
             governing(5000.0, 800.0, required)
 
 
+@pytest.mark.slow
 def test_dent_per_drop_takes_a_load_with_a_unit_and_a_catalogue_name():
     by_name = dent_per_drop("1 kN", "QJ202")
     assert by_name["drops_to_dent_limit"] == dent_per_drop(1000.0, get_bearing("QJ202"))["drops_to_dent_limit"]
@@ -93,6 +94,7 @@ def test_a_max_time_shorter_than_two_output_steps_is_refused():
         run_coastdown(machine_from_mapping(data, name, base))
 
 
+@pytest.mark.slow
 def test_a_run_for_a_duration_ends_at_it_in_the_api_as_on_the_command_line():
     summary = run_coastdown("paper_rig", duration="0.05 s").summary
     assert summary["until_stop"] is False and summary["simulated_s"] == pytest.approx(0.05)

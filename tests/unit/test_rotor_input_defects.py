@@ -107,6 +107,7 @@ def test_a_node_left_unconnected_is_a_mechanism_of_four_more_zero_eigenvalues():
         modal_rotor(loose)
 
 
+@pytest.mark.slow
 def test_round_off_of_a_float32_export_and_a_fine_mesh_are_no_mechanism():
     a = _arrays()
     k = a["K"].astype(np.float32).astype(float)
