@@ -199,28 +199,17 @@ def ball_set_stiffness(plane, load: float) -> tuple[float, float]:
     if load <= 0.0:
         _, jac = reaction(0.0)
         return max(-float(jac[1, 1]), 0.0), max(-float(jac[2, 2]), 0.0)
-    # load + F_x(dx) = 0: F_x falls from 0 as dx grows; bracket the root, then Newton inside the bracket (bisecting
-    # where a step leaves it), as radial_approach does
-    low, high = 0.0, 0.5 * max(clearance, 0.0) + 1e-7
-    for _ in range(60):
-        g = load + reaction(high)[0]
-        if g < 0.0:
-            break
-        low, high = high, 2.0 * high
-    else:
+    # load + F_x(dx) = 0: F_x falls from 0 as dx grows, the root found as radial_approach finds it
+    from auxbearing.analysis.statics import falling_root
+
+    def residual(dx: float) -> tuple[float, float]:
+        force, jac = reaction(dx)
+        return load + force, float(jac[1, 1])
+
+    dx = falling_root(residual, 0.5 * max(clearance, 0.0) + 1e-7, 1e-10 * load)
+    if not math.isfinite(dx):
         return 0.0, 0.0  # no displacement carries the load: no stiffness to give
-    dx = high
-    for _ in range(200):
-        f, jac = reaction(dx)
-        g, slope = load + f, float(jac[1, 1])
-        if abs(g) <= 1e-10 * load:
-            break
-        if g > 0.0:
-            low = dx
-        else:
-            high = dx
-        step = dx - g / slope if slope < 0.0 else math.nan
-        dx = step if low < step < high else 0.5 * (low + high)
+    _, jac = reaction(dx)
     return max(-float(jac[1, 1]), 0.0), max(-float(jac[2, 2]), 0.0)
 
 
