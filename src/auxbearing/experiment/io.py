@@ -201,6 +201,55 @@ def _orbit_span(data: dict[str, np.ndarray], name: str, labels: dict, written: d
     raise InputError(text)
 
 
+#: Fastest sampling a drop record can have [Hz]: eddy-current displacement probes resolve some 10-100 kHz, and
+#: their recorders sample at most a few hundred kHz; a record faster than this has a time unit slip.
+MAX_SAMPLING_RATE = 1e6
+#: A channel without noise that spans less than this share of a noisy one holds no drop: a dead or disconnected
+#: probe (a drop moves the journal over the clearance in both directions as it rebounds and whirls).
+DEAD_SHARE = 0.02
+#: Samples in a row at exactly a channel's extreme that tell a clipped (saturated) probe or recorder: with the
+#: noise of any probe, even quantised, the extreme of a moving orbit holds for a sample or two.
+CLIPPED_RUN = 20
+
+
+#: Jitter [m] (median of the second differences over the record's first samples) below which a channel is
+#: noise-free: a record written by hand or by a model, where a still or straight stretch is no fault. A probe's
+#: noise is some 10 nm or more.
+NOISE_FREE = 1e-9
+
+
+def _jitter(values: np.ndarray) -> float:
+    return float(np.median(np.abs(np.diff(values[:64], 2))))
+
+
+def _live_channels(data: dict[str, np.ndarray], name: str, labels: dict) -> None:
+    """Refuse a measured record with a dead channel (flat beside a live one) or a clipped one (flat at an end).
+
+    Both faults are told by a channel holding exactly still where a probe's noise would move it, so a noise-free
+    record (written by hand or by a model) is not judged: its still stretches are the journal's.
+    """
+    live = {axis: _jitter(data[axis]) > NOISE_FREE for axis in ("x", "y")}
+    spans = {axis: float(np.ptp(data[axis])) for axis in ("x", "y")}
+    for axis, other in (("x", "y"), ("y", "x")):
+        column = labels.get(axis, axis)
+        if not live[axis] and live[other] and spans[axis] < DEAD_SHARE * spans[other]:
+            raise InputError(f"{name}: column {column!r} moves over {spans[axis] * 1e6:.3g} um while "
+                             f"{labels.get(other, other)!r} moves over {spans[other] * 1e6:.4g} um: a dead or "
+                             "disconnected probe (a drop moves the journal both ways)")
+        values = data[axis]
+        if not live[axis]:
+            continue
+        for end in (values.max(), values.min()):
+            at = np.flatnonzero(values == end)
+            # a run from the first sample is the levitated journal holding still (a noise-free record), not a clip
+            runs = [run for run in np.split(at, np.flatnonzero(np.diff(at) > 1) + 1) if run.size and run[0] > 0]
+            longest = max((run.size for run in runs), default=0)
+            if longest >= CLIPPED_RUN:
+                raise InputError(f"{name}: column {column!r} holds {end * 1e6:.6g} um for {longest} samples in a "
+                                 "row at its extreme: the probe or its recorder clipped (saturated) there; record "
+                                 "with a range that holds the whole orbit")
+
+
 def _refuse_without_drop(data: dict[str, np.ndarray], name: str, columns: str, span: float) -> None:
     """Refuse a record in which the journal never leaves its levitated spot: it ends before the drop.
 
@@ -248,7 +297,12 @@ def _checked(data: dict[str, np.ndarray], where: list[str], name: str, labels: d
     if rate < MIN_SAMPLING_RATE:
         raise InputError(f"{name}: column {label!r}: sampling rate {rate:.4g} Hz is below {MIN_SAMPLING_RATE:g} Hz, "
                          "too slow to resolve impacts lasting about 0.2 ms")
+    if rate > MAX_SAMPLING_RATE:
+        raise InputError(f"{name}: column {label!r}: sampling rate {rate:.4g} Hz over a record of "
+                         f"{(t[-1] - t[0]) * 1e3:.3g} ms, beyond the {MAX_SAMPLING_RATE:g} Hz a displacement probe "
+                         "records: is the column in s where its header says ms (or ms where it says us)?")
     _orbit_span(data, name, labels, written or {})
+    _live_channels(data, name, labels)
     coords = {"time": ("time", t, {"units": "s", "long_name": "Time of the record"})}
     variables = {
         "x": ("time", data["x"], {"units": "m", "long_name": "Journal centre x as measured (sensor frame)"}),

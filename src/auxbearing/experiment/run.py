@@ -201,6 +201,8 @@ def run_experiment(
     measured_summary["clearance_source"] = s_source
     warnings = _clearance_warnings(measured_ds, s_used, s_source, plane.line_stiffness, ball_params,
                                    measured_summary["impacts"])
+    if fitted is not None:  # a converged fit can still be no result: say why before its figures are read
+        warnings += [f"fit: {note}" for note in fitted["quality"]]
     measured_summary["peak_stress_if_clearance_minus_1um_MPa"] = sensitivity["-1"][1]
     measured_summary["peak_stress_if_clearance_plus_1um_MPa"] = sensitivity["+1"][1]
     measured_summary["peak_force_if_clearance_minus_1um_N"] = sensitivity["-1"][0]

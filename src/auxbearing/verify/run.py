@@ -231,7 +231,9 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         "criteria": [c.as_json() for c in design["criteria"]], "worst_margin": design["worst_margin"],
         "candidates": [{"bearing": label, "verdict": d["verdict"], "worst_margin": d["worst_margin"],
                         "criteria": [c.as_json() for c in d["criteria"]]} for label, d in others],
-        "recommendation": rec, "recommendation_note": skipped, "settings": settings, "wall_time_s": 0.0,
+        # the campaign's size as it ran: --quick and --campaign-samples replace the file's
+        "recommendation": rec, "recommendation_note": skipped,
+        "settings": {**settings, "campaign_samples": campaign_size(settings, quick, samples)}, "wall_time_s": 0.0,
         "convergence": converged, "figures": figures,
         "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
                    "candidates": [label for label, _ in candidate_list], "quick": quick},
