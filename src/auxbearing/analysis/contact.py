@@ -8,6 +8,7 @@ its single contact.
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -429,7 +430,7 @@ def contact_map(
         ball_load_N=float(ball_load),
         load_split="radial ball load / (contact pairs * cos(alpha)) per contact",
         ellipticity_method=method,
-        bearing=str(bearing.describe()),
+        bearing=json.dumps(bearing.describe(), default=str),  # JSON, as every other file stores it
         auxbearing_version=__version__,
         source="source paper Sec. II.B, Eq. 4-8, Fig. 2-3",
     )

@@ -556,7 +556,7 @@ def machine_summary(machine: Machine, run: Integration, ds: xr.Dataset, duration
         "rhs_evaluations": int(memory.evaluations[0]),
         "energy_balance_error": float((accounted - energy_in) / max(scale, 1e-300)),
         "largest_energy_error": float(watch.energy_error[0]),
-        "final_rotor_speed_rad_s": float(series["rotor_speed"].values[-1]), "planes": planes,
+        "final_rotor_speed_rad_s": float(series["rotor_speed"].values[-1]) + 0.0, "planes": planes,  # no -0.0
         "largest_excursion_m": max(p["max_excursion_um"] for p in planes) * 1e-6,
         "output_step_s": run.output_step, "output_decimated": run.decimated,
     }

@@ -49,7 +49,9 @@ def _bore_range(text: str | None):
         raise InputError.for_field("--bore", text, rule) from None
     if any(v <= 0.0 for v in values):
         raise InputError.for_field("--bore", text, rule)
-    low, high = (values[0], values[0]) if len(values) == 1 else sorted(values)
+    if len(values) == 2 and values[0] > values[1]:  # as contact-sweep refuses START > STOP
+        raise InputError.for_field("--bore", text, "a range runs from the smaller bore to the larger, e.g. 30-60")
+    low, high = (values[0], values[0]) if len(values) == 1 else values
     return low, high
 
 

@@ -114,6 +114,8 @@ def contact_sweep_command(bearing_spec, ball_load, angle_range, ratio_range, max
     from auxbearing.plots.contact import plot_contact_angle_sweep, plot_contact_map, plot_groove_ratio_sweep
     bearing = resolve_bearing(bearing_spec)
     load = _ball_load(ball_load)
+    if load <= 0.0:  # an unloaded ball has no contact: every stress of the sweep would be 0, its comparison 0 / 0
+        raise InputError.for_field("--ball-load", ball_load, "must be > 0 N for a sweep of contact stresses")
     angles = _grid("--angle-range", angle_range, lambda v: 0.0 <= v < 90.0, "contact angles must lie in [0, 90) deg",
                    max_points)
     ratios = _grid("--ratio-range", ratio_range, lambda v: v > 0.5, "groove ratios must exceed 0.5", max_points)

@@ -132,6 +132,12 @@ def _options_as_typed(params: dict):
         field, sep, rest = text.partition(" = ")
         if not sep:  # "touchdown.0.journal_radius: missing; ..." names no value
             field, _, rest = text.partition(": ")
+        if field == "drop.start_x, drop.start_y":  # the start point: both options as typed, whichever were
+            start = [("drop", "start_x"), ("drop", "start_y")]
+            typed = [f"--{_option_name(p)} = {params[(p.section, p.key)]!r}" for p in PARAMETERS
+                     if (p.section, p.key) in start and (p.section, p.key) in params]
+            if typed:
+                raise InputError(", ".join(typed) + ": " + rest.partition(": ")[2]) from None
         key = aliases.get(field) or tuple(field.split(".", 1))
         param = next((p for p in PARAMETERS if (p.section, p.key) == key), None)
         if param is None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import math
 from pathlib import Path
 
 import click
@@ -118,7 +119,10 @@ def static_command(bearing_spec, radial, axial, moment, axial_condition, tilt, b
     else:
         click.echo(f"Static safety s0     {result['safety_factor_s0']:.3g} (ISO 76: 4200 MPa)")
     if axial_condition == "located":
-        click.echo(f"Axial reaction       {float(ds['axial_reaction'][0]):.1f} N")
+        click.echo(f"Axial reaction       {result['axial_reaction_N']:.1f} N")
+    if tilt == "fixed":  # the ring held square: the shaft's support carries the moment the balls do not
+        mx, my = result["moment_reaction_Nm"]
+        click.echo(f"Moment reaction      {math.hypot(mx, my):.3g} N·m (about x {mx:.3g}, about y {my:.3g} N·m)")
     click.echo(f"Residual             {result['residual_N']:.2e} N")
 
 

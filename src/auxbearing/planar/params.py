@@ -173,9 +173,9 @@ class DropCase:
                                                                          self.output_step),
                                        f"must not exceed drop.duration = {self.duration:g} s")
         if math.hypot(self.start_x, self.start_y) >= self.clearance:
-            raise InputError.for_field(
-                "drop.start_x, drop.start_y", (self.start_x, self.start_y),
-                f"the journal must start inside the clearance circle |(x, y)| < {self.clearance * 1e3:g} mm")
+            raise InputError(
+                f"drop.start_x, drop.start_y = ({self.start_x * 1e3:g} mm, {self.start_y * 1e3:g} mm): the journal "
+                f"must start inside the clearance circle |(x, y)| < {self.clearance * 1e3:g} mm")
 
     def describe(self) -> dict:
         """Inputs with units in the keys."""
