@@ -40,3 +40,11 @@ def test_a_start_point_outside_the_clearance_names_the_option_typed():
     result = _run("drop", "--duration", "20 ms", "--start-y", "-0.25")
     assert result.exit_code == 2
     assert result.stderr.startswith("error: --start-y = '-0.25': the journal must start inside the clearance circle")
+
+
+def test_a_plain_ball_constant_reads_as_in_drop():
+    """drop reads a plain --ball-constant in N/m**1.5; static refused it as no stiffness."""
+    assert _run("static", "--radial", "1000", "--ball-constant", "1e10", "--json").exit_code == 0
+    result = _run("static", "--radial", "1000", "--ball-constant", "1e10 kg")
+    assert result.exit_code == 2
+    assert "--ball-constant = '1e10 kg': unit kilogram is not a ball constant" in result.stderr

@@ -8,6 +8,7 @@ each run simulates a short case. Errors are raised before any simulation.
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -141,8 +142,16 @@ def test_auto_offset_that_fell_back_to_a_fit_is_named(tmp_path):
 
 
 def test_fit_window_longer_than_the_record_names_the_option(tmp_path):
-    line = _refused(tmp_path, "--measured", str(_plain(tmp_path, 321)))
-    assert line == "error: --fit-window = '12 ms': longer than the record after the drop (1.24 ms)"
+    line = _refused(tmp_path, "--measured", str(_plain(tmp_path, 660)))
+    assert re.fullmatch(r"error: --fit-window = '12 ms': longer than the record after the drop \(8\.\d+ ms\)", line)
+
+
+def test_a_record_that_ends_before_the_journal_can_land_is_refused(tmp_path):
+    """1.24 ms after the drop, where a free fall across the 0.2 mm clearance takes sqrt(2 x 0.2e-3 / g) = 6.39 ms:
+    with --no-fit it ran and told the user to give the clearance."""
+    line = _refused(tmp_path, "--measured", str(_plain(tmp_path, 321)), "--no-fit")
+    assert line == ("error: plain.csv: the record ends 1.24 ms after the drop, before a free fall across the 0.2 mm "
+                    "clearance (6.39 ms) ends: it holds no touchdown (record longer after the drop)")
 
 
 def test_cutoff_above_the_sampling_is_quoted_as_typed(tmp_path):

@@ -259,14 +259,10 @@ def stribeck_discrete_constant(ball_count: int) -> float:
 def _ball_constant(value: object) -> float | None:
     if value is None:
         return None
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        magnitude = float(value)
-    else:
-        try:
-            magnitude = float(ureg.Quantity(str(value)).to("N/m**1.5").magnitude)
-        except Exception:  # pint raises several unrelated types for malformed text
-            raise InputError.for_field(
-                "ball_constant", value, "must be a stiffness such as '1.71e10 N/m**1.5'") from None
+    from auxbearing.common.params import convert
+
+    # a plain number is in N/m**1.5, as drop's --ball-constant reads it
+    magnitude = convert("ball_constant", value, "ball_constant", "N/m**1.5")
     if not math.isfinite(magnitude) or magnitude <= 0.0:
         raise InputError.for_field("ball_constant", value, "must be > 0 N/m^1.5 and finite")
     return magnitude

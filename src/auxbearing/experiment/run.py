@@ -109,6 +109,24 @@ def _truth(attrs: dict) -> dict:
     return out
 
 
+#: Standard gravity [m/s^2] (the free fall a record must at least span).
+GRAVITY = 9.80665
+
+
+def _long_enough(orbit: xr.Dataset, clearance: float, name) -> None:
+    """Refuse a record that ends before the journal can have fallen its clearance: it shows no touchdown.
+
+    A free fall across the radial clearance s takes sqrt(2 s / g); a record shorter than that after the drop has
+    no impact in it, whatever the fit or the figures would make of it.
+    """
+    after = float(orbit.time.values[-1])
+    fall = math.sqrt(2.0 * clearance / GRAVITY)
+    if after < fall:
+        raise InputError(f"{name or 'the measured file'}: the record ends {after * 1e3:.3g} ms after the drop, "
+                         f"before a free fall across the {clearance * 1e3:g} mm clearance ({fall * 1e3:.3g} ms) "
+                         "ends: it holds no touchdown (record longer after the drop)")
+
+
 def run_experiment(
     measured: str | Path | xr.Dataset,
     bearing: str | BearingGeometry = "QJ202",
@@ -166,6 +184,7 @@ def run_experiment(
     rotor = rotor or Rotor()
     case = case or DropCase()
     orbit, info = preprocess(data, preprocessing)
+    _long_enough(orbit, clearance if clearance is not None else case.clearance, data.attrs.get("source_file"))
     if "speed" in orbit:
         near = np.abs(orbit.time.values) <= 1e-3
         case = replace(case, speed=float(np.median(orbit.speed.values[near])))
