@@ -21,7 +21,7 @@ def test_a_sweep_at_no_ball_load_is_refused(tmp_path):
 def test_the_support_s_reactions_are_reported():
     """Held square, the ring carries no moment: the shaft's support takes the whole 2 N m (the balls' loads are
     those of no moment, 238.8 N at most); located, the shoulder's 793.2 N of the 7202 under 1 kN radial."""
-    result = _run("static", "--radial", "1000", "--moment", "2", "--tilt", "fixed", "--json")
+    result = _run("static", "--radial", "1000", "--moment", "2", "--tilt", "fixed", "--json")  # reactions: held only
     mx, my = json.loads(result.stdout)["moment_reaction_Nm"]
     assert abs(mx) < 1e-9 and abs(abs(my) - 2.0) < 1e-9
     result = _run("static", "--bearing", "7202", "--radial", "1000", "--axial-condition", "located", "--tilt",

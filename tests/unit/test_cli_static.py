@@ -71,7 +71,7 @@ def test_angular_contact_located_reports_reaction():
         (["--radial", "5 kg"], ("error: --radial = '5 kg': unit kilogram is not a force",)),
         (["--moment", "3 N"], ("error: --moment = '3 N': unit newton is not a moment",)),
         (["--bearing", "nope"], ("error: --bearing = 'nope': unknown; catalogue names are QJ202",)),
-        (["--ball-constant", "abc"], ("error: --ball-constant = 'abc': must be a stiffness such as",)),
+        (["--ball-constant", "abc"], ("error: --ball-constant = 'abc': cannot read it as a ball constant such as",)),
     ],
 )
 def test_user_mistakes_print_one_line_and_exit_2(args, message):

@@ -692,7 +692,7 @@ def summary(ds: xr.Dataset, case: int = 0) -> dict:
     --------
     >>> s = summary(load_distribution("QJ202", axial=500, radial=1000))
     >>> sorted(s)[:3], len(s["balls"]), len(s["balls"][0]["pairs"])
-    (['axial_displacement_um', 'axial_reaction_N', 'balls'], 11, 2)
+    (['axial_displacement_um', 'balls', 'max_contact_load_N'], 11, 2)
     """
     c = ds.isel(case=case)
     radial, tilt = (float(v[0]) for v in planar_components(ds.isel(case=[case])))
@@ -709,6 +709,13 @@ def summary(ds: xr.Dataset, case: int = 0) -> dict:
             } for k in range(c.sizes["pair"])],
         })
     s0 = float(c["safety_factor_s0"])
+    # what the supports of a located ring or a square-held one carry; a ring free in both has none, and keeps the
+    # keys the static issue named
+    held = {}
+    if ds.attrs.get("axial_condition") == "located":
+        held["axial_reaction_N"] = float(c["axial_reaction"]) + 0.0
+    if ds.attrs.get("tilt_condition") == "fixed":
+        held["moment_reaction_Nm"] = [float(c["moment_reaction_x"]) + 0.0, float(c["moment_reaction_y"]) + 0.0]
     # + 0.0 turns a negative zero into zero; an unloaded ring has no stress, so no s0 (None)
     return {
         "axial_displacement_um": float(c["axial_displacement"]) * 1e6 + 0.0,
@@ -718,10 +725,8 @@ def summary(ds: xr.Dataset, case: int = 0) -> dict:
         "max_stress_MPa": float(c["max_stress"]) / 1e6,
         "safety_factor_s0": s0 if math.isfinite(s0) else None,
         "residual_N": float(c["residual"]),
-        # what the supports of a located ring or a square-held one carry (0 where that motion is free)
-        "axial_reaction_N": float(c["axial_reaction"]) + 0.0,
-        "moment_reaction_Nm": [float(c["moment_reaction_x"]) + 0.0, float(c["moment_reaction_y"]) + 0.0],
         "balls": balls,
+        **held,
     }
 
 
