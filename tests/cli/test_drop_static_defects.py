@@ -48,3 +48,26 @@ def test_a_plain_ball_constant_reads_as_in_drop():
     result = _run("static", "--radial", "1000", "--ball-constant", "1e10 kg")
     assert result.exit_code == 2
     assert "--ball-constant = '1e10 kg': unit kilogram is not a ball constant" in result.stderr
+
+
+def test_a_clearance_a_bearing_cannot_take_names_the_list_as_typed(tmp_path):
+    """It named touchdown.0.radial_clearance, a key the user never wrote."""
+    result = _run("drop-compare", "--clearances", "0.2,20", "--out", str(tmp_path / "dc"))
+    assert result.exit_code == 2 and not (tmp_path / "dc").exists()
+    assert result.stderr.startswith("error: --clearances = '0.2,20': 20 mm with QJ202: must be below the race bore")
+
+
+def test_a_count_with_a_word_for_its_unit_is_told_to_be_a_plain_number():
+    import copy
+
+    import pytest
+
+    from auxbearing.common.errors import InputError
+    from auxbearing.machine.files import machine_table
+    from auxbearing.machine.model import machine_from_mapping
+
+    data, name, base = machine_table("paper_rig")
+    data = copy.deepcopy(data)
+    data.setdefault("life", {})["required_drops"] = "10 drops"
+    with pytest.raises(InputError, match=r"^life.required_drops = '10 drops': must be a plain number, e.g. 10$"):
+        machine_from_mapping(data, name, base)

@@ -151,6 +151,22 @@ def _options_as_typed(params: dict):
         raise InputError.for_field(option, params[key], rule) from None
 
 
+def _clearances_fit(names, s_list, rotor, case, typed: str) -> None:
+    """Refuse, before any run, a clearance one of the bearings cannot take, naming --clearances as typed."""
+    from dataclasses import replace
+
+    from auxbearing.planar.rig import planar_machine
+
+    for name in names:
+        bearing = resolve_bearing(name, option="bearing")
+        for s in s_list:
+            try:
+                planar_machine(bearing, rotor, replace(case, clearance=s))
+            except InputError as err:  # the plane's key names what the list gave: say it as the option
+                rule = str(err).partition(": ")[2] or str(err)
+                raise InputError.for_field("--clearances", typed, f"{s * 1e3:g} mm with {name}: {rule}") from None
+
+
 def paper_machine(ctx: click.Context, bearing_spec: str, config: Path | None, params: dict):
     """The paper's drop as :func:`build_inputs` gives it and its machine, built before any work is done."""
     from auxbearing.planar.rig import planar_machine
@@ -516,6 +532,7 @@ def drop_compare_command(ctx, config, params, bearings, clearances, frictions, p
     s_list = _list("--clearances", clearances, "length", "mm")
     for s in s_list:
         check(next(p for p in PARAMETERS if p.key == "clearance"), s, "--clearances", clearances)
+    _clearances_fit(names, s_list, rotor, case, clearances)
     mu_list = _list("--frictions", frictions, "dimensionless", None)
     for mu in mu_list:
         check(next(p for p in PARAMETERS if p.key == "sliding_friction"), mu, "--frictions", frictions)

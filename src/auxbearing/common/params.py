@@ -215,6 +215,9 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
         if key not in table:
             raise unknown(prefix + key, value, key, table)
         param = table[key]
+        if param.rule in ("count", "optional_count") and isinstance(value, str) and _bare_number(value) is None:
+            # a count has no unit to read ("10 drops" is no dimensionless quantity to pint)
+            raise InputError.for_field(prefix + key, value, "must be a plain number, e.g. 10")
         # a number, or a number in quotes ("25"), is no quantity: read as SI it made 25 degC 25 K
         number = value if isinstance(value, (int, float)) and not isinstance(value, bool) else _bare_number(value)
         if number is not None and param.dimension not in ("dimensionless",) and si_unit(param.dimension):
