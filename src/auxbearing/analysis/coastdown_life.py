@@ -25,6 +25,7 @@ Per plane and drop (:func:`plane_life`):
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -53,10 +54,15 @@ def _factors(bearing, axial: float = 0.0) -> tuple:
         nearest = min(angles, key=lambda a: abs(a - math.degrees(bearing.contact_angle)))
         return cf.ANGULAR_CONTACT_FACTORS[nearest]
     # deep groove: the thrust it carries loads its balls at an angle the table's e and Y follow (ISO 281 Table 3)
+    return cf.deep_groove_factors(abs(axial) * _f0_over_c0(bearing))
+
+
+@functools.lru_cache(maxsize=64)
+def _f0_over_c0(bearing) -> float:
+    """f0 / C0 of a deep-groove bearing [1/N] (ISO 76), once per bearing: a coast-down asks it every window."""
     from auxbearing.bearings.ratings import iso76_f0, static_load_rating
 
-    f0 = iso76_f0(bearing.ball_diameter / bearing.pitch_diameter)
-    return cf.deep_groove_factors(f0 * abs(axial) / static_load_rating(bearing))
+    return iso76_f0(bearing.ball_diameter / bearing.pitch_diameter) / static_load_rating(bearing)
 
 
 def equivalent_load(bearing, radial: float, axial: float) -> float:

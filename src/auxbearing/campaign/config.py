@@ -157,30 +157,41 @@ class Campaign:
         return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
+def _map_strings(value, change):
+    """``value`` with ``change`` applied to every string in it (tables of tables and lists walked)."""
+    if isinstance(value, dict):
+        return {k: _map_strings(v, change) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_map_strings(v, change) for v in value]
+    return change(value) if isinstance(value, str) else value
+
+
+def _named_file(text: str, base) -> Path | None:
+    """The existing file ``text`` names (absolute, or relative to ``base``), or None."""
+    if not text.strip() or "\n" in text:
+        return None
+    path = Path(text.strip()).expanduser()
+    if not path.is_absolute():
+        if base is None:
+            return None
+        path = Path(base) / path
+    try:
+        return path if path.is_file() else None
+    except OSError:  # a name too long for a path, say
+        return None
+
+
 def _files_in(tables, base: str | None) -> dict[str, Path]:
     """Every string in ``tables`` that names an existing file (absolute, or relative to ``base``)."""
     found: dict[str, Path] = {}
 
-    def walk(value) -> None:
-        if isinstance(value, dict):
-            for item in value.values():
-                walk(item)
-        elif isinstance(value, list):
-            for item in value:
-                walk(item)
-        elif isinstance(value, str) and value.strip() and "\n" not in value:
-            path = Path(value.strip()).expanduser()
-            if not path.is_absolute():
-                if base is None:
-                    return
-                path = Path(base) / path
-            try:
-                if path.is_file():
-                    found[value] = path
-            except OSError:  # a name too long for a path, say
-                pass
+    def note(text: str) -> str:
+        path = _named_file(text, base)
+        if path is not None:
+            found[text] = path
+        return text
 
-    walk(tables)
+    _map_strings(tables, note)
     return found
 
 
@@ -194,14 +205,8 @@ def _file_hash(path: Path) -> str:
 
 
 def _swap_strings(value, swaps: dict[str, str]):
-    """``value`` with every string in ``swaps`` replaced by its swap (tables of tables and lists walked)."""
-    if isinstance(value, dict):
-        return {k: _swap_strings(v, swaps) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_swap_strings(v, swaps) for v in value]
-    if isinstance(value, str) and value in swaps:
-        return f"file {swaps[value]}"
-    return value
+    """``value`` with every string in ``swaps`` replaced by its content hash."""
+    return _map_strings(value, lambda text: f"file {swaps[text]}" if text in swaps else text)
 
 
 def read_campaign(path: str | Path) -> Campaign:
@@ -276,18 +281,13 @@ def _anchored(value, folder: Path):
     The machine's own files are read relative to the machine's folder; a bearing file the campaign file names is
     the user's, beside the campaign file.
     """
-    if isinstance(value, dict):
-        return {k: _anchored(v, folder) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_anchored(v, folder) for v in value]
-    if isinstance(value, str) and value.strip() and not Path(value.strip()).expanduser().is_absolute():
-        try:
-            path = folder / value.strip()
-            if path.is_file():
-                return str(path.resolve())
-        except OSError:
-            pass
-    return value
+    def anchor(text: str) -> str:
+        if Path(text.strip()).expanduser().is_absolute():
+            return text
+        path = _named_file(text, folder)
+        return text if path is None else str(path.resolve())
+
+    return _map_strings(value, anchor)
 
 
 def resolve_key(key: object, n_planes: int, where: str) -> tuple[str, str, tuple[int, ...], Param]:
