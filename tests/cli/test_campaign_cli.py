@@ -195,7 +195,7 @@ def test_kill_and_resume_gives_the_store_of_an_uninterrupted_run(tmp_path):
     first = _start(config, store)
     _stop_when(first, store, 2, signal.SIGINT)
     _, err = first.communicate(timeout=120)
-    assert first.returncode == 130 and "run the same command to resume" in err
+    assert first.returncode == 130 and "run the same command to resume" in err, err
     after_interrupt = _completed_batches(store)
     second = _start(config, store)
     _stop_when(second, store, after_interrupt + 2, signal.SIGKILL)

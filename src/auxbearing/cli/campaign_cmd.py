@@ -77,12 +77,14 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
         with ProgressReporter(f"campaign {campaign.name}", quiet) as reporter:
             result = run_campaign(campaign, store, scheduler, workers,
                                   progress=lambda p: reporter(*_status(p)))
+    except Exception as err:  # an interrupt the cluster's client turned into an error of its own is still one
+        if not interrupt.requested() or isinstance(err, InputError):
+            raise
+        _interrupted(_stored(store), campaign.runs, store)
     except KeyboardInterrupt as stop:  # in the batches, or while the cluster starts or winds down
         done, runs = (stop.done, stop.runs) if isinstance(stop, CampaignInterrupted) else (
             _stored(store), campaign.runs)
-        click.echo(f"interrupted: {done} of {runs} samples are in {store}; run the same command to "
-                   "resume", err=True)
-        raise SystemExit(EXIT_INTERRUPTED) from None
+        _interrupted(done, runs, store)
     finally:
         signal.signal(signal.SIGTERM, previous)
     if result["lost"]:
@@ -98,6 +100,11 @@ def campaign_command(config, store, scheduler, workers_text, as_json, quiet):
         echo_json(out)
         return
     _print(out, stats)
+
+
+def _interrupted(done: int, runs: int, store) -> None:
+    click.echo(f"interrupted: {done} of {runs} samples are in {store}; run the same command to resume", err=True)
+    raise SystemExit(EXIT_INTERRUPTED) from None
 
 
 def _stored(store) -> int:

@@ -23,6 +23,14 @@ def handler(signum, frame) -> None:
     raise KeyboardInterrupt
 
 
+def requested() -> bool:
+    """Whether an interrupt was asked for since :func:`watching` began.
+
+    Its KeyboardInterrupt may have been turned into another exception by the library it hit (a Dask client's).
+    """
+    return _requested.is_set()
+
+
 def check() -> None:
     """Raise KeyboardInterrupt if an interrupt was requested (and perhaps swallowed) since :func:`watching`."""
     if _requested.is_set():
