@@ -59,10 +59,16 @@ def _factors(bearing, axial: float = 0.0) -> tuple:
 
 @functools.lru_cache(maxsize=64)
 def _f0_over_c0(bearing) -> float:
-    """f0 / C0 of a deep-groove bearing [1/N] (ISO 76), once per bearing: a coast-down asks it every window."""
-    from auxbearing.bearings.ratings import iso76_f0, static_load_rating
+    """f0 / C0 of a deep-groove bearing [1/N] (ISO 76), once per bearing: a coast-down asks it every window.
 
-    return iso76_f0(bearing.ball_diameter / bearing.pitch_diameter) / static_load_rating(bearing)
+    Table 3's f0 Fa / C0 is Fa over Z D_w^2 (N and mm): how far the thrust turns the balls' contact angle, a matter
+    of the geometry alone. A hybrid's C0 is lowered for its stiffer balls (the square of the compliance ratio,
+    :func:`auxbearing.bearings.ratings.static_load_rating_si`), which the table does not mean: it is taken out again.
+    """
+    from auxbearing.bearings.ratings import compliance_ratio, iso76_f0, static_load_rating
+
+    steel_c0 = static_load_rating(bearing) / compliance_ratio(bearing) ** 2
+    return iso76_f0(bearing.ball_diameter / bearing.pitch_diameter) / steel_c0
 
 
 def equivalent_load(bearing, radial: float, axial: float) -> float:

@@ -115,7 +115,9 @@ def _series_name(base: str) -> tuple[str | None, str]:
 #: Suffix words that say what the balls are made of: ignored as maker codes, they would leave the balls steel.
 _MATERIAL_WORDS = ("hybrid", "ceramic", "si3n4", "nitride", "zirconia", "zro2")
 #: ISO 5753-1 internal clearance groups other than normal (CN): the catalogue's geometry has the normal one.
-_CLEARANCE_GROUP = re.compile(r"(?:^|[^A-Z0-9])C([2-5])(?![0-9])|(?<=[0-9])C([2-5])(?![0-9])")
+#: Makers write it apart ('6208 C3', '6208/C3') or glued to a seal, shield or cage code ('6208-2ZC3', NSK's
+#: '6208ZZC3', NTN's '6208LLUC3', '6208 MC3'); no ball-bearing suffix code has a C followed by 2-5 otherwise.
+_CLEARANCE_GROUP = re.compile(r"C([2-5])(?![0-9])")
 
 
 #: A maker's pair suffix inside a designation's suffix: DB, DF or DT, maybe after a 2 (two bearings), maybe with the
@@ -143,7 +145,9 @@ def _check_suffix(base: str, designation: str, suffix: str, field: str) -> None:
     for word in words:
         letters = re.sub(r"[0-9]", "", word)
         near = difflib.get_close_matches(word, _MATERIAL_WORDS, n=1, cutoff=0.75)
-        if near or any(m in word for m in _MATERIAL_WORDS) or (letters and letters in ("ceramic", "hybrid")):
+        # SKF writes silicon-nitride balls as HC in its super-precision suffixes ('7014 CD/HCP4A')
+        hc = word.startswith("hc")
+        if hc or near or any(m in word for m in _MATERIAL_WORDS) or (letters and letters in ("ceramic", "hybrid")):
             raise InputError.for_field(field, base, "a ball material is not read from a maker's suffix (the balls "
                                        "would be steel); write the word 'hybrid' apart for silicon-nitride balls, "
                                        f"e.g. '{designation} hybrid'")
@@ -154,7 +158,7 @@ def _check_suffix(base: str, designation: str, suffix: str, field: str) -> None:
                                    f"e.g. '{designation} DB light'")
     group = _CLEARANCE_GROUP.search(suffix.upper())
     if group:
-        c = group.group(1) or group.group(2)
+        c = group.group(1)
         raise InputError.for_field(field, base, f"internal clearance group C{c} is not in the catalogue's geometry "
                                    "(it has the normal group, CN); give the bearing without it, or a bearing file "
                                    "with its own diametral_clearance")

@@ -265,7 +265,7 @@ def duplex_set(row: BearingGeometry, arrangement: str, preload: object = None, s
     >>> round(pair.preload_force), round(pair.row_spacing * 1e3, 1)
     (1000, 23.0)
     """
-    from auxbearing.bearings.ratings import static_load_rating
+    from auxbearing.bearings.ratings import compliance_ratio, static_load_rating
     from auxbearing.common.units import ureg
 
     arrangement = str(arrangement).upper()
@@ -281,7 +281,9 @@ def duplex_set(row: BearingGeometry, arrangement: str, preload: object = None, s
     if text in (None, "none", "zero", 0, 0.0):
         offset, label = 0.0, "none"
     elif text in PRELOAD_CLASSES:
-        force = PRELOAD_CLASSES[text] * static_load_rating(row)
+        # a share of the steel row's C0: the class is a force the makers give whatever the balls are made of,
+        # while a hybrid's C0 is lowered for its stiffer balls (auxbearing.bearings.ratings)
+        force = PRELOAD_CLASSES[text] * static_load_rating(row) / compliance_ratio(row) ** 2
         offset, label = offset_for_preload(row, force), text
     elif isinstance(text, (int, float)):
         offset, label = offset_for_preload(row, float(text)), f"{float(text):g} N"
@@ -300,6 +302,11 @@ def duplex_set(row: BearingGeometry, arrangement: str, preload: object = None, s
 
 
 def _quantity(field: str, value: object, ureg):
+    from auxbearing.common.units import ambiguous
+
+    if ambiguous(str(value)):  # '500 N 2' is 1000 N to pint, '±5 um' +5 um
+        raise InputError.for_field(field, value, "one number and its unit, such as '500 N' or '10 um' (no second "
+                                   "number, no commas, no ±)")
     try:
         return ureg.Quantity(str(value))
     except Exception:  # pint raises several kinds for text it cannot read

@@ -27,6 +27,11 @@ BEARING_TYPES: dict[str, dict] = {
 }
 
 
+#: Loosest groove radius over ball diameter taken [-]: ball bearings' grooves lie within about 0.505-0.57 (Harris &
+#: Kotzalas 2007, Vol. 1, Ch. 2), and the source paper sweeps its Fig. 3 to 0.6.
+MAX_GROOVE_RATIO = 0.6
+
+
 @dataclass(frozen=True)
 class BearingGeometry:
     """Internal geometry and materials of a ball bearing (all SI).
@@ -96,6 +101,11 @@ class BearingGeometry:
             if ratio <= 0.5:
                 raise InputError.for_field(
                     key, ratio, "must be > 0.5 (groove radius larger than ball radius)"
+                )
+            if ratio > MAX_GROOVE_RATIO:  # '52' for 0.52: a flat race, whose stresses would be printed as results
+                raise InputError.for_field(
+                    key, ratio, f"must be at most {MAX_GROOVE_RATIO:g} (groove radius over ball diameter, e.g. 0.52; "
+                    "ball bearings' grooves lie within about 0.505-0.57)"
                 )
         if self.pitch_diameter <= self.ball_diameter:
             raise InputError.for_field(

@@ -22,10 +22,12 @@
 
 from __future__ import annotations
 
+import contextlib
 import math
 
 import numpy as np
 
+from auxbearing.common.errors import InputError
 from auxbearing.core import fatigue as cf
 from auxbearing.core import hertz
 
@@ -80,6 +82,24 @@ def f0_exact(gamma, compliance: float | None = None):
         loads.append((ISO76_STRESS / coefficient) ** 3)
     out = np.minimum(*loads) / (ISO76_DISTRIBUTION * _MM**2)
     return out.reshape(np.shape(gamma)) if np.ndim(gamma) else float(out[0])
+
+
+@contextlib.contextmanager
+def _within_the_standards(bearing):
+    """Say a missing load rating as bad input on the ball diameter, where the kernels raise a plain ValueError.
+
+    A ball set whose D_w cos(alpha) / D_pw lies outside ISO 281's and ISO 76's tables has no load rating.
+    """
+    try:
+        yield
+    except ValueError:
+        gamma = bearing.ball_diameter * math.cos(bearing.contact_angle) / bearing.pitch_diameter
+        raise InputError.for_field(
+            "ball_diameter", f"{bearing.ball_diameter * 1e3:g} mm",
+            f"with a pitch diameter of {bearing.pitch_diameter * 1e3:g} mm and a contact angle of "
+            f"{math.degrees(bearing.contact_angle):g} deg, D_w cos(alpha)/D_pw = {gamma:.3g} lies outside the "
+            f"tables of ISO 281 ({cf.ISO281_FC_GAMMA[0]:g}-{cf.ISO281_FC_GAMMA[-1]:g}) or ISO 76 (0-"
+            f"{ISO76_F0_STEP * (len(ISO76_F0) - 1):g}), so {bearing.name} has no load rating") from None
 
 
 def iso76_f0(gamma: float) -> float:
@@ -154,8 +174,9 @@ def static_load_rating(bearing) -> float:
     >>> round(static_load_rating(get_bearing("6205")) / 1e3, 2)   # SKF: 7.8 kN
     7.85
     """
-    return static_load_rating_si(bearing.ball_diameter, bearing.pitch_diameter, bearing.ball_count,
-                                 bearing.contact_angle, rating_rows(bearing), compliance_ratio(bearing))
+    with _within_the_standards(bearing):
+        return static_load_rating_si(bearing.ball_diameter, bearing.pitch_diameter, bearing.ball_count,
+                                     bearing.contact_angle, rating_rows(bearing), compliance_ratio(bearing))
 
 
 def dynamic_load_rating(bearing) -> float:
@@ -169,8 +190,9 @@ def dynamic_load_rating(bearing) -> float:
     >>> round(dynamic_load_rating(get_bearing("209")))
     32687
     """
-    base = cf.dynamic_load_rating(bearing.ball_diameter, bearing.pitch_diameter, bearing.ball_count,
-                                  bearing.contact_angle, rating_rows(bearing))
+    with _within_the_standards(bearing):
+        base = cf.dynamic_load_rating(bearing.ball_diameter, bearing.pitch_diameter, bearing.ball_count,
+                                      bearing.contact_angle, rating_rows(bearing))
     return base * getattr(bearing, "rating_factor", 1.0)
 
 

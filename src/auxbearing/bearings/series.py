@@ -264,7 +264,7 @@ def _build(series: Series, code: str, entries: dict) -> CatalogueEntry:
     steel = _steel()
     sources = series_data()["sources"]
     text = (f"{name} ({series.label}): {d * 1e3:g} x {big_d * 1e3:g} x {width * 1e3:g} mm from ISO 15"
-            + (f"; C = {c / 1e3:g} kN, C0 = {c0 / 1e3:g} kN from {sources[source].split(',')[0]}"
+            + (f"; C = {c / 1e3:g} kN, C0 = {c0 / 1e3:g} kN from {sources[source].split(',')[0].split(': ')[0]}"
                if c is not None and c0 is not None else "")
             + f". Estimated (auxbearing.bearings.series {rule.split(':')[0]}): {z} balls of {dw * 1e3:.3f} mm on "
             f"D_pw {dm * 1e3:g} mm, groove radii {INNER_GROOVE_RATIO:g}/{OUTER_GROOVE_RATIO:g} D_w, "

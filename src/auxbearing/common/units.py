@@ -115,12 +115,23 @@ def parse_quantity(field: str, value: object, dimension: str, default_unit: str 
 
 
 #: Text pint would read otherwise than a person meant: a decimal comma or a thousands separator ("1,5" is 15 to
-#: pint), and numbers side by side ("2 3 s", "1 000 s"), which pint multiplies.
-_AMBIGUOUS = re.compile(r",|\d\s+[-+]?\d[\d.]*(?:[eE][-+]?\d+)?(?=\s|$|[A-Za-z])")
+#: pint), numbers side by side ("2 3 s", "1 000 s") or a number after the unit ("13 um 2" is 26 um), which pint
+#: multiplies, and a tolerance ("±5 um", read as +5 um). An exponent is written after ^ or ** ("N/m^1.5").
+_AMBIGUOUS = re.compile(r",|±|\d\s+[-+]?\d[\d.]*(?:[eE][-+]?\d+)?(?=\s|$|[A-Za-z])"
+                        r"|[A-Za-z)\]]\s+[-+]?\.?\d")
+
+
+def ambiguous(text: str) -> bool:
+    """Whether pint would read ``text`` otherwise than a person meant (:data:`_AMBIGUOUS`).
+
+    >>> ambiguous("13 um 2"), ambiguous("2 3 s"), ambiguous("1,5 s"), ambiguous("1e5 N/m^1.5")
+    (True, True, True, False)
+    """
+    return bool(_AMBIGUOUS.search(text))
 
 
 def _parse_string(field: str, text: str, dimension: str, default_unit: str | None) -> pint.Quantity:
-    if _AMBIGUOUS.search(text):
+    if ambiguous(text):
         raise InputError.for_field(field, text, "one number with a decimal point and its unit, such as "
                                                 f"'{_example_value(dimension)}' (no commas, no spaces inside it)")
     try:
