@@ -105,3 +105,12 @@ def test_the_listing_names_the_7208_s_source_whole():
     assert result.exit_code == 0
     text = " ".join(result.stdout.split())
     assert "C = 34.5 kN, C0 = 24 kN from SKF 7208 BECBP as the maker publishes it." in text
+
+
+@pytest.mark.parametrize(("name", "expected"), [("7202", 1690.0), ("7202 DB", 2740.0), ("7208", 1490.0),
+                                                ("7208 DB", 2430.0), ("QJ208", 2740.0)])
+def test_a_35_deg_bearing_takes_iso_281_table_3_s_35_deg_row(name, expected):
+    """Fr 1 kN, Fa 2 kN. The 35 deg 7202 took the 30 deg row (1910 N single, 3110 N as a DB pair): ISO 281 Table 3
+    gives e 0.95, X 0.37, Y 0.66 single row and X 0.60, Y 1.07 double row at 35 deg, 0.35 / 0.57 and 0.57 / 0.93
+    at 40 deg (hand: 0.37 x 1000 + 0.66 x 2000 = 1690 N)."""
+    assert equivalent_load(get_bearing(name), 1000.0, 2000.0) == pytest.approx(expected)

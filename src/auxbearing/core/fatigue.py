@@ -65,15 +65,18 @@ PALMGREN_DENT_COEFFICIENT = 1.3e-7 * 1e-12
 #: ISO 76:2006: at C0 the permanent set of ball and raceway is about 1e-4 of the ball diameter.
 ISO76_DENT_RATIO = 1e-4
 #: Equivalent-load factors (e, X1, Y1, X2, Y2): P = X1 Fr + Y1 Fa for Fa/Fr <= e, else X2, Y2.
-#: Single-row angular contact from NSK Rolling Bearings CAT. No. E1102e (ISO 281 Table 3 values);
+#: Single-row angular contact, ISO 281:2007 Table 3 at 20-45 deg (as NSK Rolling Bearings CAT. No. E1102e reprints
+#: it; a bearing takes the row of the nearest tabulated angle, the smaller one on a tie, whose Y is the larger);
 #: four-point contact from SKF Rolling bearings 2018, p. 399 (the ISO 281 double-row 35 deg row).
-ANGULAR_CONTACT_FACTORS = {25: (0.68, 1.0, 0.0, 0.41, 0.87), 30: (0.80, 1.0, 0.0, 0.39, 0.76),
-                           40: (1.14, 1.0, 0.0, 0.35, 0.57)}
+ANGULAR_CONTACT_FACTORS = {20: (0.57, 1.0, 0.0, 0.43, 1.00), 25: (0.68, 1.0, 0.0, 0.41, 0.87),
+                           30: (0.80, 1.0, 0.0, 0.39, 0.76), 35: (0.95, 1.0, 0.0, 0.37, 0.66),
+                           40: (1.14, 1.0, 0.0, 0.35, 0.57), 45: (1.34, 1.0, 0.0, 0.33, 0.50)}
 FOUR_POINT_FACTORS = (0.95, 1.0, 0.66, 0.6, 1.07)
 #: A matched pair back-to-back or face-to-face: the double-row factors of ISO 281 Table 3 for the set's Fr and
 #: Fa, as NSK CAT. No. E1102e lists them for DB and DF pairs (a tandem pair takes the single-row factors).
-ANGULAR_CONTACT_PAIR_FACTORS = {25: (0.68, 1.0, 0.92, 0.67, 1.41), 30: (0.80, 1.0, 0.78, 0.63, 1.24),
-                                40: (1.14, 1.0, 0.55, 0.57, 0.93)}
+ANGULAR_CONTACT_PAIR_FACTORS = {20: (0.57, 1.0, 1.09, 0.70, 1.63), 25: (0.68, 1.0, 0.92, 0.67, 1.41),
+                                30: (0.80, 1.0, 0.78, 0.63, 1.24), 35: (0.95, 1.0, 0.66, 0.60, 1.07),
+                                40: (1.14, 1.0, 0.55, 0.57, 0.93), 45: (1.34, 1.0, 0.47, 0.54, 0.81)}
 
 
 #: ISO 281:2007 Table 3, single-row radial deep-groove ball bearings: f0 Fa / C0, then e and Y for Fa / Fr > e
