@@ -23,6 +23,9 @@ from auxbearing.machine.model import machine_from_mapping
 
 #: Simulated seconds of the comparison in the test suite.
 HORIZON = 4.0
+#: Longer where the handover comes later: the 7208 DB pair's races turn two rows of oil (Palmgren's M_0 of both),
+#: which spins its non-drive end's race up to rolling only 3.8 s after the failure (0.99 of the rolling speed).
+HORIZONS = {"blower:7208 DB light": 8.0}
 
 
 def _machine(case: str):
@@ -98,7 +101,7 @@ IN_PASSAGE = ("paper_rig", "paper_rig_two_planes")
 @pytest.mark.parametrize("case", CASES)
 def test_reduced_model_agrees_with_full_dynamics(case):
     machine = _machine(case)
-    both = compare(machine, HORIZON)
+    both = compare(machine, HORIZONS.get(case, HORIZON))
     auto, full = both["auto"], both["full"]
     assert auto["verdict"] == full["verdict"] == "ok"
     if case in IN_PASSAGE:

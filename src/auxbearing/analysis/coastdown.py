@@ -211,10 +211,12 @@ def plane_network(machine: Machine, k: int, contact_load: float):
         # heat leaves the journal along the shaft to the rotor body, taken as a sink at ambient
         length = max(abs(plane.position), MIN_SHAFT_LENGTH)
         journal_to_ambient = SHAFT_CONDUCTIVITY * math.pi * plane.journal_radius**2 / length
+    # a matched pair is both its rows, their rings lumped over the set's width (spacer included)
+    set_width = None if plane.bearing_set is None else plane.bearing_set.width
     return build_network(plane.bearing, plane.journal_radius, contact_load=max(contact_load, 1.0),
                          housing_mass=plane.housing_mass, housing_to_ambient=plane.housing_to_ambient,
                          journal_to_ambient=journal_to_ambient, vacuum=coast.vacuum, emissivity=plane.emissivity,
-                         ambient_temperature=coast.ambient_temperature)
+                         ambient_temperature=coast.ambient_temperature, rows=plane.rows, set_width=set_width)
 
 
 def _static_share(machine: Machine, k: int) -> float:
@@ -662,7 +664,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     drop_ds = machine_dataset(machine, run.model, run.grid, run.output_step)
     drop = MachineRun(drop_ds, machine_summary(machine, run, drop_ds, drop_length))
     drop_ds.attrs["summary"] = _json(drop.summary)  # as run_machine's: the drop stands as a run of its own
-    networks = [plane_network(machine, k, _static_share(machine, k) / max(p.bearing.ball_count, 1))
+    networks = [plane_network(machine, k, _static_share(machine, k) / max(p.rows * p.bearing.ball_count, 1))
                 for k, p in enumerate(machine.planes)]
     session = _Session(machine, run)
     limits = _Limits(machine, session, networks)

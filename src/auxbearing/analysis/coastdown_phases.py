@@ -394,10 +394,10 @@ class StretchEnd:
 
 
 def _viscous(plane, speed: float) -> float:
-    if plane.viscous_factor <= 0.0 or plane.lubricant_viscosity <= 0.0:
+    if plane.set_viscous_factor <= 0.0 or plane.lubricant_viscosity <= 0.0:
         return 0.0
     return float(palmgren_viscous_torque(plane.lubricant_viscosity, speed, plane.bearing.pitch_diameter,
-                                         plane.viscous_factor))
+                                         plane.set_viscous_factor))
 
 
 def _held(plane, window: PlaneWindow, omega: float) -> tuple[float, float, float]:
@@ -518,7 +518,7 @@ def spin_model(machine: Machine, windows: list[PlaneWindow], omega: float, race_
         race_inertia=per_plane([p.race_inertia for p in planes], 1.0),
         viscosity=per_plane([p.lubricant_viscosity for p in planes]),
         pitch_diameter=per_plane([p.bearing.pitch_diameter for p in planes], 1.0),
-        viscous_factor=per_plane([p.viscous_factor for p in planes]))
+        viscous_factor=per_plane([p.set_viscous_factor for p in planes]))
 
 
 class Stretch(NamedTuple):

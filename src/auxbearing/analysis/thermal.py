@@ -315,6 +315,8 @@ def build_network(
     ambient_temperature: float = REFERENCE_AMBIENT,
     fit_contact_resistance: float = FIT_CONTACT_RESISTANCE,
     journal_race_conductance: float = 0.0,
+    rows: int = 1,
+    set_width: float | None = None,
 ) -> ThermalNetwork:
     """Build the lumped network of one touchdown plane (module docstring lists the paths).
 
@@ -353,6 +355,10 @@ def build_network(
         Outer ring/housing interface resistance [m^2 K/W].
     journal_race_conductance : float
         Journal/inner-race conductance [W/K].
+    rows, set_width : int, float
+        A matched set of ``rows`` of ``bearing`` side by side, ``set_width`` wide [m] (spacer included): its rings
+        are lumped as one ring of that width, its balls as one node of every row's balls, and every row's
+        contacts carry heat between them (default one bearing, its own width).
 
     Returns
     -------
@@ -383,7 +389,7 @@ def build_network(
     shaft = _thermal_material(journal_material, "the journal node")
     frame = _thermal_material(housing_material, "the housing node")
 
-    width = bearing.width
+    width = bearing.width if set_width is None else set_width
     r_i, r_o = 0.5 * bearing.inner_raceway_diameter, 0.5 * bearing.outer_raceway_diameter
     r_od = 0.5 * bearing.outside_diameter
     j_len = width if journal_length is None else journal_length
@@ -396,7 +402,7 @@ def build_network(
     masses = np.array([
         shaft.density * _annulus_volume(journal_bore_radius, journal_radius, j_len),
         ring.density * _annulus_volume(bore_r, r_i, width) if inner_race_mass is None else inner_race_mass,
-        bearing.ball_count * ball.density * math.pi * bearing.ball_diameter**3 / 6.0,
+        rows * bearing.ball_count * ball.density * math.pi * bearing.ball_diameter**3 / 6.0,
         ring.density * _annulus_volume(r_o, r_od, width) if outer_race_mass is None else outer_race_mass,
         frame.density * _annulus_volume(r_od, 0.5 * h_diam, h_len) if housing_mass is None else housing_mass,
     ])
@@ -445,6 +451,6 @@ def build_network(
         paths={"outer_race-housing": g[OUTER_RACE, HOUSING], "journal-inner_race": journal_race_conductance,
                "housing-ambient": ga[HOUSING], "journal-ambient": ga[JOURNAL]},
     )
-    n_contacts = (bearing.ball_count if loaded_balls is None else loaded_balls) * bearing.pairs_per_ball
+    n_contacts = (rows * bearing.ball_count if loaded_balls is None else loaded_balls) * bearing.pairs_per_ball
     loads = np.full(n_contacts, float(contact_load))
     return network.with_contact_loads(loads, loads)

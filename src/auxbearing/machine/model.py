@@ -128,6 +128,11 @@ class TouchdownPlane:
         """Rows of balls in the plane: 2 for a matched pair, else 1."""
         return 1 if self.bearing_set is None else 2
 
+    @property
+    def set_viscous_factor(self) -> float:
+        """Palmgren's f_0 of the plane's bearings together [-]: M_0 is a bearing's, and a matched pair has two."""
+        return self.viscous_factor * self.rows
+
 
 @dataclass(frozen=True)
 class MachineRotor:

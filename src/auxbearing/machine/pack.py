@@ -93,7 +93,7 @@ def _plane_arrays(planes: tuple[TouchdownPlane, ...]) -> cm.Planes:
         facing_a=arr(lambda p: p.bearing_set.row_facings[0] if p.bearing_set else 1.0, 1.0),
         facing_b=arr(lambda p: p.bearing_set.row_facings[1] if p.bearing_set else 1.0, 1.0),
         row_push=arr(lambda p: p.bearing_set.row_preload_displacement if p.bearing_set else 0.0),
-        lubricant_viscosity=arr(lambda p: p.lubricant_viscosity), viscous_factor=arr(lambda p: p.viscous_factor),
+        lubricant_viscosity=arr(lambda p: p.lubricant_viscosity), viscous_factor=arr(lambda p: p.set_viscous_factor),
     )
 
 

@@ -139,7 +139,8 @@ TOUCHDOWN: tuple[Param, ...] = (
           "Kinematic viscosity of the bearing's oil (base oil of a grease) for Palmgren's load-free torque",
           "Harris & Kotzalas 2007, Essential Concepts Ch. 10; 0: no load-free torque"),
     Param("touchdown", "viscous_factor", "dimensionless", 0.0, "", "nonnegative",
-          "Palmgren's f_0 of the load-free torque M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3 (about 0.7-4 for ball bearings)",
+          "Palmgren's f_0 of the load-free torque M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3 of one bearing (about 0.7-4 for "
+          "ball bearings; a matched pair turns two bearings' oil, 2 M_0)",
           "Harris & Kotzalas 2007, Essential Concepts Ch. 10; 0: no load-free torque"),
     Param("touchdown", "housing_mass", "mass", None, "kg", "optional_positive",
           "Mass of the housing lumped with the outer ring in the thermal network; default a steel ring around it",
