@@ -56,7 +56,9 @@ def classify_window(record: np.ndarray, clearance: float, journal_radius: float,
     clearance, journal_radius : float
         s and r [m].
     natural : float
-        w_c [rad/s] at the window's mean force (:func:`natural_frequency`).
+        w_c [rad/s] (:func:`natural_frequency`): the line contact at the window's mean force in series with the
+        support, whose ball set the drop takes at a fixed load near its rating (max(100 N, 50 Z N)), not at the
+        window's force.
 
     Examples
     --------
@@ -68,6 +70,8 @@ def classify_window(record: np.ndarray, clearance: float, journal_radius: float,
     spin = record[_F["spin_speed"]]
     if (record[_F["contact_fraction"]] < 0.5 or record[_F["mean_radius"]] < 0.5 * clearance
             or abs(whirl) * record[_F["duration"]] < MIN_ARC):
+        return "none"
+    if spin == 0.0:  # a rotor that does not turn: a whirl is neither with nor against its spin
         return "none"
     if whirl * spin > 0.0:
         return "forward"

@@ -199,7 +199,7 @@ _EXAMPLES = {
 
 
 def _describe(dimension: str) -> str:
-    return dimension.replace("_", " ")
+    return "plain number" if dimension == "dimensionless" else dimension.replace("_", " ")
 
 
 def _a(dimension: str) -> str:
