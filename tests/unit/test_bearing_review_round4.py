@@ -114,3 +114,12 @@ def test_a_35_deg_bearing_takes_iso_281_table_3_s_35_deg_row(name, expected):
     gives e 0.95, X 0.37, Y 0.66 single row and X 0.60, Y 1.07 double row at 35 deg, 0.35 / 0.57 and 0.57 / 0.93
     at 40 deg (hand: 0.37 x 1000 + 0.66 x 2000 = 1690 N)."""
     assert equivalent_load(get_bearing(name), 1000.0, 2000.0) == pytest.approx(expected)
+
+
+def test_a_preload_that_alone_loads_a_row_past_its_static_rating_is_refused():
+    """0.29 mm was a 124 kN preload a row, five times the 7208's C0 of 24.1 kN, accepted (ISO 76: P0 = 0.26 Fa at
+    40 deg, so s0 = 24.1 / (0.26 x 123.8) = 0.75)."""
+    for name in ("7208 DB 0.29 mm", "7208 DB 100 kN"):
+        with pytest.raises(InputError, match=r"past its static rating on its own \(ISO 76: s0 = C0 / \(Y0 Fa\)"):
+            get_bearing(name)
+    assert get_bearing("7208 DB 20 kN").preload_force == pytest.approx(20e3)  # s0 4.6

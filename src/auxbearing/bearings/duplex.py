@@ -102,6 +102,8 @@ class DuplexSet:
         if self.preload_offset >= 0.5 * self.row.curvature_centre_distance:
             raise InputError.for_field("preload_offset", self.preload_offset,
                                        "must be below half the curvature-centre distance A of the row")
+        if self.preload_offset > 0.0:
+            _check_preload_statics(self)
         if not self.name:
             object.__setattr__(self, "name", f"{self.row.name} {self.arrangement}")
 
@@ -188,6 +190,30 @@ class DuplexSet:
                 "preload": self.preload, "preload_force_N": self.preload_force,
                 "preload_offset_um": self.preload_offset * 1e6, "spacer_mm": self.spacer * 1e3,
                 "row_spacing_mm": self.row_spacing * 1e3, "source": self.source}
+
+
+#: ISO 76:2006 Table 3, single-row angular-contact ball bearings: the static axial factor Y0 by contact angle [deg]
+#: (P0 = 0.5 Fr + Y0 Fa, at least Fr), as SKF's and NSK's catalogues reprint it.
+STATIC_AXIAL_FACTORS = {15: 0.46, 20: 0.42, 25: 0.38, 30: 0.33, 35: 0.29, 40: 0.26, 45: 0.22}
+
+
+def _check_preload_statics(pair: DuplexSet) -> None:
+    """Refuse a preload that alone loads a row past its static rating (s0 = C0 / P0 < 1, ISO 76:2006 Eq. 2).
+
+    Clamped and unloaded, each row carries the preload as a pure axial load Fa, so P0 = Y0 Fa. An offset typed in
+    place of a force reaches that quickly: 0.29 mm on a 7208 pair is 124 kN a row, five times its C0.
+    """
+    from auxbearing.bearings.ratings import static_load_rating
+
+    force = pair.preload_force
+    angle = min(sorted(STATIC_AXIAL_FACTORS), key=lambda a: abs(a - math.degrees(pair.row.contact_angle)))
+    c0 = static_load_rating(pair.row)
+    s0 = c0 / (STATIC_AXIAL_FACTORS[angle] * force)
+    if s0 < 1.0:
+        raise InputError.for_field(
+            "preload", pair.preload,
+            f"loads each row with {force / 1e3:.3g} kN, past its static rating on its own (ISO 76: s0 = C0 / (Y0 Fa) "
+            f"= {c0 / 1e3:.3g} kN / ({STATIC_AXIAL_FACTORS[angle]:g} x {force / 1e3:.3g} kN) = {s0:.2f} < 1)")
 
 
 def row_axial_force(row: BearingGeometry, displacement: float) -> float:
