@@ -123,3 +123,14 @@ def test_a_preload_that_alone_loads_a_row_past_its_static_rating_is_refused():
         with pytest.raises(InputError, match=r"past its static rating on its own \(ISO 76: s0 = C0 / \(Y0 Fa\)"):
             get_bearing(name)
     assert get_bearing("7208 DB 20 kN").preload_force == pytest.approx(20e3)  # s0 4.6
+
+
+@pytest.mark.parametrize(("key", "value", "rule"), [("name", {"a": 1}, "must be text in quotes"),
+                                                    ("source", 5, "must be text in quotes"),
+                                                    ("estimated", 5, "must list the keys whose values are estimated")])
+def test_a_bearing_table_s_text_keys_take_text(key, value, rule):
+    table = {"type": "deep_groove", "ball_diameter": "12 mm", "pitch_diameter": "60 mm", "ball_count": 9,
+             "inner_groove_ratio": 0.52, "outer_groove_ratio": 0.53, "contact_angle": "0 deg",
+             "diametral_clearance": "10 um", "ball_material": "GCr15", "ring_material": "GCr15", key: value}
+    with pytest.raises(InputError, match=rf"^bearing.{key} = .*: {rule}"):
+        bearing_from_mapping(table)

@@ -371,6 +371,13 @@ def bearing_from_mapping(data: dict, name: str | None = None, prefix: str = "bea
     count = data["ball_count"]
     if isinstance(count, bool) or not isinstance(count, int):
         raise InputError.for_field(prefix + "ball_count", count, "must be a whole number >= 3")
+    for key in ("name", "source"):  # a table or a number here would be printed as the bearing's name
+        if key in data and not isinstance(data[key], str):
+            raise InputError.for_field(prefix + key, data[key], "must be text in quotes")
+    estimated = data.get("estimated", [])
+    if not isinstance(estimated, list) or any(k not in _ALLOWED_KEYS for k in estimated):
+        raise InputError.for_field(prefix + "estimated", estimated, "must list the keys whose values are estimated, "
+                                   "e.g. [\"ball_diameter\", \"ball_count\"]")
     values: dict[str, object] = {
         "type": kind,
         "ball_count": count,
