@@ -78,8 +78,8 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
                             candidates_option="--candidates")
         result.save(tmp)
     if as_json:
-        shown = ("verdict", "reason", "machine", "criteria", "worst_margin", "candidates", "ranking", "recommendation",
-                 "recommendation_note", "wall_time_s", "margins")
+        shown = ("verdict", "reason", "machine", "criteria", "worst_margin", "candidates", "ranking",
+                 "ranking_whirl_term", "recommendation", "recommendation_note", "wall_time_s", "margins", "campaign")
         echo_json({k: v for k, v in result.items() if k in shown} | {"out": str(out_dir)})
         click.get_current_context().exit(EXIT_STATUS[result["verdict"]])
     rows, _ = verdict_rows(result["design"]["criteria"])
@@ -103,8 +103,9 @@ def verify_command(machine_spec, out_dir, candidates, quick, campaign_samples, w
                 console.print(f"Not checked: {c.name}: {c.evidence}", highlight=False, soft_wrap=True)
     if result["candidates"]:
         console.print("Candidates ranked (fewest criteria failed, then fewest not checked, then the larger worst "
-                      "margin" + ("; --quick: an order of figures not checked, which the full run may change"
-                                  if result["quick"] else "") + "): " + ", ".join(result["ranking"]), highlight=False)
+                      "margin" + (f"; {result['ranking_whirl_term']}" if result.get("ranking_whirl_term") else "")
+                      + ("; --quick: an order of figures not checked, which the full run may change"
+                         if result["quick"] else "") + "): " + ", ".join(result["ranking"]), highlight=False)
     if result.get("recommendation_note"):
         console.print(f"No recommendation: {result['recommendation_note']}", highlight=False)
     if result["recommendation"]:

@@ -14,8 +14,10 @@ What is checked, each as one :class:`~auxbearing.common.errors.InputError` line 
   which the command line calls on every machine file it reads: a room below the campaign does not import it);
 * values legal one by one but impossible together (:func:`check_combinations`, named by both keys): a
   start outside a clearance, a journal larger than its bore, face or mount keys without the collar or
-  mount they act through, a hard stop inside the dead band, a temperature limit at or below ambient;
-* candidate bearings that do not fit the design's seat (:func:`check_candidate_seat`).
+  mount they act through, a hard stop inside the dead band, a temperature limit the file writes at or below
+  ambient or at or above the coast-down's run-away stop (its default is verify's to check);
+* candidate bearings that do not fit the design's seat (:func:`check_candidate_seat`), are the design's own bearing
+  or share a name (each named by the key the file writes: ``candidate.2.bearing``).
 
 Before the run, :func:`stiffness_notes` says when a mount, a hard stop or a light race makes the
 integration stiff: the explicit step it forces against the run's duration and the step budget.
@@ -95,22 +97,14 @@ def check_tables(data: dict, allowed: tuple[str, ...]) -> None:
 
 
 def _check_judging(data: dict, machine: Machine, criteria: dict, settings: dict) -> None:
-    """What ``verify`` judges by against the machine: a temperature limit above ambient, a low speed below the top."""
-    ambient = machine.coastdown.ambient_temperature
-    table = data.get("criteria") or {}
-    if criteria["max_temperature"] <= ambient:
-        coast = data.get("coastdown") or {}
-        param = param_of("coastdown", "ambient_temperature")
-        if "max_temperature" in table or "ambient_temperature" not in coast:
-            raise InputError.for_field("criteria.max_temperature", typed(table, "max_temperature",
-                                                                          CRITERIA_TABLE["max_temperature"]),
-                                       f"not above coastdown.ambient_temperature = "
-                                       f"{typed(coast, 'ambient_temperature', param)!r}: no bearing can stay below "
-                                       "the temperature it starts at")
-        raise InputError.for_field("coastdown.ambient_temperature", typed(coast, "ambient_temperature", param),
-                                   f"not below criteria.max_temperature = "
-                                   f"{typed(table, 'max_temperature', CRITERIA_TABLE['max_temperature'])!r}: "
-                                   "no bearing can stay below the temperature it starts at")
+    """What ``verify`` judges by against the machine: a temperature limit above ambient, a low speed below the top.
+
+    The temperature limit is checked here only when the file writes it: its default is verify's alone, and a
+    ``drop`` or ``coastdown`` of a machine whose ambient lies above that default (a hot process) never judges by it;
+    ``verify`` checks it in every case (:func:`check_temperature_criterion`).
+    """
+    if "max_temperature" in (data.get("criteria") or {}):
+        check_temperature_criterion(data, machine, criteria)
     verify = data.get("verify") or {}
     low = settings.get("low_speed")
     if low is not None and low >= abs(machine.rotor.speed):
@@ -126,6 +120,49 @@ def _check_judging(data: dict, machine: Machine, criteria: dict, settings: dict)
     if samples is not None and not (samples == int(samples) and 0 <= samples <= MAX_CAMPAIGN_SAMPLES):
         raise InputError.for_field("verify.campaign_samples", typed(verify, "campaign_samples"),
                                    f"must be a whole number in [0, {MAX_CAMPAIGN_SAMPLES}] (0: no campaign)")
+    tol = settings.get("clearance_tolerance")
+    if tol is not None and machine.planes:
+        k, plane = min(enumerate(machine.planes), key=lambda item: item[1].radial_clearance)
+        if tol >= 0.5 * plane.radial_clearance:
+            # the campaign keeps a clearance as made at half the file's or more (verify.cases.campaign_spreads)
+            raise InputError.for_field("verify.clearance_tolerance", typed(verify, "clearance_tolerance"),
+                                       f"must be below half the smallest radial clearance, touchdown.{k}."
+                                       f"radial_clearance = {typed(_touchdown_table(data, k), 'radial_clearance')!r} "
+                                       f"(half: {0.5 * plane.radial_clearance * 1e3:.4g} mm): the campaign's spread "
+                                       "of the clearance would be cut off there")
+
+
+def _touchdown_table(data: dict, k: int) -> dict | None:
+    tables = data.get("touchdown") or []
+    return tables[k] if k < len(tables) and isinstance(tables[k], dict) else None
+
+
+def check_temperature_criterion(data: dict, machine: Machine, criteria: dict) -> None:
+    """Refuse a ``criteria.max_temperature`` (written or its default) no coast-down of this machine can be judged by.
+
+    At or below ``coastdown.ambient_temperature`` no bearing can stay under it; at or above
+    ``coastdown.max_temperature`` the coast-down stops as a thermal run-away before any part gets there, so the
+    criterion would never be checked and the run-away would fail the design on the model's range instead. Each
+    refusal names the key the file writes (the other is quoted, "(default)" if the file leaves it out).
+    """
+    table = data.get("criteria") or {}
+    coast = data.get("coastdown") or {}
+    limit = criteria["max_temperature"]
+    shown = typed(table, "max_temperature", CRITERIA_TABLE["max_temperature"])
+    written = "max_temperature" in table
+    for key, value, rule, why in (
+            ("ambient_temperature", machine.coastdown.ambient_temperature, "above",
+             "no bearing can stay below the temperature it starts at"),
+            ("max_temperature", machine.coastdown.max_temperature, "below",
+             "the coast-down stops there as a thermal run-away, so the temperature criterion could never be checked")):
+        if (limit > value) if rule == "above" else (limit < value):
+            continue
+        other = typed(coast, key, param_of("coastdown", key))
+        if written or key not in coast:
+            raise InputError.for_field("criteria.max_temperature", shown,
+                                       f"not {rule} coastdown.{key} = {other!r}: {why}")
+        raise InputError.for_field(f"coastdown.{key}", other, f"not {'below' if rule == 'above' else 'above'} "
+                                   f"criteria.max_temperature = {shown!r}: {why}")
 
 
 # ----------------------------------------------------------------------------- candidates in the design's seat
@@ -137,6 +174,7 @@ def check_candidates(data: dict, design: Machine, name: str = "machine", base: P
     if not isinstance(specs, list) or not all(isinstance(s, (dict, str)) for s in specs):
         raise InputError.for_field("candidate", specs, "give [[candidate]] tables, each with a bearing")
 
+    seen: dict[str, str] = {}
     for i, spec in enumerate(specs):
         where = f"candidate.{i}"
         if isinstance(spec, dict):
@@ -151,15 +189,53 @@ def check_candidates(data: dict, design: Machine, name: str = "machine", base: P
         label = str(spec.get("name", bearing_spec)) if isinstance(spec, dict) and (
             "name" in spec or isinstance(bearing_spec, str)) else (bearing_spec if isinstance(spec, str) else
                                                                    "inline bearing")
+        # messages name the key the user wrote, not the candidate's name: the bearing is what decides its fit
+        named = candidate_key(where, spec)
+        labelled = f"{where}.name" if isinstance(spec, dict) and "name" in spec else named
+        if label in seen:  # a ranking and a report that cannot tell two rows apart
+            raise InputError.for_field(labelled, label, f"the same as {seen[label]}: each candidate once")
+        seen[label] = labelled
         bearing = candidate_bearing(bearing_spec, f"{where}.bearing", base)
-        check_candidate_seat(design, bearing, f"{where} = {label!r}")
+        check_candidate_seat(design, bearing, named)
         ((_, tables),) = candidate_tables(data, [spec if isinstance(spec, dict) else {"bearing": spec}])
         tables.pop("candidate", None)
         tables.pop("campaign", None)
         try:
-            machine_from_mapping(tables, name, base)
+            candidate = machine_from_mapping(tables, name, base)
         except InputError as err:
-            raise InputError(f"{where} = {label!r}: in the design's seats: {err}") from None
+            raise InputError(f"{named}: in the design's seats: {err}") from None
+        check_not_the_design(design, candidate, named)
+
+
+def candidate_key(where: str, spec: object) -> str:
+    """How a message names a candidate's bearing as the user wrote it: ``candidate.2.bearing = '6308'``.
+
+    >>> candidate_key("candidate.2", {"name": "6208 deep groove", "bearing": "6308"})
+    "candidate.2.bearing = '6308'"
+    >>> candidate_key("candidate.0", {"bearing": {"type": "four_point"}})
+    'candidate.0.bearing (a table)'
+    """
+    bearing = spec.get("bearing") if isinstance(spec, dict) else spec
+    key = f"{where}.bearing" if isinstance(spec, dict) else where
+    return f"{key} = {bearing!r}" if isinstance(bearing, str) else f"{key} (a table)"
+
+
+def _plain(unit):
+    """A bearing (or matched pair) with its name and source blanked: two spellings of one bearing compare equal."""
+    from dataclasses import fields, replace
+
+    names = {f.name for f in fields(unit)}
+    blank = {key: "" for key in ("name", "source") if key in names}
+    if "row" in names:
+        blank["row"] = _plain(unit.row)
+    return replace(unit, **blank)
+
+
+def check_not_the_design(design: Machine, candidate: Machine, where: str) -> None:
+    """Refuse a candidate whose bearing is the design's own on every plane: the design is ranked already."""
+    if all(_plain(c.unit) == _plain(d.unit) for c, d in zip(candidate.planes, design.planes, strict=True)):
+        raise InputError(f"{where}: the design's own bearing on every plane; the design is verified and ranked "
+                         "already: give another bearing")
 
 
 def candidate_bearing(spec: object, field: str, base: Path | None = None):
@@ -182,16 +258,16 @@ def check_candidate_seat(design: Machine, bearing, where: str) -> None:
     not another bearing), an outside diameter and a width no larger than the design's. A size the design's
     bearing does not give is not checked; one the seat needs and the candidate does not give is refused.
 
-    ``where`` names the candidate as the user gave it (``"candidate.0 = 'QJ208'"``,
+    ``where`` names the candidate as the user gave it (``"candidate.0.bearing = 'QJ208'"``,
     ``"--candidates = 'QJ208'"``).
 
     >>> from auxbearing.machine.files import read_machine
     >>> from auxbearing.bearings.catalogue import get_bearing
-    >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("7202"), "candidate.0 = '7202'")
-    >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("QJ208"), "candidate.0 = 'QJ208'")
+    >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("7202"), "candidate.0.bearing = '7202'")
+    >>> check_candidate_seat(read_machine("paper_rig"), get_bearing("QJ208"), "candidate.0.bearing = 'QJ208'")
     Traceback (most recent call last):
     ...
-    auxbearing.common.errors.InputError: candidate.0 = 'QJ208': its bore 40 mm does not fit the seat of touchdown.0 ...
+    auxbearing.common.errors.InputError: candidate.0.bearing = 'QJ208': its bore 40 mm does not fit ...
     """
     sizes = {key: getattr(bearing, key, None) for key in ("bore", "outside_diameter", "width")}
     for k, plane in enumerate(design.planes):

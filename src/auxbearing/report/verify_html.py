@@ -119,6 +119,18 @@ def _unchecked_clauses(unchecked: list) -> list[str]:
     return clauses
 
 
+def no_campaign(result: dict) -> str:
+    """The report's line for a verification without a campaign, naming where its size of 0 came from.
+
+    >>> no_campaign({"campaign_samples_from": "verify.campaign_samples"})
+    'No campaign was run (verify.campaign_samples = 0).'
+    >>> no_campaign({"campaign_samples_from": "--campaign-samples"})
+    'No campaign was run (--campaign-samples 0).'
+    """
+    source = result.get("campaign_samples_from", "--campaign-samples")
+    return f"No campaign was run ({source} 0)." if source.startswith("--") else f"No campaign was run ({source} = 0)."
+
+
 def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     """HTML text of the report from the result of :func:`auxbearing.verify.run.verify` and its figures.
 
@@ -152,10 +164,11 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     conv = result.get("convergence")
     if conv:
         parts.append("<h3>Convergence of the governing result</h3>")
+        unit = conv.get("unit", "")
         parts.append(_table(["criterion", "case run again", "quantity", "as run", "tolerances 10x tighter",
                              "change", "converged"],
-                            [[conv["criterion"], conv["case"], conv["quantity"], _fmt(conv["as_run"]),
-                              _fmt(conv["tightened"]), "-" if conv["change"] is None else
+                            [[conv["criterion"], conv["case"], conv["quantity"], _fmt(conv["as_run"], unit),
+                              _fmt(conv["tightened"], unit), "-" if conv["change"] is None else
                               f"{100 * conv['change']:+.2f} %", _fmt(conv["settled"])]], conv["note"]))
     parts.append("<h3>Where each required value comes from, and the evidence</h3>")
     parts.append(_table(["criterion", "required value from", "evidence"],
@@ -194,14 +207,15 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
             parts.append("<p>No outcome of the campaign varied enough to rank what drives it.</p>")
         parts += [_figure(f, c) for f, c in figures.get("campaign", [])]
     else:
-        parts.append("<p>No campaign was run (--campaign-samples 0).</p>")
+        parts.append(f"<p>{_e(no_campaign(result))}</p>")
     if result.get("candidates"):
         parts.append("<h2>Candidate bearings in the same seats</h2>")
         parts.append(_table(["rank", "bearing", "verdict", "worst margin", "failing criteria"],
                             result["candidate_rows"],
                             "Ranked by the criteria failed, then those not checked, then the worst margin of the "
                             "checked ones; designs alike in all three by the margins their unchecked findings show, "
-                            "worst first."))
+                            "worst first" + (f"; {result['ranking_whirl_term']}" if result.get("ranking_whirl_term")
+                                             else "") + "."))
         parts += [_figure(f, c) for f, c in figures.get("candidates", [])]
     if result.get("recommendation_note"):
         parts.append("<h2>Recommendation: geometry of the bearing family</h2>")

@@ -134,10 +134,10 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
     after = min(machine.simulation.duration, QUICK_DROP) if quick else machine.simulation.duration
     every = read_criteria(data.get("criteria"))["relevitation_time"]
     for scenario in machine.scenarios:  # levitated until the scenario strikes, then the drop's own duration
-        # a re-levitation asked for (by the scenario or by [criteria]) is watched to its limit and a settled stretch
-        # after it
+        # a re-levitation asked for (by the scenario or by [criteria]) is watched as long as the judge needs to tell
+        # it, and one output step more: the run's last sample may fall that far short of its duration
         within = scenario.relevitate_within or every
-        span = max(after, 1.5 * within) if within else after
+        span = max(after, relevitation_span(within) + machine.simulation.output_step) if within else after
         cases.machines[SCENARIO_CASE + scenario.name] = variant(
             data, name, base, drop={"duration": f"{float(scenario.time + span)!r} s"}).with_scenario(scenario.name)
     cases.spreads = campaign_spreads(cases.machine, settings)
@@ -146,6 +146,22 @@ def plan_cases(data: dict, name: str, base: Path | None, quick: bool = False) ->
         cases.partial_drops = (f"only the first {after * 1e3:g} ms of each {machine.simulation.duration * 1e3:g} ms "
                                "drop ran (--quick): run without --quick")
     return cases
+
+
+def relevitation_span(within: float) -> float:
+    """How long after its strike a scenario must run to show whether the rotor re-levitated within ``within`` [s].
+
+    A re-levitation is known once the run's last :data:`~auxbearing.analysis.scenario_outcome.SETTLED` share after
+    the strike (at least ``SETTLED_MIN``) is free of contact, so a lift-off at the limit needs the limit plus that
+    stretch. The plan (:func:`plan_cases`) and the judge (:func:`auxbearing.verify.judge._scenario_criteria`) both
+    use it, so a full run is never too short for its own judge.
+
+    >>> round(relevitation_span(0.030), 6), round(relevitation_span(0.100), 6)
+    (0.05, 0.125)
+    """
+    from auxbearing.analysis.scenario_outcome import SETTLED, SETTLED_MIN
+
+    return max(within / (1.0 - SETTLED), within + SETTLED_MIN)
 
 
 def _coastdown_horizon(machine: Machine, quick: bool) -> float:

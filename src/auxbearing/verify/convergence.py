@@ -151,6 +151,7 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
             ambient = cases.machine.coastdown.ambient_temperature - 273.15
             before = None if before is None else before - ambient
             what["quantity"] = "hottest part's rise above ambient"
+            what["unit"] = "K"  # a difference of two temperatures: kelvin, not a reading in degC
 
             def after_of(run, plain=after_of):
                 value = plain(run)

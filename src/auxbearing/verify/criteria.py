@@ -24,6 +24,7 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
+from auxbearing.analysis.whirl import BACKWARD
 from auxbearing.machine.judging import CRITERIA_TABLE as TABLE
 
 
@@ -131,6 +132,22 @@ def ranking_key(criteria: list[Criterion]) -> tuple:
     shown = sorted(c.margin for c in criteria if c.passed is None and c.margin is not None)
     return (sum(c.passed is False for c in criteria), sum(c.passed is None for c in criteria),
             -margin if math.isfinite(margin) else math.inf, tuple(-m for m in shown))
+
+
+def whirls_backward(plane: dict) -> bool:
+    """Whether a drop's plane (its summary) shows sustained backward whirl or dry whip.
+
+    Either a backward whirl sustained from some time on, or a final whirl class that is backward (rolling whirl or
+    dry whip). The verdict and the geometry search both use it; the campaign counts a drop whose whirl was
+    classified by the same test (:func:`auxbearing.campaign.evaluate._record_from_summary`), so none of the three
+    can call a drop whirl-free that another counts as whirling.
+
+    >>> whirls_backward({"backward_whirl_onset_ms": None, "whirl": "dry_whip"})
+    True
+    >>> whirls_backward({"backward_whirl_onset_ms": None, "whirl": "forward"})
+    False
+    """
+    return plane.get("backward_whirl_onset_ms") is not None or plane.get("whirl") in BACKWARD
 
 
 def whirl_fails_whatever_follows(whirled: int, ended_ok: int, left: int, limit: float) -> bool:

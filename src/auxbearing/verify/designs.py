@@ -122,6 +122,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     from auxbearing.machine.judging import verify_settings
     from auxbearing.machine.model import machine_from_mapping
     from auxbearing.verify.cases import QUICK_DROP, Immediate, clearance_tolerance
+    from auxbearing.verify.criteria import whirls_backward
 
     executor = executor or Immediate()
 
@@ -141,7 +142,10 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     # the levitated rotor orbits its mass centre above its rigid-body modes: the orbit is the unbalance, at least
     # the balance grade's (the verification's campaign uses the same)
     orbit = max(machine.rotor.unbalance, settings["balance_grade"] / max(abs(machine.rotor.speed), 1e-9))
-    c_low = max(CLEARANCE_RANGE[0], orbit / ORBIT_ZONE / min(p.radial_clearance for p in machine.planes))
+    c_low = max(CLEARANCE_RANGE[0], orbit / ORBIT_ZONE / min(p.radial_clearance for p in machine.planes),
+                # the campaign keeps a clearance as made above half its own (cases.campaign_spreads): below twice the
+                # tolerance, the recommended geometry's campaign would clip its spread
+                *(2.0 * tol / p.radial_clearance for p, tol in zip(machine.planes, tolerances, strict=True)))
     bounds = np.array([CONTACT_ANGLE_RANGE if angle_free else (first.contact_angle, first.contact_angle),
                        GROOVE_RATIO_RANGE, (c_low, max(c_high, c_low))])
     duration = {"duration": f"{float(min(machine.simulation.duration, QUICK_DROP))!r} s"} if quick else {}
@@ -172,7 +176,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
             out["no run leaves the model's range or a limit"] = -1.0
         s0 = min((p["s0"] for p in summary["planes"] if p["s0"] is not None), default=0.0)
         out["static safety factor s0 of every ball contact"] = s0 / criteria["min_s0"] - 1.0
-        if any(p["backward_whirl_onset_ms"] is not None for p in summary["planes"]):
+        if any(whirls_backward(p) for p in summary["planes"]):
             out["no sustained backward whirl or dry whip"] = -1.0
         if criteria.get("seal_clearance"):
             out["journal excursion against the seal clearance"] = (
@@ -222,7 +226,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         "outer_groove_ratio": float(x[1] + offset), "radial_clearance_mm": [p.radial_clearance * x[2] * 1e3
                                                                              for p in machine.planes],
         "clearance_factor": float(x[2]), "worst_margin": best["worst"], "binding_criterion": best["binding"],
-        "tie_margin": TIE_MARGIN,
+        "tie_margin": TIE_MARGIN, "grid": [len(g) for g in grids],
         "variables_at_bounds": at_bound, "margins": best["margins"], "evaluations": len(evaluated),
         "left_out": len(left_out),
         "bounds": {"contact_angle_deg": [math.degrees(v) for v in bounds[0]], "inner_groove_ratio": list(bounds[1]),

@@ -4,11 +4,17 @@ from __future__ import annotations
 
 import math
 
-from auxbearing.analysis.scenario_outcome import SATURATED, SETTLED, SETTLED_MIN
-from auxbearing.analysis.whirl import BACKWARD, UNCLASSIFIED
+from auxbearing.analysis.scenario_outcome import SATURATED
+from auxbearing.analysis.whirl import UNCLASSIFIED
 from auxbearing.campaign.evaluate import FAILED, OUT_OF_RANGE
 from auxbearing.machine.scenario import SCENARIO_CASE
-from auxbearing.verify.cases import BUDGETS, Cases, largest_clearance_tolerances, thermal_openings
+from auxbearing.verify.cases import (
+    BUDGETS,
+    Cases,
+    largest_clearance_tolerances,
+    relevitation_span,
+    thermal_openings,
+)
 from auxbearing.verify.criteria import (
     Criterion,
     lower_bound,
@@ -16,6 +22,7 @@ from auxbearing.verify.criteria import (
     origin,
     temperature_bound,
     upper_bound,
+    whirls_backward,
     yes_no,
 )
 
@@ -171,8 +178,9 @@ def _air_gap(cases: Cases, criteria: dict) -> Criterion:
 def _seal(cases: Cases, criteria: dict) -> Criterion:
     """The journal's largest excursion from the machine's axis in the drops against the seal clearance.
 
-    A campaign drop that goes past the seal fails it too (its conditions are drops the machine may see); short of
-    it, the case drops' figure stands and the campaign's stays in its own table (as for s0).
+    The campaign's drops are drops the machine may see: the largest of the case drops and of the campaign's drops
+    that ended ok is judged, and the evidence says which it is (a campaign's drop has no case of its own, so the
+    convergence re-run leaves it alone).
     """
     name = "journal excursion against the seal clearance"
     limit = criteria["seal_clearance"]
@@ -181,17 +189,17 @@ def _seal(cases: Cases, criteria: dict) -> Criterion:
     excursion, case = max((run.summary["largest_excursion_m"], case) for case, run in cases.drops.items())
     where = f"largest journal excursion from the machine's axis in the drops: {case}"
     reached = (cases.campaign or {}).get("largest_excursion_mm")
-    if reached is not None and reached * 1e-3 > max(limit, excursion):
-        excursion = reached * 1e-3
+    if reached is not None and reached * 1e-3 > excursion:
         where = (f"largest journal excursion from the machine's axis in the campaign's {cases.campaign['ok']} drops "
-                 "that ended ok")
+                 f"that ended ok (the case drops' largest: {excursion * 1e3:.4g} mm)")
+        excursion = reached * 1e-3
     return upper_bound(name, excursion * 1e3, limit * 1e3, "mm", origin("seal_clearance", criteria), where)
 
 
 def _sustained_whirl(cases: Cases) -> Criterion:
     """No sustained backward whirl or dry whip in any drop or in the coast-down after the drop at full speed."""
     whirls = [(case, p["name"], p["backward_whirl_onset_ms"], p["whirl"]) for case, _, p in _drop_planes(cases)
-              if p["backward_whirl_onset_ms"] is not None or p["whirl"] in BACKWARD]
+              if whirls_backward(p)]
     found = [f"{c}, {n}: backward whirl sustained from {o:.0f} ms, {w} at the end" if o is not None
              else f"{c}, {n}: {w} at the end" for c, n, o, w in whirls]
     if cases.coastdown is not None:  # its windows judge the journals' whirl as a drop does (coastdown_phases)
@@ -246,8 +254,9 @@ def _static_safety(cases: Cases, criteria: dict) -> Criterion:
     A drop that left the model's range or reached a budget stops there: its stresses so far are inside the
     model and count; the criterion is then not checked unless a value already fails (:data:`PARTIAL_DROP_CRITERIA`;
     the heavy rotor's drop at the maximum speed reaches s0 1.16 before a contact ellipse runs over its groove
-    shoulder, where its drop at low speed, which ends, gives 16). A campaign drop below the limit fails it too
-    (its conditions are drops the machine may see); above it, the campaign's figures stay in its own table.
+    shoulder, where its drop at low speed, which ends, gives 16). The campaign's drops are drops the machine may
+    see: the smallest of the case drops and of the campaign's drops that ended ok is judged, and the evidence says
+    which it is.
     """
     s0s = [(p["s0"], case, p["name"], run.summary["verdict"]) for case, run, p in _drop_planes(cases)
            if p["s0"] is not None]
@@ -258,15 +267,21 @@ def _static_safety(cases: Cases, criteria: dict) -> Criterion:
         found = worst[0]
         where = f"smallest in the drops: {worst[1]}, {worst[2]}" + (
             "" if worst[3] == "ok" else " (up to where that drop stopped)")
-    below = (cases.campaign or {}).get("p_s0_below_required", {}).get("successes", 0)
-    if below and (found is None or cases.campaign["smallest_s0"] < found):
-        # a drop condition of the campaign is a drop as well: one below the limit fails the criterion
-        found = cases.campaign["smallest_s0"]
-        where = (f"{below} of the campaign's {cases.campaign['ok']} drops that ended ok fall below "
-                 f"{criteria['min_s0']:g}, the smallest at {found:.3g}")
+    campaign = cases.campaign or {}
+    smallest = campaign.get("smallest_s0")
+    below = campaign.get("p_s0_below_required", {}).get("successes", 0)
+    # without a case drop's value the campaign's stands in only when it fails: a case drop that found no ball
+    # contact in range is itself no pass
+    if smallest is not None and (smallest < found if found is not None else below):
+        ours = ("no case drop reached a ball contact inside the model's range" if found is None else
+                f"the case drops' smallest: {found:.4g}")
+        # no case is named: the convergence re-run finds the drop it repeats by its case name in the evidence
+        where = (f"{below} of the campaign's {campaign['ok']} drops that ended ok fall below {criteria['min_s0']:g}, "
+                 f"the smallest at {smallest:.4g}" if below else
+                 f"smallest in the campaign's {campaign['ok']} drops that ended ok: {smallest:.4g}") + f" ({ours})"
+        found = smallest
     return lower_bound("static safety factor s0 of every ball contact", found, criteria["min_s0"], "-",
                        origin("min_s0", criteria), where)
-
 
 
 #: Name of the criterion that no run leaves the model's range.
@@ -303,13 +318,17 @@ def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Crite
     if shares:
         share, peak, limit, case, bearing = max(shares)
         allowed = criteria["max_amb_current_share"]
-        saturated = share >= SATURATED * allowed
-        out.append(Criterion(name, allowed * limit, peak, 1.0 - share / allowed, not saturated, "A", "upper",
-                             ("your [criteria] max_amb_current_share of " if "max_amb_current_share" in
-                              criteria["given"] else "") + "amb.max_current of the machine file (a controller at "
-                             "its limit has lost authority: reaching it fails)",
-                             f"{case}, {bearing}: {share * 100:.1f} % of its limit"
-                             + (" (saturated)" if saturated else "")))
+        # the amplifier's lag brings a current towards its clipped command without ever reaching it: within
+        # SATURATED of the limit it is there, so that threshold is the required value and the margin is measured
+        # against it (a current at its limit fails with a negative margin, never with +0.0 %)
+        threshold = SATURATED * allowed * limit
+        c = upper_bound(name, peak, threshold, "A",
+                        ("your [criteria] max_amb_current_share of " if "max_amb_current_share" in criteria["given"]
+                         else "") + f"amb.max_current of the machine file, less {100 * (1 - SATURATED):g} % (a "
+                        "controller at its limit has lost authority: reaching it fails, and the amplifier's lag "
+                        "only approaches it)",
+                        f"{case}, {bearing}: {share * 100:.1f} % of its limit")
+        out.append(c if c.passed else c._replace(evidence=c.evidence + " (saturated)"))
     else:
         out.append(not_checked(name, "give amb.max_current to check it", "amb.max_current"))
     levitations = {c: s["scenario"]["levitation"] for c, s in runs.items() if "levitation" in s["scenario"]}
@@ -334,9 +353,9 @@ def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Crite
         took = found["relevitated_at_ms"] - found["time_ms"] if found.get("relevitated_at_ms") is not None else None
         name = f"re-levitation after {case.removeprefix(SCENARIO_CASE)}"
         ran = s["simulated_s"] * 1e3 - found["time_ms"]  # [ms] after the strike
-        # a re-levitation is known once the run's last SETTLED share (at least SETTLED_MIN) is free of contact: a
-        # run shorter than that past the limit cannot show one within it, so without one it is no finding
-        needed = max(asked / (1.0 - SETTLED), asked + SETTLED_MIN * 1e3)
+        # a run shorter than this past the strike cannot show a re-levitation within the limit, so without one it is
+        # no finding (plan_cases runs the scenario this long)
+        needed = relevitation_span(asked * 1e-3) * 1e3
         if took is None and ran < needed:
             out.append(not_checked(name, f"{case}: {found.get('outcome', 'not levitated')}; the run ended {ran:.1f} ms "
                                    f"after the strike, too soon to tell a re-levitation within {asked:g} ms (it needs "
@@ -388,6 +407,26 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
         c = c._replace(passed=None, kind="not checked",
                        evidence=f"{evidence}: too few drops to show the probability is within {limit:g}{more}")
     return c
+
+
+def campaign_drops(campaign: dict | None) -> int | None:
+    """How many drops a campaign's whirl probability rests on (those that ended ok with their whirl classified)."""
+    if not campaign:
+        return None
+    return (campaign.get("p_backward_whirl") or {}).get("trials", campaign.get("ok"))
+
+
+def whirl_by_estimate(criteria: list[Criterion], campaign: dict | None, limit: float) -> list[Criterion]:
+    """``criteria`` with the whirl probability's margin taken from the campaign's estimate instead of its 95 % bound.
+
+    For ranking designs whose campaigns differ in size (:func:`auxbearing.verify.run._ranked`); pass or fail stays
+    the verdict's.
+    """
+    value = ((campaign or {}).get("p_backward_whirl") or {}).get("value")
+    if value is None or not math.isfinite(value):
+        return criteria
+    return [c._replace(margin=1.0 - value / limit) if c.name == WHIRL_PROBABILITY and c.margin is not None else c
+            for c in criteria]
 
 
 def _drops_to_show(rate: float, limit: float) -> int | None:

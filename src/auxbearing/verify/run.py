@@ -16,7 +16,12 @@ from functools import partial
 from pathlib import Path
 
 from auxbearing.common.errors import InputError
-from auxbearing.machine.check import check_candidate_seat
+from auxbearing.machine.check import (
+    candidate_key,
+    check_candidate_seat,
+    check_not_the_design,
+    check_temperature_criterion,
+)
 from auxbearing.machine.files import machine_table
 from auxbearing.machine.judging import MAX_CAMPAIGN_SAMPLES, candidate_tables, read_criteria, verify_settings
 from auxbearing.machine.model import machine_from_mapping
@@ -36,7 +41,7 @@ from auxbearing.verify.cases import (
 from auxbearing.verify.convergence import convergence_started
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, worst_margin
 from auxbearing.verify.designs import recommend, recommended_tables, search_refused
-from auxbearing.verify.judge import WHIRL_PROBABILITY, judge
+from auxbearing.verify.judge import WHIRL_PROBABILITY, campaign_drops, judge, whirl_by_estimate
 from auxbearing.verify.result import Verification
 from auxbearing.verify.schedule import verification_cluster
 
@@ -107,6 +112,13 @@ def _campaign_rows(stats: dict | None, spreads: list | None = None) -> tuple[lis
         value = "-" if counted == 0 or not math.isfinite(p["value"]) else f"{p['value']:.3f}"  # no run to count
         rows.append([label, value, f"{p['low']:.3f}-{p['high']:.3f}",
                      p["among"] if counted is None else f"{p['among']} ({counted})"])
+    # the extremes the s0 and seal criteria take from the campaign when they come closer to the limit
+    among = f"{stats.get('ok', 0)} runs that ended ok"
+    if stats.get("smallest_s0") is not None:
+        rows.append(["smallest s0 of a ball contact", f"{stats['smallest_s0']:.4g}", "-", among])
+    if stats.get("largest_excursion_mm") is not None:
+        rows.append(["largest journal excursion from the machine's axis", f"{stats['largest_excursion_mm']:.4g} mm",
+                     "-", among])
     stress = stats.get("quantiles", {}).get("peak_ball_stress_MPa")
     if stress and stress.get("p95") is not None and math.isfinite(stress["p95"]):
         rows.append(["peak ball contact stress, median / 95th percentile",
@@ -199,19 +211,27 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
             raise InputError.for_field("candidate", candidates, "give [[candidate]] tables")
     candidate_list = candidate_tables(data, candidates)
     labels = [label for label, _ in candidate_list]
-    twice = sorted({label for label in labels if labels.count(label) > 1})
-    if twice:  # two runs of one bearing under one label: a ranking and a report that cannot tell them apart
-        where = candidates_option if from_option else "candidate"
-        raise InputError.for_field(where, ", ".join(twice), "each candidate once (this one is given twice)")
+    for j, label in enumerate(labels):
+        i = labels.index(label)
+        if i < j:  # two runs of one bearing under one label: a ranking and a report that cannot tell them apart
+            if from_option:
+                raise InputError.for_field(candidates_option, label, f"each candidate once (this one is given "
+                                           f"twice: items {i + 1} and {j + 1} of the list)")
+            key = "name" if isinstance(candidates[j], dict) and "name" in candidates[j] else "bearing"
+            raise InputError.for_field(f"candidate.{j}.{key}", label, f"the same as candidate.{i}'s: each candidate "
+                                       "once")
     design_machine = machine_from_mapping(data, name, base)
-    for label, tables in candidate_list:  # refuse a bad candidate before the first drop, not after
+    # the temperature limit's default is verify's alone: the file's check leaves it to the command that judges by it
+    check_temperature_criterion(data, design_machine, criteria)
+    for i, (label, tables) in enumerate(candidate_list):  # refuse a bad candidate before the first drop, not after
+        where = f"{candidates_option} = {label!r}" if from_option else candidate_key(f"candidate.{i}", candidates[i])
         try:
             candidate = machine_from_mapping(tables, name, base)
         except InputError as err:
-            raise InputError(f"candidate '{label}': {err}") from None
+            raise InputError(f"{where}: {err}") from None
         # a candidate must fit the design's seat: same bore, no larger outside diameter or width
-        check_candidate_seat(design_machine, candidate.planes[0].unit,
-                             f"{candidates_option} = {label!r}" if from_option else f"candidate '{label}'")
+        check_candidate_seat(design_machine, candidate.planes[0].unit, where)
+        check_not_the_design(design_machine, candidate, where)
 
     def say(text: str) -> None:
         if progress is not None:
@@ -238,15 +258,20 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
                    "candidates": [label for label, _ in candidate_list], "quick": quick},
     }
-    ranked = sorted([(machine.planes[0].unit.name + " (the design)", design), *others],
-                    key=lambda item: ranking_key(item[1]["criteria"]))
+    ranked, whirl_term = _ranked([(machine.planes[0].unit.name + " (the design)", design), *others],
+                                 criteria["max_backward_whirl_probability"])
     result["margins"] = MARGINS
     result["reason"] = _reason(design["criteria"])
-    result["candidate_rows"] = [[i + 1, label, d["verdict"], f"{100 * d['worst_margin']:+.1f} %"
-                                 if math.isfinite(d["worst_margin"]) else "-",
+    result["candidate_rows"] = [[i + 1, label, d["verdict"], f"{100 * margin:+.1f} %" if math.isfinite(margin) else "-",
                                  "; ".join(c.name for c in d["criteria"] if c.passed is False) or "-"]
-                                for i, (label, d) in enumerate(ranked)]
-    result["ranking"] = [label for label, _ in ranked]
+                                for i, (label, d, margin) in enumerate(ranked)]
+    result["ranking"] = [label for label, *_ in ranked]
+    result["ranking_whirl_term"] = whirl_term if others else None
+    for entry, (_, d) in zip(result["candidates"], others, strict=True):
+        entry["ranking_worst_margin"] = next(margin for _, e, margin in ranked if e is d)
+    result["campaign"] = _campaign_summary(design["cases"].campaign)
+    result["campaign_samples_from"] = ("--campaign-samples" if samples is not None else "--quick" if quick
+                                       else "verify.campaign_samples")
     if rec is not None:
         first = machine.planes[0].bearing
         result["recommendation_rows"] = [
@@ -259,9 +284,45 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
             # can read above the verdict's for the same clearance
             ["worst drop margin (the drop's criteria; the air gap before the coast-down's thermal growth)",
              f"{100 * rec['worst_margin']:+.1f} %", f"{100 * rec['as_is']:+.1f} %"]]
-    result["assumptions"] = _assumptions(design["cases"], criteria, settings, quick)
+    result["assumptions"] = _assumptions(design["cases"], criteria, settings, quick,
+                                         result["settings"]["campaign_samples"], result["campaign_samples_from"], rec,
+                                         skipped)
     result["wall_time_s"] = time.perf_counter() - start
     return Verification(result)
+
+
+def _ranked(designs: list[tuple[str, dict]], limit: float) -> tuple[list[tuple[str, dict, float]], str]:
+    """The designs ranked (:func:`ranking_key`) as (label, design, its ranking margin), and what the whirl term uses.
+
+    A whirl bound rests on its campaign's size: 32 drops (a candidate that fails already) or a campaign stopped
+    once decided give a wider bound than 128 whatever the bearing. When the designs' campaigns rest on different
+    numbers of drops, the whirl criterion enters the ranking by its estimate instead, which the size does not bias;
+    the verdicts keep their bounds.
+    """
+    sizes = sorted({n for _, d in designs if (n := campaign_drops(d["cases"].campaign)) is not None})
+    by_estimate = len(sizes) > 1
+
+    def judged(d: dict) -> list:
+        return whirl_by_estimate(d["criteria"], d["cases"].campaign, limit) if by_estimate else d["criteria"]
+
+    ranked = sorted(((label, d, judged(d)) for label, d in designs), key=lambda item: ranking_key(item[2]))
+    if by_estimate:
+        term = ("the whirl probability enters the worst margin by its estimate, not its 95 % bound: the campaigns "
+                f"rest on different numbers of drops ({', '.join(map(str, sizes))}), and a bound from fewer drops is "
+                "wider whatever the bearing")
+    else:
+        term = "the whirl probability enters the worst margin by its 95 % bound, as in the verdict" + (
+            f" (every campaign rests on {sizes[0]} drops)" if sizes else "")
+    return [(label, d, worst_margin(c)) for label, d, c in ranked], term
+
+
+def _campaign_summary(stats: dict | None) -> dict | None:
+    """The design campaign's counts and extremes for ``verify.json`` (its full statistics stay in the store)."""
+    if not stats:
+        return None
+    keys = ("samples", "planned", "completed", "ok", "stopped_decided", "smallest_s0", "largest_excursion_mm",
+            "p_backward_whirl", "p_out_of_range", "p_s0_below_required")
+    return {key: stats[key] for key in keys if key in stats}
 
 
 def _run_all(data, name, base, criteria, settings, candidate_list, quick, samples, out_dir, executor, address,
@@ -469,7 +530,9 @@ def spread_rows(spreads: list[dict]) -> list[list[str]]:
             for sp in spreads]
 
 
-def _assumptions(cases: Cases, criteria: dict, settings: dict, quick: bool) -> list[str]:
+def _assumptions(cases: Cases, criteria: dict, settings: dict, quick: bool, samples: int = 0,
+                 samples_from: str = "verify.campaign_samples", rec: dict | None = None,
+                 skipped: str | None = None) -> list[str]:
     from auxbearing.machine.judging import CRITERIA
 
     out = []
@@ -485,5 +548,23 @@ def _assumptions(cases: Cases, criteria: dict, settings: dict, quick: bool) -> l
                    f"({sp['origin']})")
     out += cases.notes
     if quick:
-        out.append("--quick: shorter drops, a partial coast-down, 8 campaign samples, a 2x2x2 design grid")
+        out.append(f"--quick: shorter drops, a partial coast-down, {quick_parts(samples, samples_from, rec, skipped)}")
     return out
+
+
+def quick_parts(samples: int, samples_from: str, rec: dict | None, skipped: str | None) -> str:
+    """What a quick look's campaign and geometry search were, from the values they ran with.
+
+    >>> quick_parts(8, "--quick", {"grid": [1, 2, 2]}, None)
+    '8 campaign samples (--quick), a 1x2x2 design grid'
+    >>> quick_parts(0, "--campaign-samples", None, None)
+    'no campaign (--campaign-samples 0), no geometry search'
+    """
+    campaign = (f"{samples} campaign samples ({samples_from})" if samples else
+                f"no campaign ({samples_from} 0)" if samples_from.startswith("--") else
+                f"no campaign ({samples_from} = 0)")
+    if rec is not None and rec.get("grid"):
+        search = f"a {'x'.join(str(n) for n in rec['grid'])} design grid"
+    else:
+        search = "no geometry search" + (f" ({skipped})" if skipped else "")
+    return f"{campaign}, {search}"
