@@ -136,7 +136,9 @@ TOUCHDOWN: tuple[Param, ...] = (
           "wider than it (a duplex pair in place of one bearing) does not fit",
           "ours: the machine's drawing"),
     Param("touchdown", "lubricant_viscosity", "kinematic_viscosity", 0.0, "mm**2/s", "nonnegative",
-          "Kinematic viscosity of the bearing's oil (base oil of a grease) for Palmgren's load-free torque",
+          "Kinematic viscosity of the bearing's oil (base oil of a grease) for Palmgren's load-free torque, held at "
+          "this value over the whole run: give it at the bearing's running temperature (a value at 40 degC overstates "
+          "a hot bearing's torque and heat, on the safe side for its temperature)",
           "Harris & Kotzalas 2007, Essential Concepts Ch. 10; 0: no load-free torque"),
     Param("touchdown", "viscous_factor", "dimensionless", 0.0, "", "nonnegative",
           "Palmgren's f_0 of the load-free torque M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3 of one bearing (about 0.7-4 for "
