@@ -107,6 +107,8 @@ sets + heat + drag loss; ``energy_balance_error`` is their difference over the e
 
 from __future__ import annotations
 
+import copy
+import functools
 import math
 import time
 from collections.abc import Callable
@@ -251,6 +253,13 @@ class _Session:
         self.base_clearance = np.array(self.core.planes.clearance)
         self.base_radius = np.array(self.core.planes.journal_radius)
         self.base_internal = self.core.ballset_clearance.copy()
+
+    def sandbox(self) -> _Session:
+        """A copy to run ahead on: its state, integrator memory and clearances are its own."""
+        other = copy.copy(self)
+        other.y = self.y.copy()
+        other.memory = ig.Memory(*(a.copy() for a in self.memory))
+        return other
 
     def energy_error(self) -> float:
         energy_in, accounted, scale = cm.energy_balance(self.y, self.core, self.e0)
@@ -504,6 +513,45 @@ def _stretch(machine: Machine, session: _Session, networks, temps, windows, t_en
         span = 0.5 * duration
 
 
+def _clearance_changes(networks, temps, blocks: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Thermal changes of the radial and internal clearances and the journal's growth [m], per packed plane."""
+    radial, internal, growth = np.zeros(blocks), np.zeros(blocks), np.zeros(blocks)
+    for k, (net, tk) in enumerate(zip(networks, temps, strict=True)):
+        radial[k], internal[k] = net.clearance_changes(tk)
+        growth[k] = net.expansion[JOURNAL] * net.journal_radius * (tk[JOURNAL] - net.ambient_temperature)
+    return radial, internal, growth
+
+
+def _load_inside(machine: Machine, start: _Session, networks, temps, carried, t_end: float, growth: float,
+                 locked, window: float, top: float, bottom: float, share: float):
+    """The bearing loads a stretch from ``top`` to ``bottom`` [rad/s] passes through ``share`` of the way down.
+
+    From ``start`` (the session as the stretch found it), the reduced model runs the stretch again down to
+    that speed, then full dynamics for :data:`PROBE_WINDOWS` windows, the first of which lets the motion find the
+    new speed; the others' mean equivalent load is the load there. Returns (revolutions of each race to that
+    point, loads), or None where the copy leaves the model's range. Nothing of the run itself is touched.
+    """
+    sandbox = start.sandbox()
+    speed = top - share * (top - bottom)
+    stretch, new_temps = _stretch(machine, sandbox, networks, temps, carried, t_end, growth, speed)
+    sandbox.set_speeds(stretch.rotor_speed, stretch.race_speeds, locked)
+    sandbox.t += stretch.duration
+    sandbox.memory.t[0] = sandbox.t
+    sandbox.set_clearances(*_clearance_changes(networks, new_temps, sandbox.layout.planes))
+    loads = []
+    for _ in range(PROBE_WINDOWS):
+        status, watch, ledger = sandbox.full(window)
+        if status in (ig.STOPPED, ig.STEP_UNDERFLOW):
+            return None
+        loads.append([w.load for w in _window_planes(machine, watch, _window_powers(
+            machine, sandbox.layout, sandbox.y, ledger, window))])
+    return list(stretch.race_revolutions), list(np.mean(loads[1:], axis=0))
+
+
+#: Full-dynamics windows a probe inside a stretch runs (:func:`_load_inside`); the first is not measured.
+PROBE_WINDOWS = 4
+
+
 # ----------------------------------------------------------------------------- the run
 class _Limits:
     """Thermal state, clearances and the limits checked after every window and stretch."""
@@ -525,12 +573,9 @@ class _Limits:
         """New temperatures: clearances into the dynamics, limits checked; returns (verdict, reason)."""
         self.temps = [np.asarray(x, float) for x in temps]
         n = len(self.networks)
-        blocks = self.session.layout.planes  # the packed planes, padded
-        radial, internal, growth = np.zeros(blocks), np.zeros(blocks), np.zeros(blocks)
-        for k, (net, tk) in enumerate(zip(self.networks, self.temps, strict=True)):
+        for k, tk in enumerate(self.temps):
             self.max_temps[k] = np.maximum(self.max_temps[k], tk)
-            radial[k], internal[k] = net.clearance_changes(tk)
-            growth[k] = net.expansion[JOURNAL] * net.journal_radius * (tk[JOURNAL] - net.ambient_temperature)
+        radial, internal, growth = _clearance_changes(self.networks, self.temps, self.session.layout.planes)
         self.session.set_clearances(radial, internal, growth)
         self.radial, self.internal = radial[:n], internal[:n]
         for k, plane in enumerate(self.machine.planes):  # every plane's smallest first: the history records them all
@@ -823,6 +868,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         elif held is not None:
             growth = stretch_growth(growth, held, carried, machine)
         held = carried
+        start, start_temps, omega_start = session.sandbox(), [t.copy() for t in limits.temps], session.y[cm.OMEGA]
         stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth,
                                   next_passage_top(passages, session.y[cm.OMEGA]))
         backward.stretch(carried, session.t, stretch.duration)
@@ -831,7 +877,10 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             for j in range(3):
                 session.y[session.layout.heat(k, j)] += stretch.heat[k][j]
             overrolling[k].append((stretch.race_revolutions[k], loads[k]))
-        ending = StretchEnd(carried, [len(o) - 1 for o in overrolling])
+        probe_args = (machine, start, networks, start_temps, carried, t_end, growth, spin_locked(carried, rested),
+                      min(max(coast.check_window, session.window) * window_scale, t_end - session.t))
+        inside = functools.partial(_load_inside, *probe_args, abs(float(omega_start)), abs(stretch.rotor_speed))
+        ending = StretchEnd(carried, [len(o) - 1 for o in overrolling], inside)
         session.y[session.layout.drag_loss] += stretch.drag_loss
         session.y[session.layout.work_in] += stretch.work
         session.t += stretch.duration
