@@ -472,10 +472,14 @@ def _window_powers(machine: Machine, layout: cm.Layout, y, ledger, length: float
     return out
 
 
-def _window_planes(machine: Machine, watch, powers: dict) -> list:
-    """Each plane's state over the window just run (:func:`auxbearing.analysis.coastdown_phases.plane_window`)."""
+def _window_planes(machine: Machine, watch, powers: dict, core) -> list:
+    """Each plane's state over the window just run (:func:`auxbearing.analysis.coastdown_phases.plane_window`).
+
+    Judged on the journal radii and clearances ``core`` (the packed machine) ran it with.
+    """
     n = int(watch.window_count[0])
-    planes = [plane_window(machine, k, watch.whirl[:n, k], int(watch.onsets[k]), powers[k])
+    planes = [plane_window(machine, k, watch.whirl[:n, k], int(watch.onsets[k]), powers[k],
+                           (core.planes.journal_radius[k], core.planes.clearance[k]))
               for k in range(len(machine.planes))]
     return [w._replace(load=_window_load(machine, k, w)) for k, w in enumerate(planes)]
 
@@ -544,7 +548,7 @@ def _load_inside(machine: Machine, start: _Session, networks, temps, carried, t_
         if status in (ig.STOPPED, ig.STEP_UNDERFLOW):
             return None
         loads.append([w.load for w in _window_planes(machine, watch, _window_powers(
-            machine, sandbox.layout, sandbox.y, ledger, window))])
+            machine, sandbox.layout, sandbox.y, ledger, window), sandbox.core)])
     return list(stretch.race_revolutions), list(np.mean(loads[1:], axis=0))
 
 
@@ -808,7 +812,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         powers = _window_powers(machine, session.layout, session.y, ledger, length)
         temps = [net.step(limits.temps[k], _heat_per_node(net, *powers[k]), length) for k, net in enumerate(networks)]
         omega_mean = 0.5 * (omega_start + float(session.y[cm.OMEGA]))
-        windows = _window_planes(machine, watch, powers)
+        windows = _window_planes(machine, watch, powers, session.core)
         backward.window(windows, session.t, length)
         races_end = _race_speeds(session)
         for k, w in enumerate(windows):
