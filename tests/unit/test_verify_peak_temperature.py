@@ -21,10 +21,10 @@ def test_the_hottest_part_of_any_plane_is_judged():
                                         {"balls": 111.2}}), CRITERIA)
     assert c.found == pytest.approx(121.6) and c.passed is False
     assert c.margin == pytest.approx((120.0 - 121.6) / (120.0 - 25.0))
-    assert c.evidence == "coast-down, drive end"
+    assert c.evidence == "coast-down, drive end, balls"  # the part named: a journal or housing counts too
 
 
 def test_a_run_away_says_its_figure_is_where_it_stopped():
     c = _peak_temperature(_cases("thermal_runaway", {"lower": {"balls": 150.0}, "upper": {"balls": 143.1}}), CRITERIA)
     assert c.found == pytest.approx(150.0) and c.passed is False
-    assert c.evidence.startswith("coast-down, lower; the run stopped there on its thermal run-away")
+    assert c.evidence.startswith("coast-down, lower, balls; the run stopped there on its thermal run-away")

@@ -133,8 +133,10 @@ def _peak_temperature(cases: Cases, criteria: dict) -> Criterion:
     where the run stopped, not the peak the bearing was heading for, and the evidence says so.
     """
     coast = cases.coastdown.summary
-    hottest = max((max(p["max_temperature_C"].values()), p["name"]) for p in coast["planes"])
-    where = f"coast-down, {hottest[1]}"
+    # every part of the plane's network counts (a journal or housing that hot cooks the bearing's grease too); the
+    # evidence names the part
+    hottest = max((value, p["name"], part) for p in coast["planes"] for part, value in p["max_temperature_C"].items())
+    where = f"coast-down, {hottest[1]}, {hottest[2].replace('_', ' ')}"
     if coast["verdict"] == "thermal_runaway":
         where += ("; the run stopped there on its thermal run-away (coastdown.max_temperature): the peak it was "
                   "heading for is higher")
