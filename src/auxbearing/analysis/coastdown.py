@@ -872,7 +872,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         elif held is not None:
             growth = stretch_growth(growth, held, carried, machine)
         held = carried
-        start, start_temps, omega_start = session.sandbox(), [t.copy() for t in limits.temps], session.y[cm.OMEGA]
+        # the stretch's start, kept to measure inside it should its ends disagree (coastdown_phases.StretchEnd)
+        start, start_temps, top = session.sandbox(), [t.copy() for t in limits.temps], abs(float(session.y[cm.OMEGA]))
         stretch, temps = _stretch(machine, session, networks, limits.temps, carried, t_end, growth,
                                   next_passage_top(passages, session.y[cm.OMEGA]))
         backward.stretch(carried, session.t, stretch.duration)
@@ -883,7 +884,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             overrolling[k].append((stretch.race_revolutions[k], loads[k]))
         probe_args = (machine, start, networks, start_temps, carried, t_end, growth, spin_locked(carried, rested),
                       min(max(coast.check_window, session.window) * window_scale, t_end - session.t))
-        inside = functools.partial(_load_inside, *probe_args, abs(float(omega_start)), abs(stretch.rotor_speed))
+        inside = functools.partial(_load_inside, *probe_args, top, abs(stretch.rotor_speed))
         ending = StretchEnd(carried, [len(o) - 1 for o in overrolling], inside)
         session.y[session.layout.drag_loss] += stretch.drag_loss
         session.y[session.layout.work_in] += stretch.work
