@@ -31,7 +31,10 @@ def test_no_passing_geometry_is_no_recommendation(monkeypatch):
 
 def test_a_passing_geometry_is_recommended_without_a_note(monkeypatch):
     def calm_drop(machine, lean=False, **_):
-        planes = [{"s0": 5.0, "backward_whirl_onset_ms": None, "shoulder_use": 0.5} for _ in machine.planes]
+        # s0 grows with the contact angle: a steeper geometry than the rig's 35 deg beats the bearing as built (a
+        # search that finds nothing better than it recommends nothing)
+        s0 = 5.0 + machine.planes[0].bearing.contact_angle
+        planes = [{"s0": s0, "backward_whirl_onset_ms": None, "shoulder_use": 0.5} for _ in machine.planes]
         return SimpleNamespace(summary={"verdict": "ok", "planes": planes})
 
     monkeypatch.setattr(auxbearing.analysis.drop, "run_machine", calm_drop)

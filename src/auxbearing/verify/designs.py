@@ -204,6 +204,10 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
             break
         for x, future in [launch(x) for x in tier]:  # the tier's drops all out before the first is read
             judged(x, future)
+    # the bearing as it stands is the yardstick: a geometry no better than it is no recommendation (it is kept out
+    # of the search's own points)
+    built = judged(*as_is)
+    evaluated[:] = [p for p in evaluated if p is not built]
     best = best_of(evaluated)
     if not quick:
         best = _polish(best, bounds, 0.5 / (levels - 1), evaluated, launch, judged, gap_margin, left_out)
@@ -212,14 +216,18 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
                                                         strict=True)
                 if hi > lo and (abs(value - lo) < 1e-3 * (hi - lo) or abs(value - hi) < 1e-3 * (hi - lo))]
     offset = first.outer_groove_ratio - first.inner_groove_ratio
-    passes = best["worst"] >= 0.0
+    improves = better(best, built)
+    passes = bool(best["worst"] >= 0.0 and improves)
     failing = sorted({p["binding"] for p in evaluated})
     # when no point passes, the best one is only the least bad (often a tie at -100 %): say so instead of
     # recommending it
     note = None if passes else (
         f"no {first.type.replace('_', ' ')} geometry within these ranges passes the drop's criteria: all "
         f"{len(evaluated)} points fail ({', '.join(failing)}); the lever is outside the bearing's geometry "
-        "(mount stiffness and damping, the clearance beyond this range, the rotor or the speed)")
+        "(mount stiffness and damping, the clearance beyond this range, the rotor or the speed)"
+        if best["worst"] < 0.0 else
+        f"the bearing as built is the best geometry of the {len(evaluated)} points run (worst drop margin "
+        f"{100 * built['worst']:+.1f} %, {built['binding']}): no change is recommended")
     return {
         "passes": passes, "note": note,
         "family": first.type, "contact_angle_deg": math.degrees(x[0]), "inner_groove_ratio": float(x[1]),
@@ -234,7 +242,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
         "points": [{"contact_angle_deg": math.degrees(p["x"][0]), "inner_groove_ratio": float(p["x"][1]),
                     "clearance_factor": float(p["x"][2]), "worst_margin": p["worst"], "binding": p["binding"]}
                    for p in evaluated],
-        "as_is": judged(*as_is)["worst"],
+        "as_is": built["worst"],
     }
 
 
