@@ -10,21 +10,7 @@ from types import SimpleNamespace
 from auxbearing.machine.files import machine_document
 from auxbearing.machine.judging import read_criteria
 from auxbearing.verify.designs import recommend
-
-
-class _Drops:
-    """An executor whose every drop of the search gives ``summary``."""
-
-    client, priority = None, 0
-
-    def __init__(self, summary):
-        self.summary = summary
-
-    def submit(self, fn, *args):
-        return SimpleNamespace(result=lambda: self.summary)
-
-    def ahead(self):
-        return self
+from tests.cli.test_verify_review_round4 import _Stub as _Drops  # every drop of the search gives one summary
 
 
 def _summary(s0: float) -> dict:
