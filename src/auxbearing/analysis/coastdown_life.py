@@ -33,6 +33,7 @@ import xarray as xr
 
 from auxbearing.analysis.drop import plane_ball_arrays
 from auxbearing.analysis.life import dent_per_drop, drop_damage, dynamic_load_rating, governing
+from auxbearing.bearings.ratings import nearest_angle
 from auxbearing.core import fatigue as cf
 
 
@@ -45,18 +46,13 @@ def _factors(bearing, axial: float = 0.0) -> tuple:
     row = getattr(bearing, "row", None)
     if row is not None:  # a matched pair: DB/DF as a double row, DT as its rows
         table = cf.ANGULAR_CONTACT_FACTORS if bearing.arrangement == "DT" else cf.ANGULAR_CONTACT_PAIR_FACTORS
-        return table[_nearest_angle(table, row.contact_angle)]
+        return table[nearest_angle(table, row.contact_angle)]
     if bearing.type == "four_point":
         return cf.FOUR_POINT_FACTORS
     if bearing.type == "angular_contact":
-        return cf.ANGULAR_CONTACT_FACTORS[_nearest_angle(cf.ANGULAR_CONTACT_FACTORS, bearing.contact_angle)]
+        return cf.ANGULAR_CONTACT_FACTORS[nearest_angle(cf.ANGULAR_CONTACT_FACTORS, bearing.contact_angle)]
     # deep groove: the thrust it carries loads its balls at an angle the table's e and Y follow (ISO 281 Table 3)
     return cf.deep_groove_factors(abs(axial) * _f0_over_c0(bearing))
-
-
-def _nearest_angle(table: dict, contact_angle: float) -> int:
-    """The tabulated angle [deg] nearest ``contact_angle`` [rad]; on a tie the smaller, whose Y is the larger."""
-    return min(sorted(table), key=lambda a: abs(a - math.degrees(contact_angle)))
 
 
 @functools.lru_cache(maxsize=64)

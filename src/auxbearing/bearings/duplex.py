@@ -203,10 +203,10 @@ def _check_preload_statics(pair: DuplexSet) -> None:
     Clamped and unloaded, each row carries the preload as a pure axial load Fa, so P0 = Y0 Fa. An offset typed in
     place of a force reaches that quickly: 0.29 mm on a 7208 pair is 124 kN a row, five times its C0.
     """
-    from auxbearing.bearings.ratings import static_load_rating
+    from auxbearing.bearings.ratings import nearest_angle, static_load_rating
 
     force = pair.preload_force
-    angle = min(sorted(STATIC_AXIAL_FACTORS), key=lambda a: abs(a - math.degrees(pair.row.contact_angle)))
+    angle = nearest_angle(STATIC_AXIAL_FACTORS, pair.row.contact_angle)
     c0 = static_load_rating(pair.row)
     s0 = c0 / (STATIC_AXIAL_FACTORS[angle] * force)
     if s0 < 1.0:

@@ -102,6 +102,17 @@ def _within_the_standards(bearing):
             f"{ISO76_F0_STEP * (len(ISO76_F0) - 1):g}), so {bearing.name} has no load rating") from None
 
 
+def nearest_angle(table: dict, contact_angle: float) -> int:
+    """The key of an ISO table by contact angle [deg] nearest ``contact_angle`` [rad].
+
+    On a tie the smaller angle, whose axial factor is the larger (the safe side).
+
+    >>> nearest_angle({30: 0.33, 35: 0.29, 40: 0.26}, math.radians(37.5))
+    35
+    """
+    return min(sorted(table), key=lambda a: abs(a - math.degrees(contact_angle)))
+
+
 def iso76_f0(gamma: float) -> float:
     """f0 [-] of ISO 76 for steel bearings: :data:`ISO76_F0` read by linear interpolation.
 
