@@ -125,6 +125,7 @@ def test_the_campaign_rows_hold_its_smallest_s0_and_largest_excursion():
 
 
 # ----------------------------------------------------------------------------- 2. temperature limits
+@pytest.mark.slow  # 0.6-0.8 s: the quick loop keeps to its 30 s
 def test_verify_refuses_a_temperature_limit_the_coast_down_stops_before(tmp_path):
     text = BLOWER.replace("[criteria]\n", '[criteria]\nmax_temperature = "150 degC"\n')
     line = _verify_refusal(tmp_path, text)
@@ -133,6 +134,7 @@ def test_verify_refuses_a_temperature_limit_the_coast_down_stops_before(tmp_path
     assert "stops" in line
 
 
+@pytest.mark.slow  # 0.6-0.8 s: the quick loop keeps to its 30 s
 def test_verify_refuses_a_coast_down_stop_below_the_default_temperature_limit(tmp_path):
     text = BLOWER.replace("[coastdown]\n", '[coastdown]\nmax_temperature = "110 degC"\n')
     line = _verify_refusal(tmp_path, text)
@@ -337,6 +339,7 @@ def _design(hits: int, drops: int) -> dict:
     return {"criteria": judged, "cases": SimpleNamespace(campaign=campaign)}
 
 
+@pytest.mark.slow  # 0.6-0.8 s: the quick loop keeps to its 30 s
 def test_campaigns_of_different_sizes_are_ranked_by_the_whirl_estimate_not_its_bound():
     from auxbearing.verify.run import _ranked
 
