@@ -222,7 +222,7 @@ LEGAL = [
     case("legal-coast-speed-step-one", "coastdown --machine m.toml --duration 0.01 --quiet",
          files={"m.toml": machine(tables="[coastdown]\nspeed_step = 1\n")}, expect="verdict"),
     case("legal-coast-cold-ambient", "coastdown --machine m.toml --duration 0.01 --quiet",
-         files={"m.toml": machine(tables='[coastdown]\nambient_temperature = "-200 degC"\n')}, expect="verdict"),
+         files={"m.toml": machine(tables='[coastdown]\nambient_temperature = "-73 degC"\n')}, expect="verdict"),
     case("legal-coast-stop-speed-just-below", "coastdown --machine m.toml --duration 0.5 --quiet",
          files={"m.toml": machine(tables='[coastdown]\nstop_speed = "5999 rpm"\n')}, expect="verdict"),
     case("legal-candidate-same-seat", "drop --machine m.toml --quiet",

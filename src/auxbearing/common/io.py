@@ -179,7 +179,8 @@ def read_toml(path: str | Path, field: str = "file") -> dict:
 
 def provenance(inputs: dict | None = None) -> dict:
     """Attributes every file carries: the package version and the inputs of the run."""
-    return {"auxbearing_version": __version__, "inputs": json.dumps(to_jsonable(inputs or {}), sort_keys=True)}
+    return {"auxbearing_version": __version__,
+            "inputs": json.dumps(to_jsonable(inputs or {}), sort_keys=True, allow_nan=False)}
 
 
 def save_dataset(ds: xr.Dataset, path: str | Path, inputs: dict | None = None) -> Path:
@@ -207,8 +208,21 @@ def _netcdf_attr(value: object) -> object:
     return json.dumps(to_jsonable(value))
 
 
+#: How an infinite number is written in JSON, which has no number for it. null would read as "missing", yet an
+#: infinite life or a limit that is never reached is a finding; Python's ``float()`` reads these texts back.
+INFINITY_TEXT = {math.inf: "inf", -math.inf: "-inf"}
+_INFINITY_OF_TEXT = {text: value for value, text in INFINITY_TEXT.items()}
+
+
 def to_jsonable(obj: object) -> object:
-    """Numpy scalars/arrays and non-finite floats made JSON-safe (NaN becomes null)."""
+    """Numpy scalars/arrays and non-finite floats made JSON-safe: NaN becomes null, an infinity "inf" or "-inf".
+
+    A key keeps its unit in its name ("drops_to_failure", "max_current_A"), so the text stands for the same
+    quantity as a number would; :func:`from_jsonable` turns it back.
+
+    >>> to_jsonable({"life": float("inf"), "margin": np.float64(-np.inf), "s0": float("nan"), "n": np.int64(3)})
+    {'life': 'inf', 'margin': '-inf', 's0': None, 'n': 3}
+    """
     if isinstance(obj, dict):
         return {str(k): to_jsonable(v) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
@@ -219,15 +233,39 @@ def to_jsonable(obj: object) -> object:
         return int(obj)
     if isinstance(obj, (float, np.floating)):
         value = float(obj)
-        return value if math.isfinite(value) else None
+        if math.isnan(value):
+            return None
+        return INFINITY_TEXT.get(value, value)
     if isinstance(obj, (np.bool_,)):
         return bool(obj)
     return obj
 
 
+def from_jsonable(obj: object) -> object:
+    """What :func:`to_jsonable` wrote, with "inf" and "-inf" made floats again (null stays None).
+
+    A text that is exactly "inf" or "-inf" is taken for the number wherever it stands, a name included.
+
+    >>> from_jsonable({"life": "inf", "planes": [{"margin": "-inf", "name": "drive end"}], "s0": None})
+    {'life': inf, 'planes': [{'margin': -inf, 'name': 'drive end'}], 's0': None}
+    """
+    if isinstance(obj, dict):
+        return {k: from_jsonable(v) for k, v in obj.items()}
+    if isinstance(obj, list):
+        return [from_jsonable(v) for v in obj]
+    if isinstance(obj, str) and obj in _INFINITY_OF_TEXT:
+        return _INFINITY_OF_TEXT[obj]
+    return obj
+
+
 def dumps(obj: object) -> str:
-    """JSON text of ``obj`` (indentation 2)."""
-    return json.dumps(to_jsonable(obj), indent=2)
+    """JSON text of ``obj`` (indentation 2); a value JSON cannot hold raises rather than writing bare Infinity."""
+    return json.dumps(to_jsonable(obj), indent=2, allow_nan=False)
+
+
+def loads(text: str | bytes) -> object:
+    """A JSON text this package wrote (:func:`dumps`, a file's ``summary`` attribute), infinities restored."""
+    return from_jsonable(json.loads(text))
 
 
 def write_json(obj: object, path: str | Path, inputs: dict | None = None) -> Path:

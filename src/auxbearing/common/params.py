@@ -18,7 +18,17 @@ from auxbearing.common.dimensions import _DISPLAY_SCALE, EXTRA_UNITS, SI_UNITS, 
 from auxbearing.common.errors import InputError
 
 RULES = ("positive", "nonnegative", "unit_interval", "fraction", "finite", "tolerance", "optional_positive",
-         "optional_nonnegative", "count", "optional_count")
+         "optional_nonnegative", "count", "optional_count", "temperature_rise", "service_temperature")
+#: Where a temperature of a bearing or of its surroundings can lie [K], the ``service_temperature`` rule: from
+#: -73 degC, the cold end of the widest-range aircraft greases (MIL-PRF-23827 Type I: -73 to 121 degC), to
+#: 350 degC, the highest heat-stabilisation class makers give bearing rings (S4). Beyond either end a value is a
+#: slip ("1 K", "20 delta_degC") or a machine this model does not describe: its material data are room-temperature
+#: values and its convection is air's at 300 K, far from a bearing immersed in a cryogen or past its tempering.
+SERVICE_TEMPERATURE = (200.15, 623.15)
+SERVICE_TEMPERATURE_TEXT = "-73 degC to 350 degC (200.15 K to 623.15 K)"
+#: A temperature difference's unit (pint's ``delta_degC``, ``Δcelsius``, ...): pint converts "250 delta_degC" to
+#: 250 K, which a temperature would then read as -23 degC.
+_DIFFERENCE_UNIT = re.compile(r"delta|\u0394", re.IGNORECASE)
 #: How close (difflib's ratio) a mistyped key must be to an allowed one to be suggested.
 SUGGESTION_CUTOFF = 0.6
 
@@ -174,6 +184,11 @@ def check(param: Param, value: object, field: str | None = None, typed: object =
         raise InputError.for_field(name, shown, "must lie in (0, 1]")
     if rule == "tolerance" and not 0.0 < value <= 1e-2:
         raise InputError.for_field(name, shown, "must lie in (0, 0.01]")
+    # the ends themselves, typed in degC, land a rounding either side of their kelvin values
+    if rule == "service_temperature" and not SERVICE_TEMPERATURE[0] - 1e-9 <= value <= SERVICE_TEMPERATURE[1] + 1e-9:
+        raise InputError.for_field(name, shown, "must be above absolute zero (0 K, -273.15 degC)" if value <= 0.0 else
+                                   f"must lie within {SERVICE_TEMPERATURE_TEXT}, the service range of bearing "
+                                   "greases and heat-stabilised bearing steel")
     if rule == "temperature_rise" and not 0.0 <= value <= 10.0:  # "0.05 degC" reads as 273.2 K: refused here
         raise InputError.for_field(name, shown, "must be a temperature rise in K within [0, 10]")
     if rule in ("count", "optional_count") and (value != int(value) or value < 1):
@@ -186,6 +201,7 @@ def accept(param: Param, value: object, field: str | None = None) -> float | Non
     if value is None:
         check(param, None, name)
         return None
+    refuse_difference(param, value, name)
     si = value if isinstance(value, (int, float)) and not isinstance(value, bool) else convert(
         name, value, param.dimension)
     si = float(si) if not isinstance(si, bool) else si
@@ -223,9 +239,31 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
         if number is not None and param.dimension not in ("dimensionless",) and si_unit(param.dimension):
             raise InputError.for_field(prefix + key, value, f"needs a unit, e.g. "
                                        f"'{str(value).strip()} {param.display_unit or si_unit(param.dimension)}'")
+        refuse_difference(param, value, prefix + key)
         out[key] = convert(prefix + key, value, param.dimension)
         check(param, out[key], prefix + key, value)
     return out
+
+
+def refuse_difference(param: Param, value: object, field: str) -> None:
+    """Refuse a temperature difference ("20 delta_degC") where a temperature is meant.
+
+    pint reads a difference unit as kelvin, so "250 delta_degC" would pass as -23 degC; a rise
+    (``temperature_rise``) is a difference and keeps taking one.
+
+    >>> row = Param("coastdown", "t", "temperature", 293.15, "degC", "service_temperature", "", "")
+    >>> refuse_difference(row, "20 delta_degC", "t")
+    Traceback (most recent call last):
+    ...
+    auxbearing.common.errors.InputError: t = '20 delta_degC': is a temperature difference; give a temperature, e.g. ...
+    >>> refuse_difference(row, "20 degC", "t")
+    """
+    if param.rule != "service_temperature" or isinstance(value, (bool, int, float)):
+        return
+    units = value if isinstance(value, str) else str(getattr(value, "units", ""))
+    if _DIFFERENCE_UNIT.search(units):
+        raise InputError.for_field(field, value if isinstance(value, str) else str(value),
+                                   "is a temperature difference; give a temperature, e.g. '20 degC'")
 
 
 def _bare_number(value: object) -> float | None:

@@ -19,8 +19,9 @@ CRITERIA: tuple[Param, ...] = (
           "Smallest static safety factor s0 of any ball contact in any drop",
           "ISO 76:2006: s0 = C0/P0, and 1 loads a contact to 4200 MPa (a permanent set of 1e-4 D); makers ask 1.5-2 "
           "or more under shock, so raise it for your machine"),
-    Param("criteria", "max_temperature", "temperature", 393.15, "degC", "positive",
-          "Hottest bearing part over the coast-down",
+    Param("criteria", "max_temperature", "temperature", 393.15, "degC", "service_temperature",
+          "Hottest bearing part over the coast-down, -73 to 350 degC, between coastdown.ambient_temperature and "
+          "coastdown.max_temperature",
           "ours: 120 degC, the heat-stabilisation limit makers state for standard through-hardened bearing steel; "
           "check your bearing's and its lubricant's"),
     Param("criteria", "max_preload_stress", "pressure", 4200e6, "MPa", "positive",

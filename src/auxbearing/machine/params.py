@@ -12,6 +12,14 @@ import math
 from auxbearing.common.params import Param, by_key
 
 G0 = 9.80665  #: standard gravity [m/s^2] (CGPM 1901)
+#: What every ``position`` of a machine file is measured from and which way, for the help texts and the reference:
+#: the kernels place each station by its distance from the mass centre along the spin axis, so that is the
+#: origin a rigid rotor's file uses; a rotor of matrices keeps its model's coordinates (the reader subtracts the
+#: mass centre's). +z is the direction a positive speed turns about by the right-hand rule, and up when vertical.
+AXIAL_POSITION = ("from the rotor's mass centre along the spin axis z, positive towards +z (the end seen from which a "
+                  "positive rotor.speed turns counter-clockwise; up on a vertical machine); with rotor.matrices or "
+                  "rotor.ross_file, instead the axial coordinate of one of the matrices' nodes in the model's own "
+                  "frame")
 
 ROTOR: tuple[Param, ...] = (
     Param("rotor", "mass", "mass", None, "kg", "positive", "Rotor mass m", "required"),
@@ -50,8 +58,8 @@ ROTOR: tuple[Param, ...] = (
 )
 #: ``[[unbalance]]``: one table per unbalance plane (balancing grade G of ISO 21940-11 gives e = G / Omega).
 UNBALANCE: tuple[Param, ...] = (
-    Param("unbalance", "position", "length", None, "mm", "finite", "Axial position of the plane from the mass centre; "
-          "with rotor.matrices, the coordinate of one of the matrices' nodes", "required"),
+    Param("unbalance", "position", "length", None, "mm", "finite", "Axial position of the plane, " + AXIAL_POSITION,
+          "required"),
     Param("unbalance", "amount", "unbalance", None, "g*mm", "nonnegative", "Unbalance U = m e in the plane",
           "required"),
     Param("unbalance", "phase", "angle", 0.0, "deg", "finite", "Direction of the unbalance at the drop, from +x",
@@ -64,9 +72,8 @@ UNBALANCE: tuple[Param, ...] = (
 ROTOR_TEXT = ("matrices", "ross_file", "ross_bearings", "reduction")
 
 TOUCHDOWN: tuple[Param, ...] = (
-    Param("touchdown", "position", "length", 0.0, "mm", "finite",
-          "Axial position of the plane from the mass centre (+z); with rotor.matrices, the coordinate of one of "
-          "the matrices' nodes", "required with two planes or more"),
+    Param("touchdown", "position", "length", 0.0, "mm", "finite", "Axial position of the plane, " + AXIAL_POSITION,
+          "required with two planes or more"),
     Param("touchdown", "radial_clearance", "length", None, "mm", "positive",
           "Radial clearance s between journal and inner-race bore", "required"),
     Param("touchdown", "axial_clearance", "length", None, "mm", "optional_positive",
@@ -199,15 +206,17 @@ COASTDOWN: tuple[Param, ...] = (
           "Windage drag c2 of T = T0 + c1 Omega + c2 Omega^2", "ours: none unless given"),
     Param("coastdown", "process_torque", "moment", 0.0, "N*m", "finite",
           "Constant torque the process puts on the rotor (positive drives it)", "ours: none unless given"),
-    Param("coastdown", "ambient_temperature", "temperature", 293.15, "degC", "positive",
-          "Ambient (and initial) temperature", "ISO 1 reference temperature, 20 degC"),
+    Param("coastdown", "ambient_temperature", "temperature", 293.15, "degC", "service_temperature",
+          "Ambient (and initial) temperature, -73 to 350 degC and below max_temperature",
+          "ISO 1 reference temperature, 20 degC"),
     Param("coastdown", "max_time", "time", 3600.0, "s", "positive",
           "Longest simulated coast-down: a run to standstill that reaches it first ends with verdict time_budget, "
           "not checked in a verification; a campaign's coast-downs take it as their horizon", "ours: one hour"),
     Param("coastdown", "stop_speed", "angular_speed", math.pi / 30.0, "rpm", "positive",
           "Rotor speed counted as standstill", "ours"),
-    Param("coastdown", "max_temperature", "temperature", 423.15, "degC", "positive",
-          "Temperature of any bearing part that ends the run (thermal run-away)",
+    Param("coastdown", "max_temperature", "temperature", 423.15, "degC", "service_temperature",
+          "Temperature of any bearing part that ends the run (thermal run-away), -73 to 350 degC and above "
+          "ambient_temperature",
           "ours: 150 degC, the usual dimensional-stabilisation limit of through-hardened bearing steel"),
     Param("coastdown", "speed_step", "dimensionless", 0.1, "", "fraction",
           "Relative speed change of one reduced-model stretch before full dynamics checks again; where the "

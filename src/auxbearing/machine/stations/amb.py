@@ -15,6 +15,7 @@ import numpy as np
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import Param, by_key, display_value, unknown
 from auxbearing.core import amb as kernel
+from auxbearing.machine.params import AXIAL_POSITION
 from auxbearing.machine.stations.load import text_key
 
 KIND = kernel.NAME
@@ -25,10 +26,11 @@ CIRCUIT = ("turns", "pole_area", "air_gap", "bias_current")
 #: cos is 6e-17 rather than 0): the pole angle stays below it.
 RIGHT_ANGLE = math.pi / 2 - 1e-12
 PARAMS: tuple[Param, ...] = (
-    Param(KIND, "position", "length", None, "mm", "finite", "Axial position of the actuator from the mass centre; "
-          "with rotor.matrices, the coordinate of one of the matrices' nodes", "required"),
+    Param(KIND, "position", "length", None, "mm", "finite", "Axial position of the actuator, " + AXIAL_POSITION,
+          "required"),
     Param(KIND, "sensor_position", "length", None, "mm", "finite",
-          "Axial position of the displacement sensor; default the actuator's (collocated)", "ours"),
+          "Axial position of the displacement sensor, from the same origin and in the same direction as position; "
+          "default the actuator's (collocated)", "ours"),
     Param(KIND, "current_stiffness", "current_stiffness", None, "N/A", "positive",
           "Force per control current k_i at the bias (or give the magnetic circuit)", "the bearing's data"),
     Param(KIND, "position_stiffness", "stiffness", 0.0, "N/m", "nonnegative",
@@ -468,7 +470,7 @@ def describe(b: MagneticBearing) -> dict:
                 "controller_gain_at_1_Hz_A_per_m": abs(b.transfer(2j * math.pi))}),
             "sensor_bandwidth_Hz": b.sensor_bandwidth,
             "amplifier_bandwidth_Hz": b.amplifier_bandwidth, "max_current_A": b.max_current,
-            "slew_rate_A_per_s": b.slew_rate() if math.isfinite(b.slew_rate()) else None,
+            "slew_rate_A_per_s": b.slew_rate(),  # infinite without max_voltage: written "inf", not missing
             **({"closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()} if b.controller is None else {}),
             **({"turns": b.turns, "pole_area_mm2": b.pole_area * 1e6, "air_gap_mm": b.air_gap * 1e3,
                 "bias_current_A": b.bias_current, "pole_angle_deg": math.degrees(b.pole_angle),

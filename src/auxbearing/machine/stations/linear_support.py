@@ -13,6 +13,7 @@ import numpy as np
 
 from auxbearing.common.params import Param, by_key
 from auxbearing.core import linear_support as kernel
+from auxbearing.machine.params import AXIAL_POSITION
 
 KIND = kernel.NAME
 _COEFFICIENTS = {"kxx": "direct stiffness along x", "kxy": "cross-coupled stiffness: force along x per "
@@ -21,8 +22,8 @@ _COEFFICIENTS = {"kxx": "direct stiffness along x", "kxy": "cross-coupled stiffn
 _DAMPINGS = {"cxx": "direct damping along x", "cxy": "cross-coupled damping (x force per y velocity)",
              "cyx": "cross-coupled damping (y force per x velocity)", "cyy": "direct damping along y"}
 PARAMS: tuple[Param, ...] = (
-    Param(KIND, "position", "length", None, "mm", "finite", "Axial position of the station from the mass centre; "
-          "with rotor.matrices, the coordinate of one of the matrices' nodes", "required"),
+    Param(KIND, "position", "length", None, "mm", "finite", "Axial position of the station, " + AXIAL_POSITION,
+          "required"),
     *(Param(KIND, key, "stiffness", 0.0, "N/m", "finite", text.capitalize(), "the machine's data")
       for key, text in _COEFFICIENTS.items()),
     *(Param(KIND, key, "damping", 0.0, "N*s/m", "nonnegative" if key in ("cxx", "cyy") else "finite",

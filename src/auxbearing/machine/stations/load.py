@@ -16,14 +16,15 @@ from auxbearing.common.dimensions import with_article
 from auxbearing.common.errors import InputError
 from auxbearing.common.params import Param, by_key, read_table
 from auxbearing.core import load as kernel
+from auxbearing.machine.params import AXIAL_POSITION
 
 KIND = kernel.NAME
 #: Keys of each kind of load, beside ``kind``, ``name``, ``start``, ``duration`` and ``shape``.
 KIND_KEYS = {"force": ("position", "force", "direction"), "unbalance": ("position", "amount", "phase"),
              "base_acceleration": ("acceleration", "direction")}
 PARAMS: tuple[Param, ...] = (
-    Param(KIND, "position", "length", None, "mm", "finite", "force, unbalance: axial position on the rotor from the "
-          "mass centre; with rotor.matrices, the coordinate of one of the matrices' nodes", "required for those"),
+    Param(KIND, "position", "length", None, "mm", "finite", "force, unbalance: axial position on the rotor, "
+          + AXIAL_POSITION, "required for those"),
     Param(KIND, "force", "force", None, "N", "nonnegative", "force: its magnitude (the peak of a half sine)",
           "required for a force"),
     Param(KIND, "direction", "angle", -math.pi / 2, "deg", "finite", "force, base_acceleration: its direction "
@@ -139,7 +140,7 @@ def series(loads, journal, states=None, params=None, t=None, rotor_z=None) -> di
 def describe(s: Load) -> dict:
     """Inputs with units in the keys, for files and reports."""
     out = {"kind": KIND, "name": s.name, "load_kind": s.kind, "start_s": s.start,
-           "duration_s": s.duration if math.isfinite(s.duration) else None, "shape": s.shape}
+           "duration_s": s.duration, "shape": s.shape}  # a step to the end of the run lasts "inf", not null
     if s.kind == "force":
         out.update(position_m=s.position, force_N=math.hypot(s.value_x, s.value_y),
                    direction_deg=math.degrees(math.atan2(s.value_y, s.value_x)))
