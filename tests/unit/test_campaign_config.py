@@ -170,6 +170,25 @@ def test_normal_reaching_outside_the_rule_is_noted():
     assert not campaign_from_mapping(base()).notes  # 0.2 +- 0.03 leaves [0, 1] with ~1e-11
 
 
+def test_a_temperature_spilling_out_of_the_service_range_is_noted():
+    # 40 degC +- 60 K puts ~4 % below -73 degC; those samples would be refused one by one
+    spill = base(analysis="coastdown")
+    spill["campaign"]["input"].append({"key": "coastdown.ambient_temperature", "distribution": "normal",
+                                       "mean": "40 degC", "std": "60 K"})
+    notes = campaign_from_mapping(spill).notes
+    assert any("coastdown.ambient_temperature" in n and "service_temperature" in n for n in notes)
+    # a uniform spread over the whole range, typed at its ends in degC, is inside it (no note)
+    edge = base(analysis="coastdown")
+    edge["campaign"]["input"].append({"key": "coastdown.ambient_temperature", "distribution": "uniform",
+                                      "low": "-73 degC", "high": "100 degC"})
+    assert not campaign_from_mapping(edge).notes
+    # the coast-down's settling threshold has a range of its own, 0 to 10 K
+    rise = base(analysis="coastdown")
+    rise["campaign"]["input"].append({"key": "coastdown.tail_temperature_rise", "distribution": "normal",
+                                      "mean": "0.05 K", "std": "0.05 K"})
+    assert any("tail_temperature_rise" in n and "temperature_rise" in n for n in campaign_from_mapping(rise).notes)
+
+
 def test_fingerprint_follows_what_fixes_the_results():
     a = campaign_from_mapping(base())
     assert a.fingerprint() == campaign_from_mapping(base()).fingerprint()

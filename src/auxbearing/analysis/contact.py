@@ -17,6 +17,7 @@ import xarray as xr
 from auxbearing import __version__
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.common.errors import InputError
+from auxbearing.common.io import to_jsonable
 from auxbearing.common.units import to_si
 from auxbearing.core import hertz
 
@@ -430,7 +431,8 @@ def contact_map(
         ball_load_N=float(ball_load),
         load_split="radial ball load / (contact pairs * cos(alpha)) per contact",
         ellipticity_method=method,
-        bearing=json.dumps(bearing.describe(), default=str),  # JSON, as every other file stores it
+        # JSON, as every other file stores it: through the shared encoder, so an infinity is "inf"
+        bearing=json.dumps(to_jsonable(bearing.describe()), default=str, allow_nan=False),
         auxbearing_version=__version__,
         source="source paper Sec. II.B, Eq. 4-8, Fig. 2-3",
     )

@@ -37,6 +37,7 @@ from auxbearing.bearings.catalogue import load_bearing
 from auxbearing.bearings.geometry import BearingGeometry
 from auxbearing.bearings.ratings import ISO76_BALL_STRESS, safety_factor
 from auxbearing.common.errors import ConvergenceError, InputError
+from auxbearing.common.io import to_jsonable
 from auxbearing.common.units import to_si, ureg
 from auxbearing.core import statics as kernel
 from auxbearing.core.ballset import BallSet
@@ -635,7 +636,7 @@ def _dataset(bearing, params, loads, sol, axial_condition, tilt, tol, k_override
     ds = xr.Dataset(data, coords=coords)
     ds.attrs.update(
         title=f"Quasi-static load distribution, {bearing.name} ({bearing.label})",
-        bearing=json.dumps(bearing.describe()),
+        bearing=json.dumps(to_jsonable(bearing.describe()), allow_nan=False),  # an infinity "inf", as in every file
         axial_condition=axial_condition,
         tilt_condition=tilt,
         moment_arm_m=params.moment_arm,

@@ -32,6 +32,7 @@ from pathlib import Path
 
 from auxbearing.campaign.distributions import Distribution, distribution_from_table, share_outside_rule
 from auxbearing.common.errors import InputError
+from auxbearing.common.io import to_jsonable
 from auxbearing.common.params import Param, did_you_mean, si_unit, unknown
 from auxbearing.machine.check import MACHINE_FILE_TABLES
 from auxbearing.machine.combinations import FACE_KEYS, MOUNT_KEYS
@@ -153,7 +154,8 @@ class Campaign:
         files = self.named_files()
         fixed = {k: v for k, v in self.describe().items() if k not in ("name", "base")}
         fixed["tables"] = _swap_strings(fixed["tables"], files)
-        text = json.dumps(fixed, sort_keys=True, default=str)
+        # through the shared encoder, as the store holds the description: no bare Infinity, numpy numbers as numbers
+        text = json.dumps(to_jsonable(fixed), sort_keys=True, default=str, allow_nan=False)
         return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from auxbearing.common.errors import InputError
-from auxbearing.common.params import Param, check, convert, si_unit
+from auxbearing.common.params import SERVICE_TEMPERATURE, Param, check, convert, si_unit
 
 #: Parameter keys of each kind (besides ``key`` and ``distribution``), in the order they are held.
 KINDS: dict[str, tuple[str, ...]] = {
@@ -187,7 +187,9 @@ def distribution_from_table(table: dict, param: Param, where: str) -> Distributi
 #: Rules of :mod:`auxbearing.common.params` as intervals a sampled value must lie in.
 RULE_RANGES = {"positive": (0.0, math.inf), "optional_positive": (0.0, math.inf),
                "nonnegative": (0.0, math.inf), "optional_nonnegative": (0.0, math.inf), "unit_interval": (0.0, 1.0),
-               "tolerance": (0.0, 1e-2), "fraction": (0.0, 1.0)}
+               "tolerance": (0.0, 1e-2), "fraction": (0.0, 1.0), "temperature_rise": (0.0, 10.0),
+               # padded as check pads it: "-73 degC" converts to 200.14999999999998 K, which the rule accepts
+               "service_temperature": (SERVICE_TEMPERATURE[0] - 1e-9, SERVICE_TEMPERATURE[1] + 1e-9)}
 
 
 def share_outside_rule(distribution: Distribution, param: Param) -> float:

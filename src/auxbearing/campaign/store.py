@@ -39,7 +39,7 @@ from auxbearing.campaign.config import Campaign
 from auxbearing.campaign.evaluate import COASTDOWN_LIMITS, OUT_OF_RANGE, TIMING, VERDICTS, WHIRL_CODES, output_variables
 from auxbearing.campaign.sampling import Design
 from auxbearing.common.errors import InputError
-from auxbearing.common.io import process_alive
+from auxbearing.common.io import loads, process_alive, to_jsonable
 
 ZARR_FORMAT = 2
 #: Attribute that marks a campaign store (its value is the campaign's fingerprint).
@@ -112,7 +112,7 @@ def _template(campaign: Campaign, design: Design):
     ds = xr.Dataset(data, coords=coords)
     ds.attrs.update({
         MARK: campaign.fingerprint(), "title": f"Drop campaign: {campaign.name}",
-        "campaign": json.dumps(campaign.describe(), default=str), "verdicts": list(VERDICTS),
+        "campaign": described(campaign), "verdicts": list(VERDICTS),
         "out_of_range_verdicts": list(OUT_OF_RANGE), "coastdown_limit_verdicts": list(COASTDOWN_LIMITS),
         "whirl_classes": list(WHIRL_CODES), "timing": list(TIMING),
         "analysis": campaign.analysis, "sampler": campaign.sampler, "seed": campaign.seed,
@@ -124,6 +124,14 @@ def _template(campaign: Campaign, design: Design):
     rows = min(runs, DESIGN_CHUNK)
     encoding.update(unit={"chunks": (rows, len(campaign.inputs))}, value={"chunks": (rows, len(campaign.inputs))})
     return ds, encoding
+
+
+def described(campaign: Campaign) -> str:
+    """The campaign's description as the store's ``campaign`` attribute holds it (JSON; an infinity is "inf").
+
+    Bare ``Infinity`` is no JSON: a reader other than Python's would refuse the store's metadata.
+    """
+    return json.dumps(to_jsonable(campaign.describe()), default=str, allow_nan=False)
 
 
 def create_store(path: str | Path, campaign: Campaign, design: Design) -> Path:
@@ -238,10 +246,10 @@ def read_attrs(path: str | Path) -> dict:
 def _differences(attrs: dict, campaign: Campaign) -> str:
     """What the store's campaign and this one set differently, as a person compares two files (the keys)."""
     try:
-        stored = json.loads(attrs.get("campaign", "{}"))
+        stored = loads(attrs.get("campaign", "{}"))
     except (TypeError, ValueError):
         stored = {}
-    now = json.loads(json.dumps(campaign.describe(), default=str))
+    now = loads(described(campaign))
     keys = [k for k in now if k not in ("name", "base") and stored.get(k) != now[k]]
     if not keys:
         return f"fingerprint {attrs[MARK]}, this file gives {campaign.fingerprint()}"

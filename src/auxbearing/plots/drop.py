@@ -8,12 +8,13 @@ axes, it draws there and returns its figure; otherwise it makes a new
 
 from __future__ import annotations
 
-import json
+import math
 
 import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from auxbearing.common.io import loads
 from auxbearing.plots._axes import envelope
 
 _COLOURS = {"QJ202": "tab:red", "7202": "tab:blue"}
@@ -35,12 +36,23 @@ def _title(ds: xr.Dataset) -> str:
 
 def _machine(ds: xr.Dataset) -> dict:
     text = ds.attrs.get("machine", "{}")
-    return json.loads(text) if isinstance(text, str) else dict(text)
+    return loads(text) if isinstance(text, str) else dict(text)
 
 
 def _summary(ds: xr.Dataset) -> dict:
     text = ds.attrs.get("summary", "{}")
-    return json.loads(text) if isinstance(text, str) else dict(text)
+    return loads(text) if isinstance(text, str) else dict(text)
+
+
+def _finite(value) -> float | None:
+    """``value`` as a number a line can be drawn at, or None (no limit: missing, null, "inf")."""
+    if isinstance(value, bool):
+        return None
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return None
+    return number if math.isfinite(number) else None
 
 
 def _plane(ds: xr.Dataset, k: int) -> xr.Dataset:
@@ -262,7 +274,8 @@ def plot_magnetic_bearings(ds: xr.Dataset, summary: dict) -> Figure:
             currents.plot(*envelope(t_ms, ds[f"amb_current_{axis}"].values[:, i]), lw=0.7, label=f"{name}, {axis}")
             if f"amb_force_{axis}" in ds:
                 forces.plot(*envelope(t_ms, ds[f"amb_force_{axis}"].values[:, i]), lw=0.7, label=f"{name}, {axis}")
-    limits = {a["max_current_A"] for a in summary.get("amb", []) if a.get("max_current_A")}
+    # an amplifier without a limit has none to draw: a summary read back holds it as inf, a raw file as "inf"
+    limits = {v for v in (_finite(a.get("max_current_A")) for a in summary.get("amb", [])) if v}
     for limit in limits:
         for sign in (1, -1):
             currents.axhline(sign * limit, color="0.3", ls="--", lw=0.8)

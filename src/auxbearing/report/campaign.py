@@ -137,12 +137,11 @@ def _label(key: str) -> str:
 
 def _page(ds, stats: dict, figures: list, note: str | None) -> str:
     """The campaign's report page (self-contained HTML, figures embedded)."""
-    import json
-
+    from auxbearing.common.io import loads
     from auxbearing.report.html import _CSS, _e, _table, figure_png_base64
 
-    try:
-        described = json.loads(ds.attrs.get("campaign") or "{}")
+    try:  # the store writes an infinity "inf": json.loads would leave it a string, not the number
+        described = loads(ds.attrs.get("campaign") or "{}")
     except (TypeError, ValueError):
         described = {}
     machine = ((described.get("tables") or {}).get("machine") or {}).get("name")

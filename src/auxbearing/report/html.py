@@ -16,7 +16,7 @@ import math
 from datetime import UTC, datetime
 
 from auxbearing import __version__
-from auxbearing.common.io import trim_of
+from auxbearing.common.io import to_jsonable, trim_of
 from auxbearing.report.claims import CANNOT_CHECK, DOES_NOT_HOLD, HOLDS
 from auxbearing.report.model import PAPER_STUDY, Framing, Section
 
@@ -152,7 +152,9 @@ def render_report(sections: list[Section], summary_rows: list[list[str]], inputs
     parts.append("<h2 id='inputs'>Inputs and version</h2>")
     parts.append(f"<p>auxbearing {__version__}. Every data file (NetCDF, JSON) in this folder carries the same "
                  "inputs and version in its attributes.</p>")
-    parts.append(f"<pre class='small'>{_e(json.dumps(tidy_numbers(inputs), indent=2, default=str))}</pre>")
+    # the shared encoder's "inf", as the data files beside the page write it (json alone writes bare Infinity)
+    shown = json.dumps(to_jsonable(tidy_numbers(inputs)), indent=2, default=str, allow_nan=False)
+    parts.append(f"<pre class='small'>{_e(shown)}</pre>")
     parts.append("</body></html>")
     return "\n".join(parts)
 

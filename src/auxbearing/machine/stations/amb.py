@@ -469,8 +469,10 @@ def describe(b: MagneticBearing) -> dict:
                {"controller": f"state space of order {b.order} (A per m of reading)",
                 "controller_gain_at_1_Hz_A_per_m": abs(b.transfer(2j * math.pi))}),
             "sensor_bandwidth_Hz": b.sensor_bandwidth,
-            "amplifier_bandwidth_Hz": b.amplifier_bandwidth, "max_current_A": b.max_current,
-            "slew_rate_A_per_s": b.slew_rate(),  # infinite without max_voltage: written "inf", not missing
+            "amplifier_bandwidth_Hz": b.amplifier_bandwidth,
+            "max_current_A": b.max_current if math.isfinite(b.max_current) else "unlimited (no max_current)",
+            # without max_voltage the slew rate has no limit: said in words, which a file and a report page both read
+            "slew_rate_A_per_s": b.slew_rate() if math.isfinite(b.slew_rate()) else "unlimited (no max_voltage)",
             **({"closed_loop_stiffness_N_per_m": b.closed_loop_stiffness()} if b.controller is None else {}),
             **({"turns": b.turns, "pole_area_mm2": b.pole_area * 1e6, "air_gap_mm": b.air_gap * 1e3,
                 "bias_current_A": b.bias_current, "pole_angle_deg": math.degrees(b.pole_angle),

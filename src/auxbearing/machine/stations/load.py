@@ -140,7 +140,8 @@ def series(loads, journal, states=None, params=None, t=None, rotor_z=None) -> di
 def describe(s: Load) -> dict:
     """Inputs with units in the keys, for files and reports."""
     out = {"kind": KIND, "name": s.name, "load_kind": s.kind, "start_s": s.start,
-           "duration_s": s.duration, "shape": s.shape}  # a step to the end of the run lasts "inf", not null
+           # a step that holds to the end of the run: said in words, not as a number
+           "duration_s": s.duration if math.isfinite(s.duration) else "to the end of the run", "shape": s.shape}
     if s.kind == "force":
         out.update(position_m=s.position, force_N=math.hypot(s.value_x, s.value_y),
                    direction_deg=math.degrees(math.atan2(s.value_y, s.value_x)))
