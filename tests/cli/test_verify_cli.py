@@ -54,9 +54,11 @@ def test_verify_json_has_a_verdict_and_every_criterion_with_its_margin(blower_ve
             assert c["pass"] == (c["margin"] >= 0.0)
     # every input is given: what is left unchecked is what the quick run's short coast-down and its drops, cut
     # to their first 50 ms of 200, passed, which is no pass (the rest of them could still fail it), and a whirl
-    # probability whose 95 % bound the quick campaign's 8 drops cannot bring under 5 %
+    # probability whose upper bound (one-sided 97.5 %) the quick campaign's 8 drops cannot bring under 5 %
+    from auxbearing.verify.judge import WHIRL_PROBABILITY
+
     unchecked = {c["name"]: c for c in data["criteria"] if c["pass"] is None}
-    whirl = unchecked.pop("probability of backward whirl over the drop conditions, 95 % bound")
+    whirl = unchecked.pop(WHIRL_PROBABILITY)
     assert whirl["found"] > whirl["required"] and "too few drops" in whirl["evidence"]
     assert "73 or more drops without whirl" in whirl["evidence"]
     assert set(unchecked) <= {"peak bearing temperature", "preload of a closing internal clearance",

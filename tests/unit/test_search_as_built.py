@@ -15,7 +15,7 @@ from tests.cli.test_verify_review_round4 import _Stub as _Drops  # every drop of
 
 def _summary(s0: float) -> dict:
     return {"verdict": "ok", "largest_excursion_m": 0.1e-3,
-            "planes": [{"s0": s0, "whirl": "forward", "backward_whirl_onset_ms": None}] * 2}
+            "planes": [{"s0": s0, "whirl": "forward", "backward_whirl_onset_ms": None, "max_excursion_um": 100.0}] * 2}
 
 
 def _search(grid_s0: float, built_s0: float) -> dict:

@@ -82,17 +82,19 @@ def _clearance_run(opening: float, peak_at: float = 150.0, end: float = 215.0):
     given = read_machine("blower").planes[0].radial_clearance
     clearance = given + np.stack([opening * shape, 0.5 * opening * shape], axis=1)
     history = xr.Dataset({"radial_clearance": (("time", "plane"), clearance)}, coords={"time": time})
-    return SimpleNamespace(history=history, summary={"planes": [], "until_stop": True, "simulated_s": end,
-                                                     "verdict": "ok"})
+    # its own drop: the journals stop at the clearance (the travel past it: tests/consistency/test_verify_signable.py)
+    drop = SimpleNamespace(summary={"planes": [{"max_excursion_um": given * 1e6}] * 2})
+    return SimpleNamespace(history=history, drop=drop, summary={"planes": [], "until_stop": True, "simulated_s": end,
+                                                                "verdict": "ok"})
 
 
 def test_the_air_gap_compares_the_thermal_opening_not_the_clearance_it_is_added_to():
     """The clearance as given (0.15 mm) and its tolerance are inputs: a 10 % change of a 22.5 um opening is a 10 %
     change, not the 1.3 % it makes of the whole clearance."""
     gap = [Criterion("touchdown clearance against the magnetic air gap", 0.2, 0.1805, 0.0975, True, "mm", "upper",
-                     "given", "largest radial clearance")]
+                     "given", "largest radial travel of the rotor: coast-down, drive end: 0.15 mm as given")]
     cases = Cases(machine=read_machine("blower").for_batch(), coastdown=_clearance_run(22.5e-6))
     found = convergence_started(cases, gap, Recorder(_clearance_run(24.75e-6)))()
-    assert found["quantity"] == "largest thermal opening of a touchdown clearance"
+    assert found["quantity"].startswith("largest thermal opening of a touchdown clearance")
     assert found["as_run"] == pytest.approx(0.0225, rel=1e-3) and found["change"] == pytest.approx(0.1, rel=1e-2)
     assert found["settled"] is False

@@ -48,8 +48,9 @@ def _smooth_drop(machine, lean=False, **_):
     # grows with the clearance
     angle = machine.planes[0].bearing.contact_angle
     s0 = 3.0 - 4.0 * (angle - 0.40) ** 2
-    planes = [{"s0": s0, "backward_whirl_onset_ms": None, "shoulder_use": 0.5} for _ in machine.planes]
     excursion = 1.05 * max(p.radial_clearance for p in machine.planes)
+    planes = [{"s0": s0, "backward_whirl_onset_ms": None, "shoulder_use": 0.5, "max_excursion_um": excursion * 1e6}
+              for _ in machine.planes]
     return SimpleNamespace(summary={"verdict": "ok", "planes": planes, "largest_excursion_m": excursion})
 
 

@@ -240,7 +240,8 @@ def _recommendation_map(rec: dict) -> Figure:
     c = [100 * p["worst_margin"] for p in points]
     sc = ax.scatter(x, y, c=c, s=[30 + 60 * p["clearance_factor"] for p in points], cmap="RdYlGn")
     fig.colorbar(sc, ax=ax, label="worst margin [%]")
-    ax.plot(rec["contact_angle_deg"], rec["inner_groove_ratio"], "k*", ms=14, label="recommended")
+    ax.plot(rec["contact_angle_deg"], rec["inner_groove_ratio"], "k*", ms=14,
+            label="recommended" if rec["passes"] else "best found, not recommended")
     ax.set_xlabel("Contact angle [deg]")
     ax.set_ylabel("Inner groove ratio [-]")
     ax.legend(fontsize=8)

@@ -14,6 +14,7 @@ import math
 from datetime import UTC, datetime
 
 from auxbearing import __version__
+from auxbearing.common.io import to_jsonable
 from auxbearing.common.params import display_value
 from auxbearing.machine.judging import CRITERIA
 from auxbearing.machine.params import COASTDOWN, LIFE, SIMULATION
@@ -196,7 +197,8 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     parts += [_figure(f, c) for f, c in figures.get("coastdown", [])]
     parts.append("<h2>Evidence: the campaign over the drop conditions</h2>")
     if main.get("campaign_rows"):
-        parts.append(_table(["quantity", "value", "95 % interval", "among"], main["campaign_rows"]))
+        parts.append(_table(["quantity", "value", "two-sided 95 % interval (Wilson)", "among"],
+                            main["campaign_rows"]))
         if main.get("spread_rows"):
             parts.append(_table(["uncontrolled condition", "spread (uniform)", "where the spread comes from"],
                                 main["spread_rows"], "The drop conditions the campaign varies; set them in [verify]."))
@@ -232,25 +234,27 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
                      + (f"; {rec['left_out']} more points were not run, as their clearance alone keeps their margin "
                         "against the air gap below the best point's" if rec.get("left_out") else "") + "):</p>")
         if not rec["passes"]:
-            parts.append(f"<p class='fail'><b>No recommendation:</b> {_e(rec['note'])}. The table shows the least "
-                         "bad point found, not a design to build.</p>")
-        parts.append(_table(["quantity", "recommended" if rec["passes"] else "least bad (fails)",
-                             "as the file has it"], result["recommendation_rows"]))
+            parts.append(f"<p class='fail'><b>No recommendation:</b> {_e(rec['note'])}. The table shows the "
+                         f"{_e(_best_found(rec))} point found, not a design to build.</p>")
+        point = "recommended" if rec["passes"] else f"{_best_found(rec)} found, not recommended"
+        parts.append(_table(["quantity", point, "as the file has it"], result["recommendation_rows"]))
         binds = rec["binding_criterion"] + (
             f"; at the bound of {', '.join(rec['variables_at_bounds'])}" if rec["variables_at_bounds"] else "")
         parts.append(f"<p><b>What binds:</b> {_e(binds)}. Worst margin {_margin(rec['worst_margin'])} against "
                      f"{_margin(rec['as_is'])} as built.</p>")
         parts.append("<p class='small'>Each point of the search is judged by its drop at the maximum speed on the "
                      "verdict's own criteria a drop checks (s0, the model's range, backward whirl, the seal and the "
-                     "air gap, each margin as in the verdict table but the air gap's, which leaves out the "
-                     "coast-down's thermal opening the verdict adds); the best point has the largest smallest "
+                     "air gap, each margin as in the verdict table but the air gap's, which takes the travel of this "
+                     "one drop, where the verdict takes every case drop's, the campaign's and the coast-down's "
+                     "thermal opening); the best point has the largest smallest "
                      f"margin, and of points that tie on it (within {rec.get('tie_margin', 0.0) * 100:g} "
                      "percentage point) the largest next smallest, and so on. The "
-                     "coast-down and the campaign would need a whole verification per point, so the recommended "
-                     "geometry gets one instead:</p>")
+                     "coast-down and the campaign would need a whole verification per point, so the best point "
+                     "gets one instead, and is recommended only if it passes every criterion, each checked:</p>")
         checked = rec.get("verification")
         if checked:
-            parts.append(f"<div class='banner {checked['verdict']}'><b>Verification of the recommended geometry: "
+            whose = "the recommended geometry" if rec["passes"] else "the best geometry found (not recommended)"
+            parts.append(f"<div class='banner {checked['verdict']}'><b>Verification of {whose}: "
                          f"{checked['verdict'].upper()}</b> &mdash; {_e(checked['reason'])} (worst margin "
                          f"{_margin(checked['worst_margin'])}; the design as built: "
                          f"{verdict.upper()}, {_margin(main['worst_margin'])})</div>")
@@ -262,9 +266,22 @@ def render(result: dict, figures: dict[str, list[tuple[object, str]]]) -> str:
     parts.append(f"<p class='small'>auxbearing {__version__}, {datetime.now(UTC):%Y-%m-%d %H:%M} UTC, "
                  f"{result['wall_time_s']:.0f} s. The reproduction of the source paper is a separate command: "
                  "<code>auxbearing study</code>.</p>")
-    parts.append(f"<pre class='small'>{_e(json.dumps(readable_inputs(result['inputs']), indent=1, default=str))}</pre>")
+    inputs_text = json.dumps(to_jsonable(readable_inputs(result["inputs"])), indent=1, default=str, allow_nan=False)
+    parts.append(f"<pre class='small'>{_e(inputs_text)}</pre>")  # "inf" as verify.json has it, not bare Infinity
     parts.append("</body></html>")
     return "".join(parts)
+
+
+def _best_found(rec: dict) -> str:
+    """What the search's point is when it is not recommended: the least bad (it fails a criterion) or the best.
+
+    >>> _best_found({"worst_margin": -1.0}), _best_found({"worst_margin": 0.3, "verification": {"verdict": "fail"}})
+    ('least bad', 'least bad')
+    >>> _best_found({"worst_margin": 0.3, "verification": {"verdict": "incomplete"}})
+    'best'
+    """
+    fails = rec["worst_margin"] < 0.0 or (rec.get("verification") or {}).get("verdict") == "fail"
+    return "least bad" if fails else "best"
 
 
 #: Tables of the inputs whose values are read through a parameter row, by where they sit in ``inputs``.

@@ -4,9 +4,11 @@ The governing criterion is the failing one, or else the one with the smallest ma
 the coast-down) runs again with the integration's relative and absolute tolerances divided by
 :data:`TIGHTER` and, for a coast-down, a reduced-model speed step halved (finer stretches between the
 full-dynamics checks), and when the governing quantity is an extreme over time (the hottest part, the
-closest internal clearance, the widest touchdown clearance, whose thermal opening is compared since the rest of
-it is input) only a little past the time the first run reached it (:data:`EXTREME_MARGIN`), unless the tighter
-run's extreme is still coming there; the governing quantity's change is reported, and a change beyond
+closest internal clearance, the widest touchdown clearance) only a little past the time the first run reached it
+(:data:`EXTREME_MARGIN`), unless the tighter run's extreme is still coming there. The rotor's travel against the
+air gap is re-run where its governing figure came from: a case drop (its journal's excursion), the coast-down (its
+thermal opening and its own drop's travel past the clearance, compared without the clearance and tolerance, which
+are input), or, from the campaign, nothing; the governing quantity's change is reported, and a change beyond
 :data:`SETTLED` says the verdict rests on a number the numerics still move. When a run leaving the model's
 range governs, that run is repeated and the time of its stop compared (a tighter run that stops otherwise,
 or not at all, says so). A campaign's probability has its confidence interval as its own evidence and is
@@ -19,6 +21,7 @@ import copy
 from dataclasses import replace
 
 from auxbearing.verify.cases import Cases, thermal_openings
+from auxbearing.verify.judge import AIR_GAP
 
 #: Factor by which the tolerances are tightened.
 TIGHTER = 10.0
@@ -26,7 +29,7 @@ TIGHTER = 10.0
 SETTLED = 0.01
 
 _COASTDOWN = ("peak bearing temperature", "preload of a closing internal clearance",
-              "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap")
+              "drops to failure (fatigue or dent)", AIR_GAP)
 #: Coast-down quantities that are an extreme over time (the rest, the damage, sums over the whole run).
 _EXTREMES = _COASTDOWN[:2] + _COASTDOWN[3:]
 #: A tighter coast-down for an extreme runs past the time the first run reached it by this share of that time
@@ -47,8 +50,9 @@ def _tightened(machine, coastdown: bool):
     return out
 
 
-def _coastdown_quantity(name: str, summary: dict, history, touchdowns) -> float | None:
+def _coastdown_quantity(name: str, run, touchdowns) -> float | None:
     """The governing coast-down quantity of criterion ``name`` in a run (``touchdowns``: the machine's planes)."""
+    summary, history = run.summary, run.history
     planes = summary["planes"]
     if any(p["max_temperature_C"] is None for p in planes):  # its drop did not finish: no coast-down ran
         return None
@@ -59,8 +63,11 @@ def _coastdown_quantity(name: str, summary: dict, history, touchdowns) -> float 
     if name == "drops to failure (fatigue or dent)":
         values = [p["allowed_drops"] for p in planes if p["allowed_drops"] is not None]
         return min(values) if values else None
-    # the air gap: the clearance as given and its fit tolerance are inputs, the numerics move only the opening
-    return max(thermal_openings(history, touchdowns)) * 1e3
+    # the air gap: the clearance as given and its fit tolerance are inputs, the numerics move the opening and how far
+    # the coast-down's own drop took the journal past the clearance (judge._air_gap)
+    own = run.drop.summary["planes"]
+    return max(opening + max(0.0, p["max_excursion_um"] * 1e-6 - plane.radial_clearance)
+               for opening, p, plane in zip(thermal_openings(history, touchdowns), own, touchdowns, strict=True)) * 1e3
 
 
 def _extreme_time(name: str, history) -> float:
@@ -114,7 +121,11 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
     if c is None or c.found is None:
         return lambda: None
     what = {"criterion": c.name, "unit": c.unit, "tolerance_factor": TIGHTER}
-    if c.name in _COASTDOWN:
+    # the air gap's figure comes from a case drop, the coast-down or the campaign: its evidence says which
+    from_drop = c.name == AIR_GAP and any(k in (c.evidence or "") for k in cases.drops)
+    if c.name == AIR_GAP and not from_drop and "coast-down, " not in (c.evidence or ""):
+        return lambda: None  # the campaign's drop, or the clearance as made (no run to tighten)
+    if c.name in _COASTDOWN and not from_drop:
         if cases.coastdown is None:
             return lambda: None
         first = cases.coastdown
@@ -133,7 +144,7 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
         else:
             span = None
             future = executor.submit(*whole)
-        before = _coastdown_quantity(c.name, first.summary, first.history, cases.machine.planes)
+        before = _coastdown_quantity(c.name, first, cases.machine.planes)
 
         def completed(run):
             if span is not None and _extreme_time(c.name, run.history) > span - 0.5 * (span - reached):
@@ -143,10 +154,11 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
             return run
 
         def after_of(run):
-            return _coastdown_quantity(c.name, run.summary, run.history, cases.machine.planes)
+            return _coastdown_quantity(c.name, run, cases.machine.planes)
 
-        if c.name == "touchdown clearance against the magnetic air gap":
-            what["quantity"] = "largest thermal opening of a touchdown clearance"
+        if c.name == AIR_GAP:
+            what["quantity"] = ("largest thermal opening of a touchdown clearance with the travel past it in the "
+                                "coast-down's own drop")
         if c.name == "peak bearing temperature":  # on an offset scale: compare the rises above ambient
             ambient = cases.machine.coastdown.ambient_temperature - 273.15
             before = None if before is None else before - ambient
@@ -156,7 +168,7 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
             def after_of(run, plain=after_of):
                 value = plain(run)
                 return None if value is None else value - ambient
-    elif c.name.startswith("static safety factor") or c.name.startswith("journal excursion"):
+    elif c.name.startswith("static safety factor") or c.name.startswith("journal excursion") or from_drop:
         # the drop the evidence names; none (a campaign's drop governs) has no case of its own to run again
         case = next((k for k in cases.drops if k in (c.evidence or "")), None)
         if case is None:
@@ -164,6 +176,8 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
         future = executor.submit(run_machine, _tightened(cases.machines[case], False))
         before = _drop_quantity(c.name, cases.drops[case].summary)
         what["case"] = case
+        if from_drop:
+            what["quantity"] = "largest journal excursion from the machine's axis in that drop"
 
         def after_of(run):
             return _drop_quantity(c.name, run.summary)

@@ -9,19 +9,21 @@ Recommendation (:func:`recommend`): for the family of the machine's bearing, the
 the source paper's Sec. IV range of 15-45 deg), the groove radius ratios (0.505-0.53, inner; the outer
 keeps its offset from the inner) and the radial touchdown clearance that maximise the worst margin of the
 verdict's own criteria a drop at the maximum speed checks: s0 against its required value, the journal's
-excursion against the seal clearance, the clearance against the magnetic air gap (each margin as the
-verdict measures it), with leaving the model's range and sustained backward whirl as failures. The
-clearance stays between the levitated rotor's orbit over :data:`ORBIT_ZONE` (ISO 14839-2) and the
+excursion against the seal clearance, the clearance as made against its share of the magnetic air gap and the
+rotor's travel in the point's drop against the whole gap (each margin as the verdict measures it, on this one
+drop), with leaving the model's range and sustained backward whirl as failures.
+The clearance stays between the levitated rotor's orbit over :data:`ORBIT_ZONE` (ISO 14839-2) and the
 air-gap limit less the clearance's fit tolerance, within 60-140 % of the file's. A grid over the box, then a
 compass search from its best point (:func:`_polish`), each point a drop of the machine, each round's points run
-side by side. The margin against the air gap is known before a point's drop (its clearance sets it): the grid goes
-out one clearance level at a time, the widest margin first, and a point whose air-gap margin is already below the
-best point's smallest margin (:func:`cannot_beat`) is not run, in the grid or the polish, since no drop can make it
-better. On the blower, where the air gap binds at the smallest clearance, that leaves out the grid's two larger
-clearances (18 of its 27 drops) and the polish's steps towards them. The criterion with the smallest margin at the
-optimum binds. Geometries whose smallest margins agree (within :data:`TIE_MARGIN`) are told apart by their next
-smallest, and so on (:func:`better`): where one criterion depends on one variable alone (the clearance against the
-air gap), the others are not left to the order in which the grid was run. A variable at a bound of the box is
+side by side. The margin against the air gap has a bound known before a point's drop: the clearance rule's,
+which the drop's travel can only lower. The grid goes out one clearance level at a time, the
+widest bound first, and a point whose bound is already below the best point's smallest margin
+(:func:`cannot_beat`) is not run, in the grid or the polish, since no drop can make it better. On the blower,
+where the air gap binds at the smallest clearance, that leaves out the grid's two larger clearances (18 of its 27
+drops) and the polish's steps towards them. The criterion with the smallest margin at the optimum binds.
+Geometries whose smallest margins agree (within :data:`TIE_MARGIN`) are told apart by their next smallest, and so
+on (:func:`better`): where one criterion depends mostly on one variable (the air gap on the
+clearance), the others are not left to the order in which the grid was run. A variable at a bound of the box is
 said. A point that fails a criterion is never recommended; the recommended design is then verified in full
 (:func:`auxbearing.verify.run.verify`; its coast-down last, and only when its drops and campaign fail nothing) and
 its verdict shown.
@@ -151,13 +153,23 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
     duration = {"duration": f"{float(min(machine.simulation.duration, QUICK_DROP))!r} s"} if quick else {}
     evaluated: list[dict] = []
 
-    def gap_margin(x) -> float | None:
-        """The margin against the air gap, known before the point's drop: the clearance alone sets it."""
+    def gap_margin(x, summary: dict | None = None) -> float | None:
+        """The margin against the air gap as the verdict takes it: the smaller of the clearance rule's and the travel's.
+
+        The clearance as made against ``air_gap_fraction`` of the gap is known before the point's drop, and it is
+        the larger-margin bound the drop can only lower (the screen of :func:`cannot_beat`): the travel, at least
+        the clearance, is judged against the whole gap. With ``summary``, the point's drop's travel counts.
+        """
         if gap_limit is None:
             return None
+        made = max(p.radial_clearance * x[2] + tol for p, tol in zip(machine.planes, tolerances, strict=True))
+        margin = 1.0 - made / gap_limit
+        if summary is not None:
+            travel = max(max(p.radial_clearance * x[2], q["max_excursion_um"] * 1e-6) + tol
+                         for p, q, tol in zip(machine.planes, summary["planes"], tolerances, strict=True))
+            margin = min(margin, 1.0 - travel / criteria["amb_air_gap"])
         # rounded: at the box's upper bound the clearance sits on the limit, where the margin is 0 to rounding
-        return round(1.0 - max(p.radial_clearance * x[2] + tol for p, tol in zip(machine.planes, tolerances,
-                                                                                  strict=True)) / gap_limit, 12)
+        return round(margin, 12)
 
     def launch(x):
         x = np.clip(x, bounds[:, 0], bounds[:, 1])
@@ -182,7 +194,7 @@ def recommend(data: dict, name: str, base: Path | None, criteria: dict, quick: b
             out["journal excursion against the seal clearance"] = (
                 1.0 - summary["largest_excursion_m"] / criteria["seal_clearance"])
         if gap_limit is not None:
-            out["touchdown clearance against the magnetic air gap"] = gap_margin(x)
+            out["touchdown clearance against the magnetic air gap"] = gap_margin(x, summary)
         binding = min(out, key=out.get)
         point = {"x": x, "worst": out[binding], "binding": binding, "margins": out}
         evaluated.append(point)

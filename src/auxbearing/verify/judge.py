@@ -7,9 +7,12 @@ import math
 from auxbearing.analysis.scenario_outcome import SATURATED
 from auxbearing.analysis.whirl import UNCLASSIFIED
 from auxbearing.campaign.evaluate import FAILED, OUT_OF_RANGE
+from auxbearing.campaign.statistics import CONFIDENCE
 from auxbearing.machine.scenario import SCENARIO_CASE
+from auxbearing.machine.stations import of_kind
 from auxbearing.verify.cases import (
     BUDGETS,
+    MAX_SPEED,
     Cases,
     largest_clearance_tolerances,
     relevitation_span,
@@ -150,31 +153,155 @@ def _micrometres(length: float) -> str:
     return f"{round(length * 1e6, 2) + 0.0:.3g}"
 
 
-def _air_gap(cases: Cases, criteria: dict) -> Criterion:
-    """The largest touchdown clearance the machine may have against the part of the magnetic air gap it may use.
+#: Name of the criterion of the clearance and the rotor's travel against the magnetic air gap (kept from when it
+#: judged the clearance alone: verify.json and the reports name it so).
+AIR_GAP = "touchdown clearance against the magnetic air gap"
+#: How the air gap's evidence begins; what follows names the run its figure came from (the convergence re-run reads it).
+AIR_GAP_HEAD = "largest radial travel of the rotor: "
+#: How the evidence begins where the clearance rule governs the air-gap criterion.
+CLEARANCE_HEAD = "largest radial clearance: "
 
-    A plane's clearance as made may lie its fit tolerance above the file's (the campaign's spread of it,
-    :func:`auxbearing.verify.cases.largest_clearance_tolerances`), and thermal growth in the coast-down may open
-    it further: the rotor must touch down before it reaches the magnetic bearings' stators with both.
+
+def _air_gap(cases: Cases, criteria: dict) -> Criterion:
+    """The touchdown clearance against its share of the magnetic air gap, and the rotor's travel against the whole gap.
+
+    Two rules, judged as one criterion by the smaller margin (the evidence names the one that governs and gives the
+    other's figures):
+
+    * the design rule ``criteria.air_gap_fraction`` (about half the gap) holds the largest clearance the machine
+      may have: as given, plus its fit tolerance (:func:`auxbearing.verify.cases.largest_clearance_tolerances`)
+      and its thermal opening in the coast-down;
+    * the rotor must not reach the magnetic bearings' stators: its largest radial travel in the runs stays inside
+      the whole gap. In a drop the journal goes past its clearance by what the mount, the ball set and the contact
+      yield (the blower's mounts give 25 um in a drop and 65 um under its 1 kN surge), which the design rule's
+      fraction is there to leave room for, so the fraction is not applied to the travel a second time.
+
+    The travel, per plane, is the largest of:
+
+    * each case drop: the journal's largest excursion from the machine's axis, where the stators are centred, plus
+      the fit tolerance its clearance may be made above the file's (the drops ran at the file's clearance);
+    * the coast-down: the clearance as given, its fit tolerance, its thermal opening, and what the coast-down's own
+      drop travelled beyond its clearance (the coast-down keeps no journal positions; its drop at full speed is the
+      hardest landing it makes);
+    * the campaign's drops that ended ok: their largest excursion (each ran at a clearance within its tolerance;
+      which plane is not kept, so it counts for every plane);
+    * without a coast-down, the clearance as made.
+
+    The magnetic bearings are not where the drops record the rotor. On a rigid rotor, a radial one between the
+    touchdown planes sees no more than the planes do (the axis between them is a convex combination of theirs); one
+    beyond them is judged where it sits by the planes' figures carried along the axis, the bound of a tilting rotor
+    (as :func:`auxbearing.machine.stations.amb._check_air_gaps` bounds the clearance there). A bending rotor is
+    judged at its planes, and the evidence says the magnetic bearings are not covered.
     """
-    name = "touchdown clearance against the magnetic air gap"
     if criteria["amb_air_gap"] is None:
-        return not_checked(name, "give criteria.amb_air_gap to check it", origin("air_gap_fraction", criteria))
+        return not_checked(AIR_GAP, "give criteria.amb_air_gap to check it", origin("air_gap_fraction", criteria))
     planes = cases.machine.planes
+    tolerances = largest_clearance_tolerances(cases)
+    # each source: (its figure at every plane [m], the evidence of each plane's figure)
+    sources: list[tuple[list[float], list[str]]] = []
+
+    def fit(k: int) -> str:
+        tol, source = tolerances[k]
+        return f" + {_micrometres(tol)} um of fit tolerance ({source})" if tol > 0.0 else ""
+
+    for case, run in cases.drops.items():
+        reach, said = [], []
+        for k, (plane, p) in enumerate(zip(planes, run.summary["planes"], strict=True)):
+            reach.append(p["max_excursion_um"] * 1e-6 + tolerances[k][0])
+            said.append(f"{case}, {plane.name}: the journal {p['max_excursion_um'] * 1e-3:.4g} mm from the machine's "
+                        f"axis ({plane.radial_clearance * 1e3:.4g} mm of clearance as given, the mount travelling "
+                        f"{p['max_mount_deflection_um']:.3g} um){fit(k)}")
+        sources.append((reach, said))
     history = cases.coastdown.history if cases.coastdown is not None else None
-    openings = thermal_openings(history, planes) if history is not None else [0.0] * len(planes)
-    total, plane, tol, source, growth = max(
-        ((p.radial_clearance + tol + growth, p, tol, source, growth) for p, (tol, source), growth in
-         zip(planes, largest_clearance_tolerances(cases), openings, strict=True)), key=lambda row: row[0])
-    parts = [f"{plane.name}: {plane.radial_clearance * 1e3:.4g} mm as given"]
-    if tol > 0.0:
-        parts.append(f"{_micrometres(tol)} um of fit tolerance ({source})")
     if history is not None:
-        parts.append(f"{_micrometres(growth)} um of thermal growth in the coast-down")
-    limit = criteria["air_gap_fraction"] * criteria["amb_air_gap"]
-    return upper_bound(name, total * 1e3, limit * 1e3, "mm",
+        own = cases.drops[MAX_SPEED].summary["planes"]  # the coast-down starts with this drop (cases.submit_cases)
+        reach, said = [], []
+        for k, (plane, growth, p) in enumerate(zip(planes, thermal_openings(history, planes), own, strict=True)):
+            beyond = max(0.0, p["max_excursion_um"] * 1e-6 - plane.radial_clearance)
+            reach.append(plane.radial_clearance + tolerances[k][0] + growth + beyond)
+            said.append(f"coast-down, {plane.name}: {plane.radial_clearance * 1e3:.4g} mm as given{fit(k)} + "
+                        f"{_micrometres(growth)} um of thermal growth in the coast-down + {_micrometres(beyond)} um "
+                        "the journal went past its clearance in the coast-down's own drop (the mount travelling "
+                        f"{p['max_mount_deflection_um']:.3g} um; the coast-down keeps no journal positions, so its "
+                        "hardest landing stands in for the rest of it)")
+        sources.append((reach, said))
+    else:
+        sources.append(([p.radial_clearance + tol for p, (tol, _) in zip(planes, tolerances, strict=True)],
+                        [f"{p.name}: {p.radial_clearance * 1e3:.4g} mm as given{fit(k)} (no coast-down ran to open "
+                         "it further)" for k, p in enumerate(planes)]))
+    reached = (cases.campaign or {}).get("largest_excursion_mm")
+    if reached is not None:
+        sources.append(([reached * 1e-3] * len(planes),
+                        [f"the campaign's {cases.campaign['ok']} drops that ended ok: the journal {reached:.4g} mm "
+                         "from the machine's axis at its largest (each at a clearance within its fit tolerance)"]
+                        * len(planes)))
+    found, where = -math.inf, ""
+    for reach, said in sources:  # the first of equal figures governs: a case drop before the coast-down
+        for value, text in zip(reach, said, strict=True):
+            if value > found:
+                found, where = value, text
+    bearings = [b for b in of_kind(cases.machine.stations, "amb") if not b.axial]
+    covered = ""
+    if bearings and _bends(cases.machine):
+        covered = ("; judged at the touchdown planes: the rotor bends between them and the magnetic bearings, where "
+                   "the drops record nothing")
+    elif bearings and len(planes) > 1:
+        ends = (min(p.position for p in planes), max(p.position for p in planes))
+        outside = [b for b in bearings if not ends[0] <= b.position <= ends[1]]
+        for b in outside:
+            for reach, said in sources:
+                value = _carried(b.position, [p.position for p in planes], reach)
+                if value > found:
+                    found = value
+                    where = (f"{b.name} at {b.position * 1e3:g} mm, beyond the touchdown planes: "
+                             f"{value * 1e3:.4g} mm, the rigid rotor's axis through the planes' figures ("
+                             + "; ".join(dict.fromkeys(said)) + ")")  # the campaign's one figure, said once
+        covered = ("; the magnetic bearings sit between the touchdown planes, where a rigid rotor's excursion is no "
+                   "larger than at the planes" if not outside else "")
+    gap = criteria["amb_air_gap"]
+    allowed = criteria["air_gap_fraction"] * gap
+    openings = thermal_openings(history, planes) if history is not None else [0.0] * len(planes)
+    made_at = [p.radial_clearance + tolerances[k][0] + openings[k] for k, p in enumerate(planes)]
+    k = max(range(len(planes)), key=made_at.__getitem__)  # the first of equal clearances, as for the travel
+    made = made_at[k]
+    # named "coast-down, <plane>" where the coast-down opened it: the convergence re-run reads the evidence so
+    rule = (f"{'coast-down, ' if history is not None else ''}{planes[k].name}: {planes[k].radial_clearance * 1e3:.4g} "
+            f"mm as given{fit(k)}" + (f" + {_micrometres(openings[k])} um of thermal growth in the coast-down"
+                                      if history is not None else ""))
+    if 1.0 - found / gap < 1.0 - made / allowed:
+        return upper_bound(AIR_GAP, found * 1e3, gap * 1e3, "mm",
+                           "the whole air gap from your [criteria]: the rotor must not reach the magnetic bearings",
+                           AIR_GAP_HEAD + where + covered + f"; the largest clearance, {made * 1e3:.4g} mm, keeps "
+                           f"within the design rule's {allowed * 1e3:.4g} mm")
+    # the travel's figure without its run's name: the convergence re-run must not take it for the governing one
+    return upper_bound(AIR_GAP, made * 1e3, allowed * 1e3, "mm",
                        f"{origin('air_gap_fraction', criteria)}; air gap from your [criteria]",
-                       "largest radial clearance: " + " + ".join(parts))
+                       CLEARANCE_HEAD + rule + f"; the rotor's largest travel, {found * 1e3:.4g} mm, keeps within "
+                       f"the whole {gap * 1e3:.4g} mm air gap" + covered)
+
+
+def _bends(machine) -> bool:
+    """Whether the rotor has elastic modes kept (its axis is then no straight line between the planes)."""
+    modal = machine.modal()
+    return modal is not None and modal.n_modes > 0
+
+
+def _carried(at: float, positions: list[float], reach: list[float]) -> float:
+    """The most a rigid rotor's axis can be from the machine's axis at ``at`` with plane k within ``reach[k]`` [m].
+
+    The least over pairs of planes of r_j |a_k - a| / L + r_k |a - a_j| / L, L = |a_k - a_j| (each plane at its
+    limit, in opposite directions beyond the span).
+
+    >>> round(_carried(0.3, [-0.15, 0.15], [1.0, 1.0]), 9), round(_carried(0.0, [-0.15, 0.15], [1.0, 2.0]), 9)
+    (2.0, 1.5)
+    """
+    out = math.inf
+    for j, (aj, rj) in enumerate(zip(positions, reach, strict=True)):
+        for ak, rk in zip(positions[j + 1:], reach[j + 1:], strict=True):
+            span = abs(ak - aj)
+            if span > 0.0:
+                out = min(out, (rj * abs(ak - at) + rk * abs(at - aj)) / span)
+    return out if math.isfinite(out) else max(reach)
 
 
 def _seal(cases: Cases, criteria: dict) -> Criterion:
@@ -293,18 +420,21 @@ RANGE = "no run leaves the model's range or a limit"
 #: pass: what it would have shown after its stop is unknown.
 PARTIAL_DROP_CRITERIA = ("static safety factor s0 of every ball contact", "no sustained backward whirl or dry whip",
                          "journal excursion against the seal clearance",
-                         "peak magnetic-bearing current against its amplifier's limit")
+                         "peak magnetic-bearing current against its amplifier's limit", AIR_GAP)
 
 #: Criteria a coast-down cut short (``--quick``, a budget, or a limit such as a thermal run-away that ends it before
 #: standstill) can fail but not pass: temperatures and the closing clearance go on changing, the over-rolling of
 #: the rest of the run adds damage, and a journal may still start to whirl backward.
 PARTIAL_COASTDOWN_CRITERIA = ("peak bearing temperature", "preload of a closing internal clearance",
-                              "drops to failure (fatigue or dent)", "touchdown clearance against the magnetic air gap",
+                              "drops to failure (fatigue or dent)", AIR_GAP,
                               "no sustained backward whirl or dry whip")
 
 
-#: Name of the campaign's criterion: judged by the upper end of its 95 % interval, not by the estimate.
-WHIRL_PROBABILITY = "probability of backward whirl over the drop conditions, 95 % bound"
+#: The bound the campaign's whirl criterion is judged by, in words: the upper end of the two-sided 95 % Wilson
+#: interval (campaign.statistics.CONFIDENCE) leaves 2.5 % above it, so it is a one-sided 97.5 % bound.
+WHIRL_BOUND = f"one-sided {50.0 * (1.0 + CONFIDENCE):g} % upper bound"
+#: Name of the campaign's criterion: judged by :data:`WHIRL_BOUND`, not by the estimate.
+WHIRL_PROBABILITY = f"probability of backward whirl over the drop conditions, {WHIRL_BOUND}"
 
 
 def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Criterion]:
@@ -371,10 +501,10 @@ def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Crite
 def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
     """P(backward whirl) against its limit, by the Wilson upper bound of the campaign's estimate.
 
-    A campaign passes only when the upper end of its 95 % interval is within the limit; an estimate above the
-    limit fails; between the two the campaign is too small to tell, and the criterion is not checked (with
-    the number of whirl-free drops that would show it: Wilson's upper bound for no events is
-    z^2 / (n + z^2)).
+    A campaign passes only when the upper end of its two-sided 95 % Wilson interval (a one-sided 97.5 % upper bound,
+    :data:`WHIRL_BOUND`) is within the limit; an estimate above the limit fails; between the two the campaign is
+    too small to tell, and the criterion is not checked (with the number of whirl-free drops that would show it:
+    Wilson's upper bound for no events is z^2 / (n + z^2), z = 1.96).
     """
     limit = criteria["max_backward_whirl_probability"]
     source = origin("max_backward_whirl_probability", criteria)
@@ -386,8 +516,9 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
     if not p.get("trials", campaign["ok"]):
         return not_checked(WHIRL_PROBABILITY, f"none of the campaign's {campaign['ok']} drops that ended ok closed a "
                            "whirl window (drop.whirl_window), so none shows whether it whirled", source)
-    evidence = (f"campaign of {campaign['ok']} drops that ended ok: estimate {p['value']:.3f}, 95 % interval "
-                f"{p['low']:.3f}-{p['high']:.3f}")
+    evidence = (f"campaign of {campaign['ok']} drops that ended ok: estimate {p['value']:.3f}, two-sided "
+                f"{100 * CONFIDENCE:g} % Wilson interval {p['low']:.3f}-{p['high']:.3f}, judged by its upper end "
+                f"({WHIRL_BOUND})")
     if campaign.get("stopped_decided"):
         evidence += (f" (stopped after its first {campaign['samples']} of {campaign['planned']} drops: even with "
                      "every drop left ending without whirl the estimate stays above the limit)")
@@ -419,7 +550,7 @@ def campaign_drops(campaign: dict | None) -> int | None:
 
 
 def whirl_by_estimate(criteria: list[Criterion], campaign: dict | None, limit: float) -> list[Criterion]:
-    """``criteria`` with the whirl probability's margin taken from the campaign's estimate instead of its 95 % bound.
+    """``criteria`` with the whirl probability's margin taken from the campaign's estimate instead of its upper bound.
 
     For ranking designs whose campaigns differ in size (:func:`auxbearing.verify.run._ranked`); pass or fail stays
     the verdict's.
@@ -438,8 +569,6 @@ def _drops_to_show(rate: float, limit: float) -> int | None:
     below the limit reaches it; bisection on n. For p = 0 it is z^2 (1/limit - 1).
     """
     from scipy.stats import norm
-
-    from auxbearing.campaign.statistics import CONFIDENCE
 
     if not 0.0 <= rate < limit:
         return None

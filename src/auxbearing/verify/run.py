@@ -41,7 +41,7 @@ from auxbearing.verify.cases import (
 from auxbearing.verify.convergence import convergence_started
 from auxbearing.verify.criteria import MARGINS, overall_verdict, ranking_key, worst_margin
 from auxbearing.verify.designs import recommend, recommended_tables, search_refused
-from auxbearing.verify.judge import WHIRL_PROBABILITY, campaign_drops, judge, whirl_by_estimate
+from auxbearing.verify.judge import WHIRL_BOUND, WHIRL_PROBABILITY, campaign_drops, judge, whirl_by_estimate
 from auxbearing.verify.result import Verification
 from auxbearing.verify.schedule import verification_cluster
 
@@ -246,13 +246,16 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
                                                            quick, samples, out_dir, executor, address,
                                                            with_recommendation, say, report_figures)
     machine = design["cases"].machine
+    status = recommendation_status(rec)
+    if rec is not None:
+        rec["status"] = status
     result = {
         "machine": machine.name, "verdict": design["verdict"], "design": design, "quick": quick,
         "criteria": [c.as_json() for c in design["criteria"]], "worst_margin": design["worst_margin"],
         "candidates": [{"bearing": label, "verdict": d["verdict"], "worst_margin": d["worst_margin"],
                         "criteria": [c.as_json() for c in d["criteria"]]} for label, d in others],
         # the campaign's size as it ran: --quick and --campaign-samples replace the file's
-        "recommendation": rec, "recommendation_note": skipped,
+        "recommendation": rec, "recommendation_note": skipped, "recommendation_status": status,
         "settings": {**settings, "campaign_samples": campaign_size(settings, quick, samples)}, "wall_time_s": 0.0,
         "convergence": converged, "figures": figures,
         "inputs": {"machine": machine.describe(), "criteria": {k: v for k, v in criteria.items() if k != "given"},
@@ -280,9 +283,10 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
              f"{first.inner_groove_ratio:.3f} / {first.outer_groove_ratio:.3f}"],
             ["radial clearance", ", ".join(f"{s:.3f}" for s in rec["radial_clearance_mm"]) + " mm",
              ", ".join(f"{p.radial_clearance * 1e3:.3f}" for p in machine.planes) + " mm"],
-            # the search judges drops alone: its air-gap margin has no coast-down, so no thermal opening, and
-            # can read above the verdict's for the same clearance
-            ["worst drop margin (the drop's criteria; the air gap before the coast-down's thermal growth)",
+            # the search judges drops alone: its air-gap margin has one drop's travel and no coast-down, so no
+            # thermal opening, and can read above the verdict's for the same clearance
+            ["worst drop margin (the drop's criteria; the air gap with this drop's travel, before the coast-down's "
+             "thermal growth)",
              f"{100 * rec['worst_margin']:+.1f} %", f"{100 * rec['as_is']:+.1f} %"]]
     result["assumptions"] = _assumptions(design["cases"], criteria, settings, quick,
                                          result["settings"]["campaign_samples"], result["campaign_samples_from"], rec,
@@ -307,11 +311,11 @@ def _ranked(designs: list[tuple[str, dict]], limit: float) -> tuple[list[tuple[s
 
     ranked = sorted(((label, d, judged(d)) for label, d in designs), key=lambda item: ranking_key(item[2]))
     if by_estimate:
-        term = ("the whirl probability enters the worst margin by its estimate, not its 95 % bound: the campaigns "
-                f"rest on different numbers of drops ({', '.join(map(str, sizes))}), and a bound from fewer drops is "
-                "wider whatever the bearing")
+        term = (f"the whirl probability enters the worst margin by its estimate, not its {WHIRL_BOUND}: the "
+                f"campaigns rest on different numbers of drops ({', '.join(map(str, sizes))}), and a bound from fewer "
+                "drops is wider whatever the bearing")
     else:
-        term = "the whirl probability enters the worst margin by its 95 % bound, as in the verdict" + (
+        term = f"the whirl probability enters the worst margin by its {WHIRL_BOUND}, as in the verdict" + (
             f" (every campaign rests on {sizes[0]} drops)" if sizes else "")
     return [(label, d, worst_margin(c)) for label, d, c in ranked], term
 
@@ -489,6 +493,46 @@ def _verify_recommendation(rec: dict, data, name, base, criteria, quick, n, out_
             reason = (_reason([c for c in checked["criteria"] if c.passed is False])
                       + "; its coast-down was not run, since nothing it could show changes that")
         rec["note"] = f"the search's best geometry passes the drop criteria but fails its own verification: {reason}"
+    elif checked["verdict"] != "pass":
+        # a geometry with a criterion nobody checked is no design to sign either: a --quick look's cut runs, a missing
+        # input or too small a campaign leave it the best found, not a recommendation
+        open_ = [c.name for c in checked["criteria"] if c.passed is None]
+        rec["passes"] = False
+        rec["note"] = (f"the search's best geometry passes the drop criteria, but its own verification is INCOMPLETE: "
+                       f"{len(open_)} of {len(checked['criteria'])} criteria not checked ({'; '.join(open_)}); it is "
+                       "the best geometry found, not recommended")
+
+
+#: What became of the geometry search, as ``verify.json``'s ``recommendation_status`` (and the recommendation's
+#: ``status``) says it: only the first is a geometry to build.
+RECOMMENDED = "recommended"
+STATUSES = (RECOMMENDED, "not recommended: incomplete", "not recommended: fails its own verification",
+            "not recommended: fails the drop criteria", "not recommended: no better than the bearing as built",
+            "not recommended: not verified", "no search")
+
+
+def recommendation_status(rec: dict | None) -> str:
+    """Whether the search's best geometry is recommended, and if not why (one of :data:`STATUSES`).
+
+    Recommended means its drops passed and then its own verification passed every criterion, each checked.
+
+    >>> recommendation_status(None)
+    'no search'
+    >>> recommendation_status({"passes": False, "verification": {"verdict": "incomplete"}})
+    'not recommended: incomplete'
+    """
+    if rec is None:
+        return STATUSES[-1]
+    verdict = (rec.get("verification") or {}).get("verdict")
+    if verdict == "pass" and rec["passes"]:
+        return RECOMMENDED
+    if verdict == "fail":
+        return STATUSES[2]
+    if verdict is not None:
+        return STATUSES[1]
+    if rec["passes"]:  # the search's drops passed, its own verification never ran: no basis to sign
+        return STATUSES[5]
+    return STATUSES[3] if rec["worst_margin"] < 0.0 else STATUSES[4]
 
 
 def _side_by_side(jobs: list) -> list:
