@@ -10,10 +10,10 @@ takes about 5 minutes)::
     PYTHONPATH=src python -m tests.consistency.coastdown_ensemble "blower:7208 DB light" --phases 5
     PYTHONPATH=src python -m tests.consistency.coastdown_ensemble "blower:QJ208 hybrid" --phases 10 --duration 4
 
-Each phase k runs with ``rotor.unbalance_phase`` = k * 1e-9 rad, once ``mode="auto"`` and once ``mode="full"``,
-side by side on ``--workers`` processes. Full dynamics gets a step budget of 1e8 (the blower's full run to
-standstill needs more than the default 3e7). Printed: per quantity the means of both, the reduced one's
-difference in per cent and the standard error of that difference.
+Each phase k runs with ``rotor.unbalance_phase`` = k * ``--phase-step`` rad (:data:`PHASE_STEP`), once
+``mode="auto"`` and once ``mode="full"``, side by side on ``--workers`` processes. Full dynamics gets a step
+budget of 1e8 (the blower's full run to standstill needs more than the default 3e7). Printed: per quantity the
+means of both, the reduced one's difference in per cent and the standard error of that difference.
 """
 
 from __future__ import annotations
@@ -29,8 +29,11 @@ from auxbearing.machine.files import machine_table
 from auxbearing.machine.judging import candidate_tables
 from auxbearing.machine.model import machine_from_mapping
 
-#: Unbalance phase step between the ensemble's runs [rad].
-PHASE_STEP = 1e-9
+#: Unbalance phase step between the ensemble's runs [rad], by default. At 1e-9 rad full-dynamics runs part within a
+#: few seconds, but the reduced runs, which spend a few per cent of their time in full dynamics, need much longer:
+#: the 7208 DB pair's phases 0 and 3 gave the same window loads to 0.5 % at 13-15 s. Their spread then understated
+#: the reduced model's own scatter; at 0.05 rad (a balancing mass placed 3 deg further round) they part at the drop.
+PHASE_STEP = 0.05
 #: Step budget of the runs (both paths): full dynamics to standstill on the blower takes about 4e7 steps.
 MAX_STEPS = 1e8
 
@@ -49,10 +52,10 @@ def machine_at_phase(case: str, phase: float):
     return machine_from_mapping(data, name, base)
 
 
-def one_run(case: str, k: int, mode: str, duration: float | None = None) -> dict:
+def one_run(case: str, phase: float, mode: str, duration: float | None = None) -> dict:
     """The figures of one run to standstill (or over ``duration`` s): standstill time and per plane damage, peak
     temperature, clearance."""
-    summary = run_coastdown(machine_at_phase(case, k * PHASE_STEP), until_stop=duration is None, duration=duration,
+    summary = run_coastdown(machine_at_phase(case, phase), until_stop=duration is None, duration=duration,
                             mode=mode).summary
     planes = summary["planes"]
     return {"verdict": summary["verdict"], "standstill_s": summary["coastdown_time_s"],
@@ -80,8 +83,10 @@ def main() -> None:
     parser.add_argument("--phases", type=int, default=5, help="runs of each path (default 5)")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--duration", type=float, default=None, help="simulated seconds (default: to standstill)")
+    parser.add_argument("--phase-step", type=float, default=PHASE_STEP, help=f"rad (default {PHASE_STEP})")
     args = parser.parse_args()
-    jobs = [(args.case, k, mode, args.duration) for k in range(args.phases) for mode in ("full", "auto")]
+    jobs = [(args.case, k * args.phase_step, mode, args.duration) for k in range(args.phases)
+            for mode in ("full", "auto")]
     with ProcessPoolExecutor(args.workers) as pool:
         runs = list(pool.map(one_run, *zip(*jobs, strict=True)))
     by_mode = {mode: [r for (_, _, m, _), r in zip(jobs, runs, strict=True) if m == mode] for mode in ("full", "auto")}
