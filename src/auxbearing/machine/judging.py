@@ -33,7 +33,7 @@ CRITERIA: tuple[Param, ...] = (
           "Radial air gap of the magnetic bearings; without it the air-gap criterion is not checked", "user input"),
     Param("criteria", "air_gap_fraction", "dimensionless", 0.5, "", "fraction",
           "Largest touchdown clearance (at the top of its fit tolerance, with thermal growth) as a fraction of the "
-          "magnetic air gap",
+          "magnetic air gap; the rotor's largest travel in the runs is judged against the whole gap",
           "ours: common practice of about half the air gap; not a clause we could read in ISO 14839-5"),
     Param("criteria", "seal_clearance", "length", None, "mm", "optional_positive",
           "Radial clearance of the tightest seal; the journal's largest excursion from the machine's axis (where the "
@@ -65,7 +65,7 @@ FRICTION_RANGE = (0.1, 0.3)
 FRICTION_SOURCE = ("Gieck & Gieck, Engineering Formulas, 7th ed. (1997): steel on steel sliding 0.10-0.30; "
                    "a system property (Blau, Tribol. Int. 34, 2001), so a range")
 #: Samples of the verification's campaign unless ``verify.campaign_samples`` says otherwise: a power of two
-#: (Sobol' balance) whose whirl-free outcome shows P(backward whirl) within the default 5 % at 95 % confidence
+#: (Sobol' balance) whose whirl-free outcome shows P(backward whirl) within the default 5 % at one-sided 97.5 %
 #: (Wilson's bound for no events, 1.96^2 / (n + 1.96^2), is 0.029 at 128 and 0.057 at 64).
 CAMPAIGN_SAMPLES = 128
 #: Largest campaign of a verification (the command line's --campaign-samples, the API's samples, the file's key).
@@ -76,7 +76,7 @@ VERIFY: tuple[Param, ...] = (
           "Speed of the low-speed drop; default a quarter of rotor.speed", "ours"),
     Param("verify", "campaign_samples", "dimensionless", float(CAMPAIGN_SAMPLES), "", "nonnegative",
           "Samples of the verification's campaign (a whole number up to 100000; 0: no campaign)",
-          "ours: 128 whirl-free drops show P(backward whirl) <= 0.05 at 95 %"),
+          "ours: 128 whirl-free drops show P(backward whirl) <= 0.05 at one-sided 97.5 % (Wilson)"),
     Param("verify", "friction_low", "dimensionless", FRICTION_RANGE[0], "", "unit_interval",
           "Lowest journal/race sliding friction of the campaign (uniform spread)", FRICTION_SOURCE),
     Param("verify", "friction_high", "dimensionless", FRICTION_RANGE[1], "", "unit_interval",

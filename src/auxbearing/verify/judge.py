@@ -517,8 +517,7 @@ def _whirl_probability(campaign: dict, criteria: dict) -> Criterion:
         return not_checked(WHIRL_PROBABILITY, f"none of the campaign's {campaign['ok']} drops that ended ok closed a "
                            "whirl window (drop.whirl_window), so none shows whether it whirled", source)
     evidence = (f"campaign of {campaign['ok']} drops that ended ok: estimate {p['value']:.3f}, two-sided "
-                f"{100 * CONFIDENCE:g} % Wilson interval {p['low']:.3f}-{p['high']:.3f}, judged by its upper end "
-                f"({WHIRL_BOUND})")
+                f"{100 * CONFIDENCE:g} % Wilson interval {p['low']:.3f}-{p['high']:.3f}, whose upper end is judged")
     if campaign.get("stopped_decided"):
         evidence += (f" (stopped after its first {campaign['samples']} of {campaign['planned']} drops: even with "
                      "every drop left ending without whirl the estimate stays above the limit)")
