@@ -21,8 +21,8 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   unchanged within 1 %: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`), a clearance
   has moved by :data:`CLEARANCE_STEP` or the speed reaches a pendulum passage,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
-  ``coastdown.settle_time`` of it after a stretch is run and booked but not judged, and a rattle gets at least
-  :data:`RATTLE_SPACING` of it between two stretches. A stretch hands the
+  ``coastdown.settle_time`` of it after a stretch (at least :data:`RATTLE_SETTLE` after one that carried a
+  rattling journal) is run and booked but not judged. A stretch hands the
   motion back at its new speed: a journal whose motion is locked to the spin (rolling round its bore, whirling
   backward on it or free of it, not yet at rest in its bore) runs the same path Omega_1 / Omega_0 as fast, so its
   velocity, its race's and its ring's are scaled by that ratio; a journal at rest swings at its own frequency and
@@ -86,7 +86,7 @@ not change it. Full dynamics 3.3 and 10 times tighter in its tolerances moves th
 0.04 %.
 
 Today's figures, with a matched pair's two rows of heat, the load-step probes
-(:class:`~auxbearing.analysis.coastdown_phases.StretchEnd`) and :data:`RATTLE_SPACING`, to standstill (or the
+(:class:`~auxbearing.analysis.coastdown_phases.StretchEnd`) and :data:`RATTLE_SETTLE`, to standstill (or the
 run-away) over four unbalance phases 0.05 rad apart (at 1e-9 rad the reduced runs shared one trajectory for
 seconds): damage per drop, drive / non-drive end, blower -0.49 +- 0.60 / -0.69 +- 0.56 %, 7208 DB pair
 -0.07 +- 0.20 / +1.32 +- 0.31 %, QJ208 hybrid -0.35 +- 0.24 / -0.16 +- 0.33 %, 6208 -0.79 +- 0.13 / +0.47 +- 0.30 %
@@ -188,16 +188,17 @@ from auxbearing.machine.model import Machine
 #: +2.1 % (1.5 um) and +2.4 / +2.8 % (2 um), past the 2 % the comparison holds; at 4 um the 6208's drive end
 #: falls to -3.4 % to standstill. So the step stays at 1 um.
 CLEARANCE_STEP = 1e-6
-#: Least full dynamics between two stretches that carry a rattling journal [s]. A stretch hands the motion back at
-#: a speed its impacts have not seen; each handover kicks the rattle, which takes 0.15-0.2 s to forget it (the
-#: 7208 DB pair's non-drive end at 15 000-14 000 rpm, 28 stretches over four unbalance phases: its load's cube mean
-#: over the windows that follow a stretch's start falls from 101.1 N in the first 0.1 s to 100.1 N after 0.35 s,
-#: full dynamics' being 99.6 N). With three windows, 30 ms, between handovers the kicks piled up: the windows that
-#: measured each stretch's load read 101.5 N, and the pair's damage per drop came out +3.4 +- 0.3 % over full
-#: dynamics' (six phases). With 0.1 s between them, +1.3 % (four phases), for 674 windows to standstill instead
-#: of 587; the same 0.1 s left unjudged after each stretch gave as much for 1081 windows, and 50 ms of it +2.0 %.
-#: The blower's rattles take it from 631 to 1064 windows.
-RATTLE_SPACING = 0.1
+#: Full dynamics after a stretch that carried a rattling journal, run and booked but not judged [s]. A stretch
+#: hands the motion back at a speed its impacts have not seen; each handover kicks the rattle, which takes
+#: 0.15-0.2 s to forget it (the 7208 DB pair's non-drive end at 15 000-14 000 rpm, 28 stretches over four unbalance
+#: phases: its load's cube mean over the windows that follow a stretch's start falls from 101.1 N in the first
+#: 0.1 s to 100.1 N after 0.35 s, full dynamics' being 99.6 N). With three windows, 30 ms, between handovers the
+#: kicks piled up: the windows that measured each stretch's load read 101.5 N, and the pair's damage per drop came
+#: out +3.4 +- 0.3 % over full dynamics' (six phases). Left unjudged for 0.1 s, +1.3 % (four phases), for 1081
+#: windows to standstill instead of 587; 50 ms of it gave +2.0 %. Requiring the same 0.1 s between stretches but
+#: judging it gave as much on the pair for 674 windows, but where the torques of a rattle drift the stretches
+#: then waited for their two halves to agree: the QJ208 hybrid's coast-down took 55 s of computing against 12 s.
+RATTLE_SETTLE = 0.1
 #: Longest reduced stretch between two full-dynamics checks [s].
 MAX_STRETCH = 60.0
 #: Conductivity of a steel shaft [W/(m K)] for the default journal-to-rotor path (the catalogue 'steel').
@@ -626,6 +627,14 @@ class _Limits:
         return OK, None
 
 
+def settle_time(given: float, carried) -> float:
+    """Full dynamics not judged after a stretch that carried ``carried`` [s].
+
+    ``coastdown.settle_time``, and at least :data:`RATTLE_SETTLE` where a journal rattled.
+    """
+    return max(given, RATTLE_SETTLE) if any(w.state == "rattling" for w in carried) else given
+
+
 def rest_stress(plane, ballset, clearance: float) -> float:
     """Largest ball stress at rest [Pa] of a plane's bearing whose internal clearance is ``clearance`` [m].
 
@@ -750,7 +759,6 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     held = None  # the windows the last stretch held its torques from, while the states stay reducible
     growth = 1.0  # the stretches' speed step over coastdown.speed_step (coastdown_phases.stretch_growth)
     settling = 0
-    handed_over = -math.inf  # when the last stretch handed the motion back
     stopped_at = None
     window_scale = 1  # the windows' length over the check window: doubled where they are too short (too_short)
 
@@ -873,8 +881,6 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
             continue
         if verdict != OK or mode == "full" or carried is None or not steady:
             continue
-        if any(w.state == "rattling" for w in carried) and session.t - handed_over < RATTLE_SPACING - 1e-12:
-            continue  # a rattle the last handover kicked: full dynamics until it has had the time to forget it
         if abs(omega_mean) <= coast.stop_speed or abs(session.y[cm.OMEGA]) <= coast.stop_speed:
             continue  # at standstill: the loop's top ends the run
         if pendulum_swinging(machine, motion[-span:], checked, rested, passage_at(passages, session.y[cm.OMEGA])):
@@ -915,8 +921,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         reduced_time += stretch.duration
         counts["stretches"] += 1
         checked = []  # the next windows start from a new state: they are judged on their own
-        settling = math.ceil(coast.settle_time / max(coast.check_window, session.window) - 1e-9)
-        handed_over = session.t
+        settling = math.ceil(settle_time(coast.settle_time, carried) / max(coast.check_window, session.window)
+                             - 1e-9)
         verdict, reason = limits.update(temps, session.t)
         record(1)
         if progress is not None:
