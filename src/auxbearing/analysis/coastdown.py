@@ -88,10 +88,10 @@ not change it. Full dynamics 3.3 and 10 times tighter in its tolerances moves th
 Today's figures, with a matched pair's two rows of heat, the load-step probes
 (:class:`~auxbearing.analysis.coastdown_phases.StretchEnd`) and :data:`RATTLE_SETTLE`, to standstill (or the
 run-away) over four unbalance phases 0.05 rad apart (at 1e-9 rad the reduced runs shared one trajectory for
-seconds): damage per drop, drive / non-drive end, blower -0.49 +- 0.60 / -0.69 +- 0.56 %, 7208 DB pair
--0.07 +- 0.20 / +1.32 +- 0.31 %, QJ208 hybrid -0.35 +- 0.24 / -0.16 +- 0.33 %, 6208 -0.79 +- 0.13 / +0.47 +- 0.30 %
-(run-away in every run); standstill times -0.13 to -0.16 %; peak temperatures within 0.12 K; closest internal
-clearances within 0.16 um.
+seconds): damage per drop, drive / non-drive end, blower -0.95 +- 0.35 / -1.18 +- 0.14 %, 7208 DB pair
+-0.11 / +1.33 % (the reduced runs' four phases against full dynamics' six), QJ208 hybrid -0.47 +- 0.43 /
+-0.29 +- 0.61 %, 6208 -0.74 +- 0.11 / +0.57 +- 0.41 % (run-away in every run); standstill times -0.10 to -0.19 %;
+peak temperatures within 0.05 K; closest internal clearances within 0.07 um.
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
 (:func:`spent_tail`): the spin energy left could warm the smallest part by less than
