@@ -6,6 +6,8 @@ against full dynamics). The run's history gives each window's and stretch's end 
 stretches of the pair's rattle (its first 12 s) run RATTLE_SETTLE of windows and the three that judge the next.
 """
 
+from itertools import pairwise
+
 import numpy as np
 import pytest
 
@@ -25,7 +27,7 @@ def test_stretches_of_a_rattle_are_spaced_by_its_settling_time_and_the_judged_wi
     times, modes = history["time"].values, history["mode"].values
     ends = [i for i in range(1, len(times)) if modes[i] == 1]  # each stretch's row; its start is the row before
     assert len(ends) >= 6, "the pair's rattle should be carried by stretches from about 4 s on"
-    full_between = [times[b - 1] - times[a] for a, b in zip(ends, ends[1:])]
+    full_between = [times[b - 1] - times[a] for a, b in pairwise(ends)]
     assert min(full_between) >= RATTLE_SETTLE + 0.03 - 1e-9  # the settling, then three 10 ms windows judged
     # the rule does not hold the stretches back further than it says: the judged windows pass at once
     assert np.median(full_between) < RATTLE_SETTLE + 0.05
