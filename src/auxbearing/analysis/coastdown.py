@@ -90,7 +90,8 @@ Today's figures, with a matched pair's two rows of heat, the load-step probes
 run-away) over four unbalance phases 0.05 rad apart (at 1e-9 rad the reduced runs shared one trajectory for
 seconds): damage per drop, drive / non-drive end, blower -0.95 +- 0.35 / -1.18 +- 0.14 %, 7208 DB pair
 -0.11 / +1.33 % (the reduced runs' four phases against full dynamics' six), QJ208 hybrid -0.47 +- 0.43 /
--0.29 +- 0.61 %, 6208 -0.74 +- 0.11 / +0.57 +- 0.41 % (run-away in every run); standstill times -0.10 to -0.19 %;
+-0.29 +- 0.61 %, 6208 -0.74 +- 0.11 / +0.57 +- 0.41 %, vertical rotor +0.36 +- 0.26 / +0.43 +- 0.43 %, compressor
++0.08 +- 0.07 / +0.26 +- 0.10 % (these three run away in every run); standstill times -0.10 to -0.19 %;
 peak temperatures within 0.05 K; closest internal clearances within 0.07 um.
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
