@@ -92,7 +92,8 @@ seconds): damage per drop, drive / non-drive end, blower -0.95 +- 0.35 / -1.18 +
 -0.11 / +1.33 % (the reduced runs' four phases against full dynamics' six), QJ208 hybrid -0.47 +- 0.43 /
 -0.29 +- 0.61 %, 6208 -0.74 +- 0.11 / +0.57 +- 0.41 %, vertical rotor +0.36 +- 0.26 / +0.43 +- 0.43 %, compressor
 +0.08 +- 0.07 / +0.26 +- 0.10 % (these three run away in every run); standstill times -0.10 to -0.19 %;
-peak temperatures within 0.05 K; closest internal clearances within 0.07 um.
+peak temperatures within 0.12 K (the vertical rotor's, on its run-away limit), elsewhere 0.05 K; closest internal
+clearances within 0.07 um.
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
 (:func:`spent_tail`): the spin energy left could warm the smallest part by less than
