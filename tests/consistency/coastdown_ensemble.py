@@ -14,13 +14,19 @@ Each phase k runs with ``rotor.unbalance_phase`` = k * ``--phase-step`` rad (:da
 ``mode="auto"`` and once ``mode="full"``, side by side on ``--workers`` processes. Full dynamics gets a step
 budget of 1e8 (the blower's full run to standstill needs more than the default 3e7). Printed: per quantity the
 means of both, the reduced one's difference in per cent and the standard error of that difference.
+
+Full dynamics never hands over to the reduced model, so its runs do not change when only the reduced model does:
+``--cache FILE`` keeps them (by case, phase and duration) in a JSON file and runs only what it lacks. Delete the
+file when the full dynamics or the machine files change.
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import math
 from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
 
 import numpy as np
 
@@ -84,11 +90,22 @@ def main() -> None:
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--duration", type=float, default=None, help="simulated seconds (default: to standstill)")
     parser.add_argument("--phase-step", type=float, default=PHASE_STEP, help=f"rad (default {PHASE_STEP})")
+    parser.add_argument("--cache", type=Path, default=None, help="JSON file keeping the full-dynamics runs")
     args = parser.parse_args()
     jobs = [(args.case, k * args.phase_step, mode, args.duration) for k in range(args.phases)
             for mode in ("full", "auto")]
+    cache = json.loads(args.cache.read_text()) if args.cache and args.cache.exists() else {}
+
+    def key(job) -> str:
+        return f"{job[0]}|{job[1]!r}|{job[3]!r}"
+
+    todo = [job for job in jobs if not (job[2] == "full" and key(job) in cache)]
     with ProcessPoolExecutor(args.workers) as pool:
-        runs = list(pool.map(one_run, *zip(*jobs, strict=True)))
+        done = dict(zip(todo, pool.map(one_run, *zip(*todo, strict=True)), strict=True)) if todo else {}
+    runs = [cache[key(job)] if job not in done else done[job] for job in jobs]
+    if args.cache:
+        cache.update({key(job): run for job, run in done.items() if job[2] == "full"})
+        args.cache.write_text(json.dumps(cache, indent=1))
     by_mode = {mode: [r for (_, _, m, _), r in zip(jobs, runs, strict=True) if m == mode] for mode in ("full", "auto")}
     print(f"{args.case}: {args.phases} phases; verdicts", {m: sorted({r["verdict"] for r in rs}) for m, rs in
                                                             by_mode.items()})

@@ -21,8 +21,8 @@ and goes on, alternating two paths, until the rotor stands still (``until_stop``
   unchanged within 1 %: :func:`auxbearing.analysis.coastdown_phases.stretch_growth`), a clearance
   has moved by :data:`CLEARANCE_STEP` or the speed reaches a pendulum passage,
   and full dynamics checks again (impacts, whirl onset and a closing clearance are seen there); the first
-  ``coastdown.settle_time`` of it after a stretch (at least :data:`RATTLE_SETTLE` after one that carried a
-  rattling journal) is run and booked but not judged. A stretch hands the
+  ``coastdown.settle_time`` of it after a stretch is run and booked but not judged, and a rattling journal gets
+  at least :data:`RATTLE_SETTLE` of it before the next stretch. A stretch hands the
   motion back at its new speed: a journal whose motion is locked to the spin (rolling round its bore, whirling
   backward on it or free of it, not yet at rest in its bore) runs the same path Omega_1 / Omega_0 as fast, so its
   velocity, its race's and its ring's are scaled by that ratio; a journal at rest swings at its own frequency and
@@ -88,12 +88,13 @@ not change it. Full dynamics 3.3 and 10 times tighter in its tolerances moves th
 Today's figures, with a matched pair's two rows of heat, the load-step probes
 (:class:`~auxbearing.analysis.coastdown_phases.StretchEnd`) and :data:`RATTLE_SETTLE`, to standstill (or the
 run-away) over four unbalance phases 0.05 rad apart (at 1e-9 rad the reduced runs shared one trajectory for
-seconds): damage per drop, drive / non-drive end, blower -0.95 +- 0.35 / -1.18 +- 0.14 %, 7208 DB pair
--0.11 / +1.33 % (the reduced runs' four phases against full dynamics' six), QJ208 hybrid -0.47 +- 0.43 /
--0.29 +- 0.61 %, 6208 -0.74 +- 0.11 / +0.57 +- 0.41 %, vertical rotor +0.36 +- 0.26 / +0.43 +- 0.43 %, compressor
-+0.08 +- 0.07 / +0.26 +- 0.10 % (these three run away in every run); standstill times -0.10 to -0.19 %;
-peak temperatures within 0.12 K (the vertical rotor's, on its run-away limit), elsewhere 0.05 K; closest internal
-clearances within 0.07 um.
+seconds; ``--cache`` of the ensemble script keeps the full-dynamics runs): damage per drop, drive / non-drive end,
+blower -0.03 +- 0.60 / -1.13 +- 0.19 %, 7208 DB pair -0.14 +- 0.18 / +1.32 +- 0.31 %, QJ208 hybrid -0.62 +- 0.24 /
+-0.95 +- 0.31 %, 6208 -0.59 +- 0.09 / +0.40 +- 0.28 %, compressor +0.10 +- 0.02 / +0.36 +- 0.04 %, vertical rotor
++0.36 +- 0.26 / +0.43 +- 0.43 % (these three run away in every run; the vertical rotor's journals never rattle
+in a stretch, so its runs are those of the rule before); standstill times -0.11 to -0.31 %; peak temperatures
+within 0.12 K (the vertical rotor's, on its run-away limit), elsewhere 0.10 K; closest internal clearances within
+0.13 um (the 6208's non-drive end), elsewhere 0.03 um.
 
 A run to standstill leaves out its last, slowest part once nothing in it can move a result
 (:func:`spent_tail`): the spin energy left could warm the smallest part by less than
@@ -190,16 +191,21 @@ from auxbearing.machine.model import Machine
 #: +2.1 % (1.5 um) and +2.4 / +2.8 % (2 um), past the 2 % the comparison holds; at 4 um the 6208's drive end
 #: falls to -3.4 % to standstill. So the step stays at 1 um.
 CLEARANCE_STEP = 1e-6
-#: Full dynamics after a stretch that carried a rattling journal, run and booked but not judged [s]. A stretch
-#: hands the motion back at a speed its impacts have not seen; each handover kicks the rattle, which takes
-#: 0.15-0.2 s to forget it (the 7208 DB pair's non-drive end at 15 000-14 000 rpm, 28 stretches over four unbalance
-#: phases: its load's cube mean over the windows that follow a stretch's start falls from 101.1 N in the first
-#: 0.1 s to 100.1 N after 0.35 s, full dynamics' being 99.6 N). With three windows, 30 ms, between handovers the
-#: kicks piled up: the windows that measured each stretch's load read 101.5 N, and the pair's damage per drop came
-#: out +3.4 +- 0.3 % over full dynamics' (six phases). Left unjudged for 0.1 s, +1.3 % (four phases), for 1081
-#: windows to standstill instead of 587; 50 ms of it gave +2.0 %. Requiring the same 0.1 s between stretches but
-#: judging it gave as much on the pair for 674 windows, but where the torques of a rattle drift the stretches
-#: then waited for their two halves to agree: the QJ208 hybrid's coast-down took 55 s of computing against 12 s.
+#: Least full dynamics between two stretches after one that carried a rattling journal [s]. A stretch hands the
+#: motion back at a speed its impacts have not seen; each handover kicks the rattle, which takes 0.15-0.2 s to forget
+#: it (the 7208 DB pair's non-drive end at 15 000-14 000 rpm, 28 stretches over four unbalance phases: its load's
+#: cube mean over the windows that follow a stretch's start falls from 101.1 N in the first 0.1 s to 100.1 N after
+#: 0.35 s, full dynamics' being 99.6 N). With three windows, 30 ms, between handovers the kicks piled up: the windows
+#: that measured each stretch's load read 101.5 N, and the pair's damage per drop came out +3.4 +- 0.3 % over full
+#: dynamics' (six phases). The windows of those 0.1 s are judged: where they agree at its end, the next stretch
+#: starts there; where a rattle's torques drift over them (the QJ208 hybrid's), the windows after it are judged
+#: afresh. Over four phases 0.05 rad apart, to standstill: the pair -0.14 / +1.32 % for 681 windows (at phase 0),
+#: the blower -0.03 / -1.13 % for 1072, the hybrid -0.62 / -0.95 % for 768. Before, the 0.1 s was left unjudged
+#: and the next three windows judged: -0.11 / +1.20 %, -0.95 / -1.18 % and -0.47 / -0.29 % for 719, 1209 and 877
+#: windows; 50 ms unjudged gave the pair +2.0 %, and the 0.1 s judged without the fresh start held the hybrid's
+#: stretches back until its drifting torques agreed (55 s of computing against 12 s). Aiming each stretch at the
+#: clearance step instead of halving it down to the step (0.65 % -> 0.95 % of the speed a stretch on the blower's
+#: rattle) took the blower to 936 windows, but the larger kicks put the pair's non-drive end at +2.72 %.
 RATTLE_SETTLE = 0.1
 #: Longest reduced stretch between two full-dynamics checks [s].
 MAX_STRETCH = 60.0
@@ -629,14 +635,6 @@ class _Limits:
         return OK, None
 
 
-def settle_time(given: float, carried) -> float:
-    """Full dynamics not judged after a stretch that carried ``carried`` [s].
-
-    ``coastdown.settle_time``, and at least :data:`RATTLE_SETTLE` where a journal rattled.
-    """
-    return max(given, RATTLE_SETTLE) if any(w.state == "rattling" for w in carried) else given
-
-
 def rest_stress(plane, ballset, clearance: float) -> float:
     """Largest ball stress at rest [Pa] of a plane's bearing whose internal clearance is ``clearance`` [m].
 
@@ -761,6 +759,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     held = None  # the windows the last stretch held its torques from, while the states stay reducible
     growth = 1.0  # the stretches' speed step over coastdown.speed_step (coastdown_phases.stretch_growth)
     settling = 0
+    kicked_at = None  # when the last stretch handed a rattling journal back, until RATTLE_SETTLE has passed
     stopped_at = None
     window_scale = 1  # the windows' length over the check window: doubled where they are too short (too_short)
 
@@ -877,6 +876,13 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         checked.append(windows)
         del checked[:-MAX_WINDOWS]  # settled looks back over these at most
         carried = settled(checked)
+        if kicked_at is not None and session.t - kicked_at >= RATTLE_SETTLE - 1e-12:
+            kicked_at = None
+            if carried is None:  # still drifting: judged afresh on the windows that follow (coastdown.RATTLE_SETTLE)
+                checked = []
+                continue
+        if kicked_at is not None:
+            continue  # the rattle the last handover kicked has not had the time to forget it
         if carried is None and steady and mode != "full" and window_scale < WINDOW_GROWTH and too_short(checked):
             window_scale *= 2
             checked = []  # the shorter windows' scatter is not the longer ones'
@@ -923,8 +929,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         reduced_time += stretch.duration
         counts["stretches"] += 1
         checked = []  # the next windows start from a new state: they are judged on their own
-        settling = math.ceil(settle_time(coast.settle_time, carried) / max(coast.check_window, session.window)
-                             - 1e-9)
+        settling = math.ceil(coast.settle_time / max(coast.check_window, session.window) - 1e-9)
+        kicked_at = session.t if any(w.state == "rattling" for w in carried) else None
         verdict, reason = limits.update(temps, session.t)
         record(1)
         if progress is not None:

@@ -240,9 +240,9 @@ COASTDOWN: tuple[Param, ...] = (
     Param("coastdown", "settle_time", "time", 0.0, "ms", "nonnegative",
           "Full dynamics after each reduced stretch that is run and booked but not judged for the next one: a "
           "stretch resumes the motion as it was, which then follows the new speed and clearances only in the "
-          "windows, and where it changes slowly the load the first windows measure lags full dynamics'; after a "
-          "stretch that carried a rattling journal, at least 100 ms (the time a rattle takes to forget the "
-          "handover)",
+          "windows, and where it changes slowly the load the first windows measure lags full dynamics'. "
+          "Whatever it is, a stretch that carried a rattling journal is followed by at least 100 ms of full "
+          "dynamics before the next (the time a rattle takes to forget the handover; those windows are judged)",
           "ours, measured over 30 s against full dynamics with 0 ms: damage per drop within 2 % on the blower, "
           "its 7208, 6208 and hybrid candidates, the compressor and the vertical machine, -3.3 / -5.6 % on the "
           "7208 DB pair against full dynamics converged in its tolerances (its small rattle turns unstable over "
