@@ -134,6 +134,7 @@ from auxbearing.analysis.coastdown_life import plane_life
 from auxbearing.analysis.coastdown_phases import (
     MAX_SPEED_FALL,
     MAX_WINDOWS,
+    MIN_WINDOWS,
     REDUCIBLE,
     STEADY_SPAN,
     STEADY_SPANS,
@@ -878,8 +879,8 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
         carried = settled(checked)
         if kicked_at is not None and session.t - kicked_at >= RATTLE_SETTLE - 1e-12:
             kicked_at = None
-            if carried is None:  # still drifting: judged afresh on the windows that follow (coastdown.RATTLE_SETTLE)
-                checked = []
+            if carried is None and len(checked) >= MIN_WINDOWS:
+                checked = []  # still drifting: judged afresh on the windows that follow (RATTLE_SETTLE)
                 continue
         if kicked_at is not None:
             continue  # the rattle the last handover kicked has not had the time to forget it
