@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import xarray as xr
-from scipy import optimize, signal
+from scipy import optimize
 
 from auxbearing.analysis.whirl import spectral_whirl
 from auxbearing.bearings.ballset import ballset_state
@@ -159,6 +159,8 @@ def lowpass(values: np.ndarray, rate: float, cutoff: float | None, given: object
         raise InputError.for_field("cutoff", f"{cutoff:g} Hz" if given is None else given,
                                    f"must be below {NYQUIST_SHARE:g} x the record's sampling rate of {rate:.5g} Hz, "
                                    f"i.e. below {NYQUIST_SHARE * rate:.5g} Hz")
+    from scipy import signal  # imported here: it takes 1.7 s, and most runs never filter a record
+
     sos = signal.butter(4, cutoff, fs=rate, output="sos")
     return signal.sosfiltfilt(sos, values)
 

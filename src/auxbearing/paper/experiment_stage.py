@@ -14,7 +14,6 @@ from pathlib import Path
 from auxbearing.experiment.run import run_experiment
 from auxbearing.experiment.synth import EXAMPLE_DIR
 from auxbearing.planar.params import DropCase, Rotor, from_mapping
-from auxbearing.plots.experiment import experiment_figures
 from auxbearing.report.claims import CANNOT_CHECK, Assumption, Claim
 from auxbearing.report.model import Figure, Section
 
@@ -51,6 +50,8 @@ def experiment_stage(config=None, examples=EXAMPLES) -> Section:
     sections = getattr(config, "sections", {}) or {}
     rotor = Rotor(**from_mapping(sections.get("rotor"), "rotor"))
     case = DropCase(**from_mapping(sections.get("drop"), "drop"))
+    from auxbearing.plots.experiment import experiment_figures  # here: matplotlib takes a second to import
+
     results, figures, tables, data = {}, [], [], {}
     for k, (bearing, path) in enumerate(examples):
         datasets, summary, drawing = run_experiment(Path(path), bearing, rotor, case, fit=True)
