@@ -23,7 +23,6 @@ file when the full dynamics or the machine files change.
 from __future__ import annotations
 
 import argparse
-import json
 import math
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
@@ -31,6 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from auxbearing.analysis.coastdown import run_coastdown
+from auxbearing.common.io import dumps, loads
 from auxbearing.machine.files import machine_table
 from auxbearing.machine.judging import candidate_tables
 from auxbearing.machine.model import machine_from_mapping
@@ -94,7 +94,7 @@ def main() -> None:
     args = parser.parse_args()
     jobs = [(args.case, k * args.phase_step, mode, args.duration) for k in range(args.phases)
             for mode in ("full", "auto")]
-    cache = json.loads(args.cache.read_text()) if args.cache and args.cache.exists() else {}
+    cache = loads(args.cache.read_text()) if args.cache and args.cache.exists() else {}
 
     def key(job) -> str:
         return f"{job[0]}|{job[1]!r}|{job[3]!r}"
@@ -102,10 +102,10 @@ def main() -> None:
     todo = [job for job in jobs if not (job[2] == "full" and key(job) in cache)]
     with ProcessPoolExecutor(args.workers) as pool:
         done = dict(zip(todo, pool.map(one_run, *zip(*todo, strict=True)), strict=True)) if todo else {}
-    runs = [cache[key(job)] if job not in done else done[job] for job in jobs]
+    runs = [done[job] if job in done else cache[key(job)] for job in jobs]
     if args.cache:
         cache.update({key(job): run for job, run in done.items() if job[2] == "full"})
-        args.cache.write_text(json.dumps(cache, indent=1))
+        args.cache.write_text(dumps(cache))
     by_mode = {mode: [r for (_, _, m, _), r in zip(jobs, runs, strict=True) if m == mode] for mode in ("full", "auto")}
     print(f"{args.case}: {args.phases} phases; verdicts", {m: sorted({r["verdict"] for r in rs}) for m, rs in
                                                             by_mode.items()})
