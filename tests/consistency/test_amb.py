@@ -130,3 +130,18 @@ def test_the_drop_records_each_bearings_currents():
     # and its force beside the contact forces: the same half weight, upward
     assert ds["amb_force_y"].values[turns].mean(axis=0) == pytest.approx([half] * 2, rel=1e-3)
     assert ds["amb_force_y"].attrs["units"] == "N"
+
+
+def test_a_rigid_rotor_is_recorded_at_its_bearings_no_further_out_than_at_the_planes():
+    # the blower's bearings at -+100 mm sit between its planes at -+150 mm: a straight axis is no further from the
+    # machine's axis there than at the farther plane (a convex combination), and after a drop it is well off centre
+    run = run_machine(_blower(amb={"ki": f"{KINT} A/(m*s)"}).with_simulation(duration=0.02))
+    planes = max(p["max_excursion_um"] for p in run.summary["planes"])
+    records = [a["max_excursion_um"] for a in run.summary["amb"]]
+    assert all(0.5 * planes < r <= planes for r in records)
+    ds = run.dataset
+    # the drive end's bearing two thirds of the way from the centre to the drive-end plane: its record is the
+    # largest over time of that point of the straight line through the journals
+    x = ds["journal_x"].values @ np.array([5.0, 1.0]) / 6.0
+    y = ds["journal_y"].values @ np.array([5.0, 1.0]) / 6.0
+    assert records[0] == pytest.approx(np.hypot(x, y).max() * 1e6, rel=1e-9)

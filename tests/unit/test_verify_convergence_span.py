@@ -98,3 +98,23 @@ def test_the_air_gap_compares_the_thermal_opening_not_the_clearance_it_is_added_
     assert found["quantity"].startswith("largest thermal opening of a touchdown clearance")
     assert found["as_run"] == pytest.approx(0.0225, rel=1e-3) and found["change"] == pytest.approx(0.1, rel=1e-2)
     assert found["settled"] is False
+
+
+def _drop_run(planes_um, bearing_um):
+    """A drop stand-in: the journals' and the radial magnetic bearing's largest excursions [um]."""
+    return SimpleNamespace(summary={"largest_excursion_m": max(planes_um) * 1e-6, "verdict": "ok",
+                                    "amb": [{"name": "impeller-end AMB", "max_excursion_um": bearing_um},
+                                            {"name": "thrust AMB", "max_excursion_um": None}]})
+
+
+def test_a_bending_rotors_travel_is_compared_at_the_magnetic_bearing_its_evidence_names():
+    """The compressor bends: its air gap is judged where a case drop recorded the rotor at a magnetic bearing
+    (judge._air_gap), so the tighter drop is compared there too, not at the journals."""
+    machine = read_machine("compressor").for_batch()
+    case = "drop at the maximum speed"
+    gap = [Criterion("touchdown clearance against the magnetic air gap", 0.5, 0.286, 0.43, True, "mm", "upper",
+                     "given", f"largest radial travel of the rotor: {case}, impeller-end AMB: the rotor 0.278 mm")]
+    cases = Cases(machine=machine, drops={case: _drop_run((271.0, 249.0), 278.0)}, machines={case: machine})
+    found = convergence_started(cases, gap, Recorder(_drop_run((271.0, 249.0), 280.78)))()
+    assert found["case"] == case and "magnetic bearings" in found["quantity"]
+    assert found["as_run"] == pytest.approx(0.278) and found["change"] == pytest.approx(0.01, rel=1e-6)

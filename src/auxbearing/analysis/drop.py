@@ -593,15 +593,24 @@ def _levitation(least: complex) -> dict:
 def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[dict]:
     """Each magnetic bearing: the levitated static offset and current there (before any scenario), its peak current.
 
+    A radial bearing also gets the rotor's largest excursion from the machine's axis at its actuator over the run
+    (``max_excursion_um``, on the output grid, bending included; None for an axial bearing).
+
     The offset is the linear statics' (:func:`auxbearing.machine.stations.amb.levitated_state`), before any
     disturbance the run starts with.
     """
     from auxbearing.machine.stations.amb import levitated_state
 
     spans = model.layout.station_spans[cm.STATION_KINDS.index(cm.amb)]
+    params = model.stations[cm.STATION_KINDS.index(cm.amb)]
     held = levitated_state(machine, machine.modal(), bearings)
     out = []
     for i, b in enumerate(bearings):
+        excursion = None
+        if not b.axial and len(grid):
+            # the rotor axis at the actuator, bending included: where the stator's air gap is (judge._air_gap)
+            x, y, _, _ = axis_at(model, grid, b.position, params.shape_x[i], params.shape_y[i])
+            excursion = float(np.hypot(x, y).max()) * 1e6
         block, axes = spans[i][0], (1 if b.axial else 2)
         columns = [block + k * (2 + b.order) + 1 + b.order for k in range(axes)]
         currents = np.sqrt((grid[:, columns] ** 2).sum(axis=1))
@@ -613,6 +622,7 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
                     "levitated_current_A": float(np.sqrt((levitated ** 2).sum())),
                     "peak_current_A": float(currents.max()) if len(currents) else 0.0,
                     "peak_axis_current_A": axis_peak,
+                    "max_excursion_um": excursion,
                     "max_current_A": b.current_limit() if math.isfinite(b.current_limit()) else None,
                     "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness() if b.controller is None else None})
     return out

@@ -21,7 +21,7 @@ import copy
 from dataclasses import replace
 
 from auxbearing.verify.cases import Cases, thermal_openings
-from auxbearing.verify.judge import AIR_GAP
+from auxbearing.verify.judge import AIR_GAP, bends
 
 #: Factor by which the tolerances are tightened.
 TIGHTER = 10.0
@@ -82,11 +82,16 @@ def _extreme_time(name: str, history) -> float:
     return float(history.time[int(at)])
 
 
-def _drop_quantity(name: str, summary: dict) -> float | None:
+def _drop_quantity(name: str, summary: dict, at_bearings: bool = False) -> float | None:
+    """The drop's figure of a criterion; ``at_bearings``: the excursion at the magnetic bearings counts too [mm]."""
     if name.startswith("static safety factor"):
         values = [p["s0"] for p in summary["planes"] if p["s0"] is not None]
         return min(values) if values else None
-    return summary["largest_excursion_m"] * 1e3
+    largest = summary["largest_excursion_m"] * 1e3
+    if at_bearings:  # a bending rotor (judge._air_gap): its records at the radial bearings
+        largest = max([largest] + [a["max_excursion_um"] * 1e-3 for a in summary.get("amb", [])
+                                   if a.get("max_excursion_um") is not None])
+    return largest
 
 
 def governing(criteria: list):
@@ -174,13 +179,16 @@ def convergence_started(cases: Cases, criteria: list, executor=None):
         if case is None:
             return lambda: None
         future = executor.submit(run_machine, _tightened(cases.machines[case], False))
-        before = _drop_quantity(c.name, cases.drops[case].summary)
+        at_bearings = from_drop and bends(cases.machine)
+        before = _drop_quantity(c.name, cases.drops[case].summary, at_bearings)
         what["case"] = case
         if from_drop:
-            what["quantity"] = "largest journal excursion from the machine's axis in that drop"
+            what["quantity"] = ("largest excursion of the rotor from the machine's axis in that drop, at its journals "
+                                "and magnetic bearings" if at_bearings else
+                                "largest journal excursion from the machine's axis in that drop")
 
         def after_of(run):
-            return _drop_quantity(c.name, run.summary)
+            return _drop_quantity(c.name, run.summary, at_bearings)
     elif c.name.startswith("no run leaves the model's range"):
         # a run that stopped governs: re-run it tighter and compare when it stops (and that it stops alike)
         stopped = [k for k, run in cases.drops.items() if run.summary["verdict"] != "ok"]
