@@ -223,6 +223,13 @@ def test_the_magnetic_bearings_between_the_planes_are_covered_and_one_beyond_the
     assert past.evidence.startswith("largest radial travel of the rotor: drop at the maximum speed, AMB at 300 mm: "
                                     "the rotor 0.19 mm from the machine's axis at the magnetic bearing, bending "
                                     "included + 8 um of fit tolerance (IT6)")
+    # the campaign's drops record the rotor at the bearings too, and judge it where they went further
+    campaign = {"ok": 56, "largest_excursion_mm": 0.17, "largest_bearing_excursion_mm": 0.21}
+    widest = _air_gap(_cases(bent, campaign=campaign, stations=(_amb(0.3),), modal=bends), WIDE)
+    assert widest.found == pytest.approx(0.21)
+    assert widest.evidence.startswith("largest radial travel of the rotor: the campaign's 56 drops that ended ok: the "
+                                      "rotor 0.21 mm from the machine's axis at a magnetic bearing")
+    assert "judged in the case drops and the campaign" in widest.evidence
     # where the clearance rule governs, the evidence still says which runs recorded the bearings
     ruled = _air_gap(_cases(quiet, stations=(_amb(0.3),), modal=bends), CRITERIA)
     assert ruled.evidence.startswith("largest radial clearance") and "campaign are judged at the touchdown planes" \

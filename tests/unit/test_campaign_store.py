@@ -341,3 +341,22 @@ def test_a_store_part_written_opens_with_xarrays_defaults_and_shows_its_batches(
         ds = xr.open_zarr(path)
     assert ds["completed"].values.tolist() == [0, 0, 1, 1, 0, 0]
     assert np.isfinite(ds["max_excursion"].values[2:4]).all()
+
+
+def test_a_sample_records_the_rotor_at_its_magnetic_bearings_and_nan_without_them():
+    from dataclasses import replace
+
+    from auxbearing.analysis.drop import run_machine
+    from auxbearing.machine.files import read_machine
+
+    inputs = [{"key": "touchdown.0.sliding_friction", "distribution": "uniform", "low": 0.1, "high": 0.3}]
+    blower = campaign_from_mapping({"campaign": {"machine": "blower", "samples": 1, "input": inputs},
+                                    "drop": {"duration": "2 ms"}})
+    record = ev.evaluate_sample(blower, [0.2])
+    # the same drop run directly: the largest of its radial bearings' records (the thrust bearing has none)
+    machine = read_machine("blower").with_simulation(duration=0.002)
+    planes = (replace(machine.planes[0], sliding_friction=0.2), *machine.planes[1:])
+    amb = run_machine(replace(machine, planes=planes).for_batch(), lean=True).summary["amb"]
+    radial = [a["max_excursion_um"] for a in amb if a["max_excursion_um"] is not None]
+    assert len(radial) == 2 and record["max_bearing_excursion"] == pytest.approx(max(radial) * 1e-6, rel=1e-12)
+    assert np.isnan(ev.evaluate_sample(small(), [0.2])["max_bearing_excursion"])  # the paper rig has none

@@ -52,3 +52,13 @@ def test_the_campaigns_largest_excursion_over_its_runs_that_ended_ok():
     assert _largest(values, ok) == pytest.approx(0.2)  # the second run left the range: its 0.5 mm does not count
     assert _largest(values, np.zeros(3, bool)) is None
     assert "max_excursion_mm" not in sample_outputs(ds.drop_vars("max_excursion"))  # a store made before it
+
+
+def test_the_campaign_records_the_rotor_at_its_magnetic_bearings_where_it_has_any():
+    ds = xr.Dataset({name: (("sample", "plane"), np.ones((2, 2))) for name in
+                     ("peak_ball_stress", "peak_contact_force", "s0", "backward_whirl")})
+    ds["max_bearing_excursion"] = ("sample", np.array([2.5e-4, 3e-4]))
+    values, unit = sample_outputs(ds)["max_bearing_excursion_mm"]
+    assert unit == "mm" and values.tolist() == pytest.approx([0.25, 0.3])
+    ds["max_bearing_excursion"] = ("sample", np.full(2, np.nan))  # a machine without radial magnetic bearings
+    assert "max_bearing_excursion_mm" not in sample_outputs(ds)

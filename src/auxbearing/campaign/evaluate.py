@@ -39,6 +39,8 @@ SAMPLE_OUTPUTS: dict[str, tuple[str, str, str]] = {
     "simulated_time": ("f8", "s", "Simulated time reached"),
     "steps": ("f8", "", "Integration steps"),
     "energy_balance_error": ("f8", "", "Energy ledger error relative to the energy brought in"),
+    "max_bearing_excursion": ("f8", "m", "Largest excursion of the rotor from the machine's axis at a radial "
+                              "magnetic bearing, bending included (NaN: the machine has none)"),
     "integration_time": ("f8", "s", "Wall time of the integration"),
     "sample_time": ("f8", "s", "Wall time of the whole sample: machine, run and record"),
 }
@@ -136,6 +138,9 @@ def _record_from_summary(summary: dict, record: dict, n_planes: int) -> None:
     record["steps"] = _number(summary.get("steps"))
     record["energy_balance_error"] = _number(summary.get("energy_balance_error"))
     record["integration_time"] = _number(summary.get("wall_time_s"))
+    at_bearings = [a["max_excursion_um"] for a in summary.get("amb", []) if a.get("max_excursion_um") is not None]
+    if at_bearings:
+        record["max_bearing_excursion"] = max(at_bearings) * 1e-6
     planes = summary.get("planes", [])[:n_planes]
     for k, plane in enumerate(planes):
         for name, (*_, key, scale) in PLANE_OUTPUTS.items():

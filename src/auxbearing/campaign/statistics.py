@@ -175,6 +175,8 @@ def sample_outputs(ds) -> dict[str, tuple[np.ndarray, str]]:
               "backward_whirl": (ds["backward_whirl"].max("plane", skipna=False).values, "-")}
     if "max_excursion" in ds:  # stores made before it was recorded lack it
         planes["max_excursion_mm"] = (ds["max_excursion"].max("plane", skipna=False).values * 1e3, "mm")
+    if "max_bearing_excursion" in ds and np.isfinite(ds["max_bearing_excursion"].values).any():  # machines with AMBs
+        planes["max_bearing_excursion_mm"] = (ds["max_bearing_excursion"].values * 1e3, "mm")
     if "max_temperature" in ds:
         planes["max_temperature_C"] = (ds["max_temperature"].max("plane", skipna=False).values, "degC")
         planes["damage_per_drop"] = (ds["damage_per_drop"].max("plane", skipna=False).values, "-")
@@ -319,6 +321,7 @@ def campaign_statistics(ds, required_s0: float | None = None, seed: int = 0) -> 
         "required_s0_source": _required_source(required, required_s0 is not None),
         "smallest_s0": float(np.nanmin(s0[ok])) if ok.any() and np.isfinite(s0[ok]).any() else None,
         "largest_excursion_mm": _largest(outputs.get("max_excursion_mm", (None,))[0], ok),
+        "largest_bearing_excursion_mm": _largest(outputs.get("max_bearing_excursion_mm", (None,))[0], ok),
         "quantiles": {},
         "planes": {},
         "notes": [],

@@ -119,6 +119,9 @@ def _campaign_rows(stats: dict | None, spreads: list | None = None) -> tuple[lis
     if stats.get("largest_excursion_mm") is not None:
         rows.append(["largest journal excursion from the machine's axis", f"{stats['largest_excursion_mm']:.4g} mm",
                      "-", among])
+    if stats.get("largest_bearing_excursion_mm") is not None:
+        rows.append(["largest excursion at a magnetic bearing", f"{stats['largest_bearing_excursion_mm']:.4g} mm", "-",
+                     among])
     stress = stats.get("quantiles", {}).get("peak_ball_stress_MPa")
     if stress and stress.get("p95") is not None and math.isfinite(stress["p95"]):
         rows.append(["peak ball contact stress, median / 95th percentile",
@@ -325,7 +328,7 @@ def _campaign_summary(stats: dict | None) -> dict | None:
     if not stats:
         return None
     keys = ("samples", "planned", "completed", "ok", "stopped_decided", "smallest_s0", "largest_excursion_mm",
-            "p_backward_whirl", "p_out_of_range", "p_s0_below_required")
+            "largest_bearing_excursion_mm", "p_backward_whirl", "p_out_of_range", "p_s0_below_required")
     return {key: stats[key] for key in keys if key in stats}
 
 
