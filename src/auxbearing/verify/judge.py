@@ -266,7 +266,8 @@ def _air_gap(cases: Cases, criteria: dict) -> Criterion:
         recorded = "the case drops and the campaign" if at_bearings is not None else "the case drops"
         unrecorded = ("the coast-down is judged at the touchdown planes, which it records" if at_bearings is not None
                       else "the coast-down and the campaign are judged at the touchdown planes, which they record")
-        covered = f"; the magnetic bearings are judged in {recorded}, which record the bending rotor there; {unrecorded}"
+        covered = (f"; the magnetic bearings are judged in {recorded}, which record the bending rotor there; "
+                   f"{unrecorded}")
     elif bearings and len(planes) > 1:
         ends = (min(p.position for p in planes), max(p.position for p in planes))
         outside = [b for b in bearings if not ends[0] <= b.position <= ends[1]]
