@@ -14,6 +14,13 @@ Makers do not publish ball sets, so every entry's internal geometry is estimated
    model. The rule does recover the ball sets that are published: CWRU's measured SKF 6203
    (8 x 6.746 mm) and 6205 (9 x 7.94 mm) and eng-tools.dev's 6206 (9 x 9.525 mm) come back with the
    right Z and D_w within 0.3 % (tests/validation/test_skf_2018_ratings.py).
+   Along a series the sizes are fitted together (:func:`fit_series`): the ball may not shrink from one
+   size to the next by more than the fit resolves (:data:`BALL_SHRINK`), and within that the sum of the
+   errors is smallest. A pair alone does not always tell the ball count: from 6314 on, 7 and 8 balls
+   meet SKF's C and C0 within about 1 % of each other, the best of each size alone alternated between
+   them (6314 7 x 27.6 mm, 6315 8 x 26.9 mm, 6316 7 x 31.0 mm), and the four-point and angular sizes
+   that take those balls (rules 3, 4) were rated lower for a larger size (QJ314 189 kN, QJ315 183 kN).
+   Fitted together, 6310-6319 take 8 balls and 6320 9, each within 1.1 % of SKF's C.
 3. 72 B / 73 B sizes without ratings: the ball of the deep-groove bearing of the same boundary plan
    (62xx, 63xx), and as many balls as fit at the ball spacing of the calibrated 7208 and 7308
    (pitch chord over ball diameter :data:`ANGULAR_SPACING`; a one-shoulder ring takes more balls).
@@ -56,6 +63,10 @@ ANGULAR_SPACING = 1.067
 #: Pitch chord over ball diameter of the four-point series (rule 4): SKF's QJ 202 N2MA (C = 12.7 kN) needs 9
 #: balls of the 7202 B's 6.0 mm on D_pw 25 mm, i.e. a spacing in (1.288, 1.425]; the middle of that range.
 FOUR_POINT_SPACING = 1.356
+#: The most a series' estimated ball may shrink from one size to the next (rule 2 along a series): what the fit
+#: cannot resolve. The calibration sizes' SKF factors lie up to 0.8 % from their mean (SKF_RATING_FACTOR), and in
+#: the 60 and 62 series neighbours whose best fits share a ball (6009/6010, 6212/6213) come out 0.2-0.4 % apart.
+BALL_SHRINK = 0.01
 #: ISO 5753-1:2009 Table 1, radial internal clearance of deep groove ball bearings, Normal group
 #: [um]: (bore over, bore up to and including, min, max).
 NORMAL_CLEARANCE_UM = ((10, 18, 3, 18), (18, 24, 5, 20), (24, 30, 5, 20), (30, 40, 6, 20), (40, 50, 6, 23),
@@ -155,30 +166,21 @@ def _ratings(dw, dm, z, alpha, rows, factor):
             ratings.static_load_rating_si(dw, dm, z, alpha, rows))
 
 
-def fit_ball_set(bore: float, outside: float, contact_angle: float, rating: float, static_rating: float,
-                 rows: int = 1, factor: float = SKF_RATING_FACTOR) -> tuple[int, float, float]:
-    """Ball count and diameter whose ISO 281 C (times ``factor``) and ISO 76 C0 meet a maker's pair.
+def ball_set_candidates(bore: float, outside: float, contact_angle: float, rating: float, static_rating: float,
+                        rows: int = 1, factor: float = SKF_RATING_FACTOR) -> list[tuple[int, float, float]]:
+    """Each ball count with the diameter at which ISO 281 C (times ``factor``) and ISO 76 C0 meet a maker's pair.
 
-    Rule 2 of the module notes; D_pw = (d + D)/2.
+    For each Z the diameter balances the two log errors (rule 2 of the module notes; D_pw = (d + D)/2).
 
     Returns
     -------
-    z : int
-    ball_diameter : float
-        D_w [m].
-    error : float
-        The common |log| error of C and C0 [-].
-
-    Examples
-    --------
-    >>> z, dw, err = fit_ball_set(25e-3, 52e-3, 0.0, 14.8e3, 7.8e3)   # SKF 6205
-    >>> z, round(dw * 1e3, 2), err < 0.01
-    (9, 7.95, True)
+    list of (z, ball_diameter, error)
+        Every Z that can meet the pair, fewest balls first: D_w [m] and the common |log| error of C and C0 [-].
     """
     dm = 0.5 * (bore + outside)
     cos_a = math.cos(contact_angle)
     lo_dw = 0.011 * dm / cos_a  # ISO 281 Table 2 starts at gamma = 0.01
-    best = None
+    found = []
     guess = 0.6 * 0.5 * (outside - bore)
     z_guess = static_rating / (14.0 * rows * (guess * 1e3) ** 2 * cos_a)
     for z in range(max(3, int(z_guess) - 4), int(z_guess) + 6):
@@ -204,14 +206,54 @@ def fit_ball_set(bore: float, outside: float, contact_angle: float, rating: floa
                 break
         dw = 0.5 * (a + b)
         c, _ = _ratings(dw, dm, z, contact_angle, rows, factor)
-        error = abs(math.log(c / rating))
-        if best is None or error < best[2]:
-            best = (z, dw, error)
-    if best is None:
+        found.append((z, dw, abs(math.log(c / rating))))
+    if not found:
         raise ValueError(f"no ball set fits {bore * 1e3:g} x {outside * 1e3:g} mm with C = {rating:g} N, "
                          f"C0 = {static_rating:g} N")
-    return best
+    return found
 
+
+def fit_ball_set(bore: float, outside: float, contact_angle: float, rating: float, static_rating: float,
+                 rows: int = 1, factor: float = SKF_RATING_FACTOR) -> tuple[int, float, float]:
+    """The ball count and diameter of :func:`ball_set_candidates` that meet a maker's pair best (one size alone).
+
+    Examples
+    --------
+    >>> z, dw, err = fit_ball_set(25e-3, 52e-3, 0.0, 14.8e3, 7.8e3)   # SKF 6205
+    >>> z, round(dw * 1e3, 2), err < 0.01
+    (9, 7.95, True)
+    """
+    return min(ball_set_candidates(bore, outside, contact_angle, rating, static_rating, rows, factor),
+               key=lambda found: found[2])
+
+
+def fit_series(candidates: list[list[tuple[int, float, float]]]) -> list[tuple[int, float, float]]:
+    """One ball set per size of a series, its balls growing with the size (rule 2 along a series).
+
+    ``candidates``: for each size in order of bore, its :func:`ball_set_candidates`. The choice minimises the sum
+    of the sizes' errors on condition that no size's ball is smaller than the one before it by more than
+    :data:`BALL_SHRINK` (dynamic programming over the sizes); where no choice meets that, each size takes its best.
+    """
+    # cost[i][j]: least error sum of sizes 0..i with size i on its candidate j; back[i][j]: the candidate before it
+    cost = [[c[2] for c in candidates[0]]]
+    back: list[list[int]] = [[-1] * len(candidates[0])]
+    for i in range(1, len(candidates)):
+        row, links = [], []
+        for _, dw, err in candidates[i]:
+            allowed = [(cost[-1][j], j) for j, before in enumerate(candidates[i - 1])
+                       if dw >= (1.0 - BALL_SHRINK) * before[1] and math.isfinite(cost[-1][j])]
+            best = min(allowed, default=(math.inf, -1))
+            row.append(best[0] + err)
+            links.append(best[1])
+        cost.append(row)
+        back.append(links)
+    end = min(range(len(cost[-1])), key=cost[-1].__getitem__)
+    if not math.isfinite(cost[-1][end]):
+        return [min(c, key=lambda found: found[2]) for c in candidates]
+    chosen = [end]
+    for i in range(len(candidates) - 1, 0, -1):
+        chosen.append(back[i][chosen[-1]])
+    return [candidates[i][j] for i, j in enumerate(reversed(chosen))]
 
 def most_balls(pitch_diameter: float, ball_diameter: float, spacing: float) -> int:
     """Largest Z with D_pw sin(pi/Z) >= spacing * D_w (rule 3).
@@ -234,7 +276,20 @@ def designation(series: Series, code: str) -> str:
     return f"{series.prefix}{code}"
 
 
-def _build(series: Series, code: str, entries: dict) -> CatalogueEntry:
+def _series_fits(series: Series) -> dict[str, tuple[int, float, float]]:
+    """The ball sets of a series' sizes that have the maker's C and C0, fitted along the series (:func:`fit_series`)."""
+    rows = 2 if series.type == "four_point" else 1
+    alpha = math.radians(series.contact_angle_deg)
+    codes, candidates = [], []
+    for code, (d, big_d, _) in _dimensions(series).items():
+        c, c0, _ = published_ratings(designation(series, code))
+        if c is not None and c0 is not None:
+            codes.append(code)
+            candidates.append(ball_set_candidates(d, big_d, alpha, c, c0, rows))
+    return dict(zip(codes, fit_series(candidates), strict=True)) if codes else {}
+
+
+def _build(series: Series, code: str, entries: dict, fits: dict) -> CatalogueEntry:
     d, big_d, width = _dimensions(series)[code]
     name = designation(series, code)
     alpha = math.radians(series.contact_angle_deg)
@@ -243,7 +298,7 @@ def _build(series: Series, code: str, entries: dict) -> CatalogueEntry:
     c, c0, source = published_ratings(name)
     published = {"bore": (d, "iso15"), "outside_diameter": (big_d, "iso15"), "width": (width, "iso15")}
     if c is not None and c0 is not None:
-        z, dw, _ = fit_ball_set(d, big_d, alpha, c, c0, rows)
+        z, dw, _ = fits[code]
         published.update(C=(c, source), C0=(c0, source))
         rule = "rule 2: Z and D_w fitted to the maker's C and C0 (ISO 281 x SKF factor, ISO 76)"
     elif series.type == "angular_contact":
@@ -291,7 +346,8 @@ def series_entries() -> dict[str, CatalogueEntry]:
     """
     entries: dict[str, CatalogueEntry] = {}
     for series in SERIES.values():
+        fits = _series_fits(series)
         for code in _dimensions(series):
-            entry = _build(series, code, entries)
+            entry = _build(series, code, entries, fits)
             entries[entry.name] = entry
     return entries
