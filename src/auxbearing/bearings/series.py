@@ -293,7 +293,6 @@ def _build(series: Series, code: str, entries: dict, fits: dict) -> CatalogueEnt
     d, big_d, width = _dimensions(series)[code]
     name = designation(series, code)
     alpha = math.radians(series.contact_angle_deg)
-    rows = 2 if series.type == "four_point" else 1
     dm = 0.5 * (d + big_d)
     c, c0, source = published_ratings(name)
     published = {"bore": (d, "iso15"), "outside_diameter": (big_d, "iso15"), "width": (width, "iso15")}
