@@ -237,8 +237,12 @@ def read_table(data: object, table: dict[str, Param], prefix: str) -> dict[str, 
         # a number, or a number in quotes ("25"), is no quantity: read as SI it made 25 degC 25 K
         number = value if isinstance(value, (int, float)) and not isinstance(value, bool) else _bare_number(value)
         if number is not None and param.dimension not in ("dimensionless",) and si_unit(param.dimension):
-            raise InputError.for_field(prefix + key, value, f"needs a unit, e.g. "
-                                       f"'{str(value).strip()} {param.display_unit or si_unit(param.dimension)}'")
+            from auxbearing.common.units import unit_hint
+
+            # the unit that puts the number nearest the default, where there is one (a modulus of 210000 is MPa)
+            hint = (unit_hint(float(number), param.dimension, param.default, param.display_unit)
+                    if param.default else param.display_unit or si_unit(param.dimension))
+            raise InputError.for_field(prefix + key, value, f"needs a unit, e.g. '{str(value).strip()} {hint}'")
         refuse_difference(param, value, prefix + key)
         out[key] = convert(prefix + key, value, param.dimension)
         check(param, out[key], prefix + key, value)

@@ -70,9 +70,7 @@ def to_si(field: str, value: object, dimension: str, default_unit: str | None = 
         elif default_unit is not None:
             quantity = Quantity(float(value), default_unit)
         else:
-            raise InputError.for_field(
-                field, value, f"needs a unit, e.g. '{value} {_example_unit(dimension)}'"
-            )
+            raise InputError.for_field(field, value, f"needs a unit, e.g. '{value} {unit_hint(value, dimension)}'")
     elif isinstance(value, (pint.Quantity, str)):
         quantity = parse_quantity(field, value, dimension, default_unit)
     else:
@@ -153,7 +151,7 @@ def _parse_string(field: str, text: str, dimension: str, default_unit: str | Non
     if parsed.dimensionless and dimension != "dimensionless" and str(parsed.units) == "dimensionless":
         if default_unit is None:
             raise InputError.for_field(
-                field, text, f"needs a unit, e.g. '{text.strip()} {_example_unit(dimension)}'"
+                field, text, f"needs a unit, e.g. '{text.strip()} {unit_hint(float(parsed.magnitude), dimension)}'"
             )
         parsed = Quantity(float(parsed.magnitude), default_unit)
     return parsed
@@ -225,3 +223,38 @@ def _example_unit(dimension: str) -> str:
 
 def _example_value(dimension: str) -> str:
     return _entry(dimension)[2]
+
+
+def unit_hint(number: float, dimension: str, typical: float | None = None, also: str | None = None) -> str:
+    """The unit a bare ``number`` most likely meant, for the hint of a refusal.
+
+    Of the dimension's usual units, the one that puts the number nearest (by ratio) to a typical value.
+    ``typical``: that value in SI (a parameter's default); without it, the dimension's example value ("207 GPa"
+    for a pressure). ``also``: one more unit to consider (a parameter's display unit). Offset scales
+    (temperatures) and numbers that are not positive take the dimension's plain unit: no ratio to compare.
+
+    Examples
+    --------
+    >>> unit_hint(310000, "pressure"), unit_hint(310, "pressure")   # a modulus written in MPa, in GPa
+    ('MPa', 'GPa')
+    >>> unit_hint(0.2, "length", typical=0.2e-3), unit_hint(200, "length", typical=0.2e-3)
+    ('mm', 'um')
+    """
+    plain = _example_unit(dimension)
+    if dimension == "temperature" or not (math.isfinite(number) and number > 0.0):
+        return plain
+    si = _SI_UNITS[dimension] if dimension in _SI_UNITS else _EXTRA_UNITS[dimension][0]
+    if typical is None or not (math.isfinite(typical) and typical > 0.0):
+        example = _example_value(dimension)
+        typical = float(parse_quantity("example", example, dimension).to(si).magnitude)
+    units = [u.strip() for u in _examples(dimension).split(",")] + ([also] if also else [])
+    best, off = plain, math.inf
+    for unit in dict.fromkeys(u for u in units if u):
+        try:
+            value = float(Quantity(number, unit).to(si).magnitude)
+        except Exception:  # a unit text pint does not read as such ("a plain number")
+            continue
+        distance = abs(math.log10(value / typical)) if value > 0.0 else math.inf
+        if distance < off - 1e-12:
+            best, off = unit, distance
+    return best
