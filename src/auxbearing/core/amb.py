@@ -126,6 +126,22 @@ def powered(row, t, fail):
     return t < fail or t >= row[P_RESTORE]
 
 
+#: exp(-x) is exactly 0 in double precision beyond x = 745.13 (below the smallest subnormal, 4.9e-324).
+EXP_ZERO = 746.0
+
+
+@njit(cache=True, inline="always")
+def dead(row, t, fail):
+    """Whether the axis is unpowered and its coils' field gone at t: no force, its states frozen (:func:`axis`).
+
+    Exactly where :func:`strength` is 0 without power (a failure with no decay time, or one decayed past
+    exp's range), so a right-hand side may skip the axis: the same rates and forces, without the work.
+    """
+    if powered(row, t, fail):
+        return False
+    return row[P_DECAY] <= 0.0 or t - fail > EXP_ZERO * row[P_DECAY]
+
+
 @njit(cache=True, inline="always")
 def magnet_force(row, current, u):
     """The magnets' force on the rotor along one axis at full strength [N]: linearised, or the circuit's."""
