@@ -159,6 +159,7 @@ from auxbearing.analysis.coastdown_phases import (
     stretch_growth,
     too_short,
 )
+from auxbearing.analysis.dead_bearings import without_dead_bearings
 from auxbearing.analysis.drop import (
     MachineRun,
     as_machine,
@@ -282,6 +283,13 @@ class _Session:
         self.base_clearance = np.array(self.core.planes.clearance)
         self.base_radius = np.array(self.core.planes.journal_radius)
         self.base_internal = self.core.ballset_clearance.copy()
+
+    def forget_dead_bearings(self) -> None:
+        """Carry on without the magnetic bearings that failed for good (:mod:`auxbearing.analysis.dead_bearings`)."""
+        lighter = without_dead_bearings(self.machine, self.model, self.y, self.memory, self.e0, self.t)
+        if lighter is not None:
+            _, self.model, self.y, self.memory, self.e0 = lighter
+            self.core, self.layout = self.model.machine, self.model.layout
 
     def sandbox(self) -> _Session:
         """A copy to run ahead on: its state, integrator memory and clearances are its own."""
@@ -745,6 +753,7 @@ def run_coastdown(machine: Machine | str, until_stop: bool = True, duration: flo
     networks = [plane_network(machine, k, _static_share(machine, k) / max(p.rows * p.bearing.ball_count, 1))
                 for k, p in enumerate(machine.planes)]
     session = _Session(machine, run)
+    session.forget_dead_bearings()
     limits = _Limits(machine, session, networks)
     history: list[dict] = []
     overrolling: list[list[tuple[float, float]]] = [[] for _ in machine.planes]

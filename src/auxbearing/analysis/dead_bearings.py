@@ -1,0 +1,92 @@
+"""A run carried on without the magnetic bearings that have failed for good: the coast-down's windows.
+
+The shipped machines' magnetic bearings fail at the drop and never come back. From then on they neither push
+nor change (:func:`auxbearing.core.amb.dead`), and the right-hand side skips them, but their states still ride
+in the state vector: each step of a coast-down's full-dynamics window carries them through the integrator's
+stages, its error norm and its dense output (15 of the blower's 51 mechanical and controller states, 9 % of
+its window time). :func:`without_dead_bearings` repacks the machine without them and moves the run's state
+across, name by name, so that the windows integrate only what still moves.
+
+Only a rigid rotor is moved so: an elastic rotor's modal basis is built on its stations' nodes, and without the
+bearings' nodes it is another rotor (:func:`_same_rotor`).
+
+What the move keeps:
+
+* every other state and ledger entry, unchanged;
+* the energy audit: the bearings' ledger entries (the work their forces did on the rotor before they failed)
+  leave the accounted side, so they leave the start energy too;
+* the integrator's memory, the first stage it kept (first same as last) moved across like the state;
+* the step control: the integrator's error norm is a root mean square over the states with a finite absolute
+  tolerance (Hairer, Norsett & Wanner 1993, Eq. II.4.11), the frozen states among them with zero error. Both
+  tolerances are scaled by sqrt(counted before / counted after), which leaves every norm as it was (up to
+  rounding), so the windows take the steps they took with the bearings in the vector.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+
+from auxbearing.core import amb as kernel
+from auxbearing.core import integrate as ig
+from auxbearing.core import machine as cm
+from auxbearing.machine.model import Machine
+from auxbearing.machine.pack import KernelModel, pack
+
+
+def dead_for_good(model: KernelModel, t: float) -> bool:
+    """Whether the machine has magnetic bearings and every axis of them is dead at ``t`` and cannot come back."""
+    params = model.stations[cm.STATION_KINDS.index(cm.amb)]
+    if len(params.values) == 0:
+        return False
+    for row in params.values:
+        fails = (kernel.P_FAIL_X,) if row[kernel.P_AXIAL] > 0.0 else (kernel.P_FAIL_X, kernel.P_FAIL_Y)
+        if math.isfinite(row[kernel.P_RESTORE]) or not all(kernel.dead.py_func(row, t, row[f]) for f in fails):
+            return False
+    return True
+
+
+def _same_rotor(model: KernelModel, repacked: KernelModel) -> bool:
+    """Whether the repacked rotor is the one that ran: a rigid rotor with the same states but the bearings'.
+
+    An elastic rotor's modal basis stands on its stations' nodes (the compressor keeps 18 modes with its
+    bearings' nodes, 12 without): it is another rotor without them.
+    """
+    if model.layout.modes or repacked.layout.modes:
+        return False
+    kept = set(repacked.layout.names)
+    return all(name in kept for name in model.layout.names if not name.startswith("amb_"))
+
+
+def without_dead_bearings(machine: Machine, model: KernelModel, y: np.ndarray, memory: ig.Memory, e0: float,
+                          t: float) -> tuple[Machine, KernelModel, np.ndarray, ig.Memory, float] | None:
+    """The machine, its packed model, state, integrator memory and start energy without its dead bearings.
+
+    None when there is nothing to leave out: no magnetic bearings, one that may still act (:func:`dead_for_good`),
+    or a scenario (its events may name the bearings).
+    """
+    if machine.scenario is not None or not dead_for_good(model, t):
+        return None
+    lighter = replace(machine, stations=tuple(s for s in machine.stations if getattr(s, "KIND", "") != "amb"))
+    repacked = pack(lighter)
+    if not _same_rotor(model, repacked):
+        return None
+    old, new = model.layout, repacked.layout
+    where = {name: i for i, name in enumerate(old.names)}
+    moved = np.array([y[where[name]] for name in new.names])
+    kept = set(new.names)
+    # the bearings' ledger (work of their forces) leaves the accounted energy: it leaves the energy in as well
+    left = sum(float(y[i]) for i, name in enumerate(old.names) if i >= old.ledger_at and name not in kept)
+    counted_before = int(np.isfinite(model.settings.atol).sum())
+    counted_after = int(np.isfinite(repacked.settings.atol).sum())
+    scale = math.sqrt(counted_before / counted_after)
+    settings = model.settings._replace(rtol=model.settings.rtol * scale, atol=repacked.settings.atol * scale)
+    carried = ig.new_memory(float(memory.t[0]), float(memory.h[0]), new.size)
+    for field in ("err_prev", "rejected_last", "steps", "rejected", "evaluations", "next_output"):
+        getattr(carried, field)[...] = getattr(memory, field)
+    # the first stage the integrator kept (first same as last) moves across with its states, so the next step
+    # starts from the slope it would have started from
+    carried.derivative[...] = [memory.derivative[where[name]] for name in new.names]
+    return lighter, repacked._replace(settings=settings), moved, carried, e0 - left
