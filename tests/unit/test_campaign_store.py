@@ -360,3 +360,21 @@ def test_a_sample_records_the_rotor_at_its_magnetic_bearings_and_nan_without_the
     radial = [a["max_excursion_um"] for a in amb if a["max_excursion_um"] is not None]
     assert len(radial) == 2 and record["max_bearing_excursion"] == pytest.approx(max(radial) * 1e-6, rel=1e-12)
     assert np.isnan(ev.evaluate_sample(small(), [0.2])["max_bearing_excursion"])  # the paper rig has none
+
+
+def test_a_store_made_before_an_output_was_recorded_is_read_but_not_resumed(tmp_path):
+    import shutil
+
+    from auxbearing.campaign.statistics import campaign_statistics
+
+    c = small()
+    points = design(c)
+    path = tmp_path / "s.zarr"
+    prepare_store(path, c, points)
+    write_batch(path, 0, ev.evaluate_batch(c, points.values[0:2]))
+    shutil.rmtree(path / "max_bearing_excursion")  # as a store of the version before
+    ds = load_results(path)
+    assert "max_bearing_excursion" not in ds
+    assert campaign_statistics(ds)["largest_bearing_excursion_mm"] is None
+    with pytest.raises(InputError, match="the array 'max_bearing_excursion' is missing"):
+        prepare_store(path, c, points)  # its new samples would record what its old ones lack

@@ -212,10 +212,17 @@ def check_chunks(path: str | Path) -> None:
                                      "disk, a copy that did not finish?); run the campaign again into a new --out")
 
 
-def check_arrays(path: str | Path, ds, attrs: dict) -> None:
-    """Refuse a store that lacks an array every campaign store of its analysis has."""
+#: Outputs recorded since stores were first made: a store from before lacks them. Its results are still read (the
+#: statistics leave the figure out), but no run is added to it (its new samples would record what its old ones lack).
+LATER_OUTPUTS = ("max_excursion", "max_bearing_excursion")
+
+
+def check_arrays(path: str | Path, ds, attrs: dict, reading: bool = False) -> None:
+    """Refuse a store that lacks an array every campaign store of its analysis has (``reading``: or had)."""
     sample, plane = output_variables(attrs.get("analysis", "drop"))
     for name in (*sample, *plane, "completed", "unit", "value"):
+        if reading and name in LATER_OUTPUTS:
+            continue
         if name not in ds.variables:
             raise InputError(f"store = '{path}': the array {name!r} is missing: the store is damaged (a folder "
                              "deleted or a copy that did not finish?) or was made by an auxbearing that did not "
@@ -322,7 +329,7 @@ def load_results(path: str | Path):
     check_chunks(path)
     with reading(path, "its arrays"):
         ds = open_store(path)
-    check_arrays(path, ds, attrs)
+    check_arrays(path, ds, attrs, reading=True)
     for name in [*ds.coords, *ds.data_vars]:
         with reading(path, f"the array {name!r}"):
             ds[name].load()

@@ -187,8 +187,8 @@ def _air_gap(cases: Cases, criteria: dict) -> Criterion:
       which plane is not kept, so it counts for every plane);
     * without a coast-down, the clearance as made.
 
-    The magnetic bearings are not where the drops record the rotor. On a rigid rotor, a radial one between the
-    touchdown planes sees no more than the planes do (the axis between them is a convex combination of theirs); one
+    The coast-down records the rotor at the touchdown planes only. On a rigid rotor, a radial magnetic bearing
+    between the planes sees no more than the planes do (the axis between them is a convex combination of theirs); one
     beyond them is judged where it sits by the planes' figures carried along the axis, the bound of a tilting rotor
     (as :func:`auxbearing.machine.stations.amb._check_air_gaps` bounds the clearance there). A bending rotor's axis
     is no straight line through the planes, so each case drop's record at a radial magnetic bearing
