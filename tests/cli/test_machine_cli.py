@@ -167,3 +167,15 @@ def test_verify_runs_each_scenario_as_a_case():
     machine = cases.machines["scenario: power loss"]
     assert machine.active_scenario().time == pytest.approx(0.03)
     assert machine.simulation.duration == pytest.approx(0.03 + 0.05)  # levitated, then the quick drop's length
+
+
+def test_a_machine_drop_prints_its_magnetic_bearings_and_where_the_rotor_went_at_them():
+    result = _run("drop", "--machine", "blower", "--duration", "20 ms")
+    assert result.exit_code == 0, result.output
+    assert "Magnetic bearings" in result.output
+    rows = [line for line in result.output.splitlines() if "drive-end AMB" in line]
+    assert len(rows) == 2  # the drive end's and the non-drive end's radial bearings
+    excursion = float(rows[0].split("│")[-2])
+    assert 50.0 < excursion < 200.0  # after the fall onto the 0.15 mm clearance [um]
+    thrust = next(line for line in result.output.splitlines() if "thrust AMB" in line)
+    assert thrust.split("│")[-2].strip() == "-"  # an axial bearing has no radial excursion

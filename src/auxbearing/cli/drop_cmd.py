@@ -405,6 +405,9 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
     console.print(f"simulated {summary['simulated_s'] * 1e3:.1f} ms in {summary['wall_time_s']:.2f} s "
                   f"({summary['steps']} steps); energy balance error {summary['energy_balance_error']:.1e}",
                   highlight=False)
+    bearings = _bearing_table(summary.get("amb"))
+    if bearings is not None:
+        console.print(bearings)
     scenario_line = _scenario_line(summary.get("scenario"))
     if scenario_line:
         console.print(scenario_line, highlight=False)
@@ -412,6 +415,25 @@ def _machine_drop(spec: str, duration: str | None, wall: float | None, max_conta
         console.print(f"[bold]{summary['reason']}[/bold]")
     if out_dir is not None:
         click.echo(f"Wrote drop.nc, drop_summary.json and the figures in {out_dir}/")
+
+
+def _bearing_table(records: list | None):
+    """The magnetic bearings' figures of a drop: where the rotor went at each, and its current against the limit."""
+    from rich.table import Table
+
+    if not records:
+        return None
+    table = Table(title="Magnetic bearings: levitated offset, peak current and its limit, the rotor's largest "
+                        "excursion there")
+    table.add_column("bearing", no_wrap=True)
+    for column in ("axis", "offset [µm]", "peak [A]", "limit [A]", "excursion [µm]"):
+        table.add_column(column, justify="left" if column == "axis" else "right")
+    for a in records:
+        excursion = a.get("max_excursion_um")
+        table.add_row(a["name"], a["axis"], f"{a['levitated_offset_um']:.1f}", f"{a['peak_axis_current_A']:.2f}",
+                      "none" if a["max_current_A"] is None else f"{a['max_current_A']:g}",
+                      "-" if excursion is None else f"{excursion:.1f}")
+    return table
 
 
 def _scenario_line(s: dict | None) -> str:
