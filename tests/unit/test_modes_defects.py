@@ -208,3 +208,23 @@ def test_a_divergent_root_is_reported_not_dropped():
     assert d.damping_ratios[0, :2] == pytest.approx([-1.0, -1.0])
     assert d.frequencies[0, 2:] == pytest.approx([math.sqrt(2e6 * 0.0225 / 0.2) / (2 * math.pi)] * 2, rel=1e-9)
     assert len(d.unstable()) == 2 and not d.critical_speeds()  # a divergence has no frequency for 1x to meet
+
+
+def _labelled_points(fig, label):
+    """The (speed, frequency) points of the figure's scatter drawn with ``label``."""
+    ax = fig.axes[0]
+    return [c.get_offsets().tolist() for c in ax.collections if c.get_label() == label]
+
+
+def test_the_campbell_diagram_marks_what_grows_and_what_diverges():
+    from auxbearing.plots.modes import plot_campbell
+
+    seal = {"position": "0 mm", "kxy": "5e5 N/m", "kyx": "-5e5 N/m", "cxx": "200 N*s/m", "cyy": "200 N*s/m"}
+    sealed = _rigid_blower(*({"position": f"{s * 0.15} m", "kxx": "1e6 N/m", "kyy": "1e6 N/m"} for s in (-1, 1)), seal)
+    d = campbell(sealed, [0.0])
+    (grows,) = _labelled_points(plot_campbell([d], 0.0), "growing (unstable)")
+    assert grows == [[0.0, pytest.approx(d.unstable()[0]["frequency_Hz"])]]
+    soft = _rigid_blower(*({"position": f"{s * 0.15} m", "kxx": "1e6 N/m", "kyy": "1e6 N/m"} for s in (-1, 1)),
+                         {"position": "0 mm", "kxx": "-5e6 N/m", "kyy": "-5e6 N/m"})
+    (diverges,) = _labelled_points(plot_campbell([campbell(soft, [0.0])], 0.0), "diverging without oscillating (0 Hz)")
+    assert diverges == [[0.0, 0.0], [0.0, 0.0]]  # the two translations, at 0 Hz on the speed axis

@@ -17,7 +17,9 @@ _STYLE = {"forward": ("tab:red", "forward"), "backward": ("tab:blue", "backward"
 def plot_campbell(diagrams, operating_speed: float, ax=None) -> Figure:
     """Damped natural frequencies [Hz] against speed [rpm] for each state, with 1x and the operating speed.
 
-    Free: filled markers, in contact: hollow; coloured by whirl direction.
+    Free: filled markers, in contact: hollow; coloured by whirl direction. A mode that grows (an unstable one) is
+    crossed out in black, and a root that diverges without oscillating (a static instability: its frequency is 0)
+    is a purple triangle on the speed axis, as the tables list them (``Campbell.unstable``).
     """
     fig, ax = axes_for(ax, (7, 4.5))
     rpm = 30.0 / np.pi
@@ -36,6 +38,16 @@ def plot_campbell(diagrams, operating_speed: float, ax=None) -> Figure:
                        facecolors="none" if hollow else colour, edgecolors=colour, linewidths=0.8,
                        label=None if name in seen else name)
             seen.add(name)
+        growing = diagram.growing()
+        for mask, marker, colour, name in ((growing & (diagram.whirl != "none"), "x", "k", "growing (unstable)"),
+                                           (growing & (diagram.whirl == "none"), "^", "tab:purple",
+                                            "diverging without oscillating (0 Hz)")):
+            if mask.any():
+                rows, cols = np.nonzero(mask)
+                ax.scatter(speeds[rows], np.nan_to_num(diagram.frequencies[rows, cols]), s=30, marker=marker,
+                           color=colour, linewidths=1.0, clip_on=False, zorder=3,
+                           label=None if name in seen else name)
+                seen.add(name)
         top = max(top, float(np.nanmax(diagram.frequencies)) if diagram.frequencies.size else 0.0)
         span = speeds.max() if speeds.size else 1.0
     ax.plot([0.0, span], [0.0, span / 60.0], color="k", lw=0.8, label="1x (synchronous)")
