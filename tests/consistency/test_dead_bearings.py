@@ -28,7 +28,7 @@ def dropped(blower):
 
 def test_the_state_moves_across_by_name_and_the_slope_with_it(blower, dropped):
     t = float(dropped.memory.t[0])
-    _, model, y, memory, e0 = without_dead_bearings(blower, dropped.model, dropped.y, dropped.memory,
+    model, y, memory, e0 = without_dead_bearings(blower, dropped.model, dropped.y, dropped.memory,
                                                     dropped.model.energy0, t)
     assert model.layout.size == dropped.model.layout.size - 18  # 15 controller states and 3 ledger entries
     assert not any(name.startswith("amb_") for name in model.layout.names)
@@ -79,7 +79,7 @@ def test_an_elastic_rotor_keeps_the_modal_basis_it_ran_with():
     # bearings, 12): the lighter machine keeps it, and its slopes are the same state by state
     compressor = read_machine("compressor")
     dropped = integrate_machine(compressor, 0.002, None, None)
-    _, model, y, _, _ = without_dead_bearings(compressor, dropped.model, dropped.y, dropped.memory,
+    model, y, _, _ = without_dead_bearings(compressor, dropped.model, dropped.y, dropped.memory,
                                               dropped.model.energy0, 0.002)
     assert model.layout.modes == dropped.model.layout.modes == 18
     old = {name: i for i, name in enumerate(dropped.model.layout.names)}
@@ -87,3 +87,18 @@ def test_an_elastic_rotor_keeps_the_modal_basis_it_ran_with():
     cm.rhs(0.002, dropped.y, dropped.model.machine, slope_before)
     cm.rhs(0.002, y, model.machine, slope_after)
     assert all(slope_after[j] == slope_before[old[name]] for j, name in enumerate(model.layout.names))
+
+
+@pytest.mark.parametrize("name", ["blower", "compressor"])
+def test_a_drop_whose_bearings_fail_at_the_start_runs_without_them_to_the_same_bits(name, monkeypatch):
+    from auxbearing.analysis import drop
+
+    machine = read_machine(name)
+    lighter = drop.integrate_machine(machine, 0.02, None, None)
+    monkeypatch.setattr(drop, "lighter_model", lambda *args: None)  # the bearings kept in the state vector
+    kept = drop.integrate_machine(machine, 0.02, None, None)
+    assert lighter.model.layout.names == kept.model.layout.names  # handed back in the machine's own layout
+    assert np.array_equal(lighter.grid, kept.grid) and np.array_equal(lighter.y, kept.y)
+    assert np.array_equal(lighter.memory.derivative, kept.memory.derivative)
+    assert int(lighter.memory.steps[0]) == int(kept.memory.steps[0])
+    assert np.array_equal(lighter.watch.peak, kept.watch.peak)

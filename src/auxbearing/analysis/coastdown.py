@@ -288,7 +288,7 @@ class _Session:
         """Carry on without the magnetic bearings that failed for good (:mod:`auxbearing.analysis.dead_bearings`)."""
         lighter = without_dead_bearings(self.machine, self.model, self.y, self.memory, self.e0, self.t)
         if lighter is not None:
-            _, self.model, self.y, self.memory, self.e0 = lighter
+            self.model, self.y, self.memory, self.e0 = lighter
             self.core, self.layout = self.model.machine, self.model.layout
 
     def sandbox(self) -> _Session:

@@ -22,6 +22,7 @@ import numpy as np
 import xarray as xr
 
 from auxbearing import __version__
+from auxbearing.analysis.dead_bearings import lighter_model, restored
 from auxbearing.analysis.first_compile import compile_side_by_side, first_call_state
 from auxbearing.analysis.scenario_outcome import outcome
 from auxbearing.analysis.whirl import natural_frequency, timeline
@@ -146,19 +147,23 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
     """Run the compiled driver from the drop in slices of the step budget, checking the budgets between slices."""
     sim = machine.simulation
     model = pack(machine)
-    compile_s = _warm_up(model)
+    # magnetic bearings dead from the start (failed at the drop, no decay) run outside the state vector: the
+    # same run to the bit, without their frozen states in every stage (analysis.dead_bearings)
+    light = lighter_model(machine, model, 0.0)
+    run_model = model if light is None else light
+    compile_s = _warm_up(run_model)
     if output_step is None:
         out_step, decimated = _output_step(machine, duration)
     else:
         out_step, decimated = output_step, False
-    settings, grid, y, memory, watch = start_driver(machine, model, duration, out_step)
+    settings, grid, y, memory, watch = start_driver(machine, run_model, duration, out_step)
     verdict = OK
     wall = 0.0
     stops = [t for t in breakpoints(machine) if t < duration] + [duration]
     while True:
         interrupt.check()  # before every chunk: a Ctrl-C that a library swallowed still stops the run
         start = time.perf_counter()
-        status = drive.advance(model.machine, watch, y, stops[0], settings, memory, grid)
+        status = drive.advance(run_model.machine, watch, y, stops[0], settings, memory, grid)
         wall += time.perf_counter() - start
         if status == ig.FINISHED and len(stops) > 1:
             stops.pop(0)  # a scenario's or a load's time reached: on to the next
@@ -184,6 +189,10 @@ def integrate_machine(machine: Machine, duration: float, output_step: float | No
     if progress is not None:
         progress(1.0, "done")
     grid = grid[: int(memory.next_output[0])]
+    if light is not None:  # back in the machine's own layout, the bearings frozen where they started
+        grid, y = restored(model, light, grid, model.y0), restored(model, light, y, model.y0)
+        rates = restored(model, light, memory.derivative, np.zeros(model.y0.size))  # frozen: no rate
+        memory = memory._replace(derivative=rates)
     return Integration(model, grid, watch, memory, y, verdict, wall, compile_s, out_step, decimated)
 
 
