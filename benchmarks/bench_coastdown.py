@@ -35,7 +35,6 @@ from itertools import pairwise
 import numpy as np
 
 from auxbearing.analysis.coastdown import run_coastdown
-from auxbearing.analysis.drop import whirl_window
 from auxbearing.machine.files import machine_names, machine_table, read_machine
 from auxbearing.machine.judging import candidate_tables
 from auxbearing.machine.model import machine_from_mapping
@@ -50,7 +49,12 @@ def load() -> str:
 
 
 class Split:
-    """Wall and CPU time between progress calls, booked to windows or stretches by how far simulated time moved.
+    """Wall and CPU time between progress calls, booked to windows or stretches by the run's own history.
+
+    The coast-down calls the progress callback once after each window and each stretch, right after it adds
+    that window's or stretch's row to its history (mode 0 or 1; the drop's end, mode 2, has no call), so the
+    n-th call is the n-th such row. Booked by how far simulated time moved instead, a window the run lengthened
+    (``coastdown_phases.WINDOW_GROWTH``: the paper rigs' swinging journals) would count as a stretch.
 
     Each call's status line carries the speed; the times are also binned by speed, in :data:`BANDS`
     fractions of the drop speed, so a cost per simulated second can be read per band.
@@ -58,7 +62,6 @@ class Split:
 
     def __init__(self, machine, until_stop: bool, duration: float | None) -> None:
         self.t_end = machine.coastdown.max_time if until_stop else duration
-        self.window = max(machine.coastdown.check_window, whirl_window(machine))  # as the coast-down's windows
         self.rpm0 = abs(machine.rotor.speed) * 30.0 / math.pi
         self.calls: list[tuple[float, float, float, float]] = []  # wall clock, CPU clock, simulated time, rpm
 
@@ -71,17 +74,21 @@ class Split:
         self.calls.append((time.perf_counter(), time.process_time(), t,
                            abs(float(found.group(1))) if found else 0.0))
 
-    def report(self, start: tuple[float, float], stop: tuple[float, float]) -> dict:
+    def report(self, start: tuple[float, float], stop: tuple[float, float], modes: np.ndarray) -> dict:
         """(wall, CPU) [s] before the first call (the drop and the first window), in windows, stretches, after.
 
-        ``bands``: per speed band, [wall, CPU, simulated] of its windows, then of its stretches.
+        ``modes``: the run's history modes. ``bands``: per speed band, [wall, CPU, simulated] of its windows, then
+        of its stretches.
         """
         calls = self.calls
+        kinds = [int(m) for m in modes if int(m) != 2]  # one per progress call, in order
+        if len(kinds) != len(calls):
+            raise RuntimeError(f"{len(calls)} progress calls against {len(kinds)} windows and stretches in the history")
         first, last = (calls[0][:2], calls[-1][:2]) if calls else (stop, stop)
         out = {"drop": np.subtract(first, start), "tail": np.subtract(stop, last), "windows": np.zeros(3),
                "stretches": np.zeros(3), "bands": np.zeros((len(BANDS) - 1, 6))}
-        for (w0, c0, t0, _), (w1, c1, t1, rpm) in pairwise(calls):
-            window = t1 - t0 <= self.window * (1.0 + 1e-6)
+        for ((w0, c0, t0, _), (w1, c1, t1, rpm)), kind in zip(pairwise(calls), kinds[1:], strict=True):
+            window = kind == 0
             spent = np.array([w1 - w0, c1 - c0, t1 - t0])
             out["windows" if window else "stretches"] += spent
             band = min(max(int(np.searchsorted(BANDS, rpm / self.rpm0, side="right")) - 1, 0), len(BANDS) - 2)
@@ -95,7 +102,7 @@ def timed(machine, until_stop: bool, duration: float | None, mode: str):
     start = (time.perf_counter(), time.process_time())
     run = run_coastdown(machine, until_stop=until_stop, duration=duration, mode=mode, progress=split)
     stop = (time.perf_counter(), time.process_time())
-    return stop[0] - start[0], stop[1] - start[1], run.summary, split.report(start, stop)
+    return stop[0] - start[0], stop[1] - start[1], run.summary, split.report(start, stop, run.history["mode"].values)
 
 
 #: Simulated seconds per wall second every coast-down should reach (the verification issue's target).
