@@ -632,7 +632,7 @@ def _amb_summary(machine: Machine, model, grid: np.ndarray, bearings) -> list[di
                     "peak_current_A": float(currents.max()) if len(currents) else 0.0,
                     "peak_axis_current_A": axis_peak,
                     "max_excursion_um": excursion,
-                    "max_current_A": b.current_limit() if math.isfinite(b.current_limit()) else None,
+                    "max_current_A": b.current_limit(),  # inf if none: "inf" in JSON (common.io)
                     "closed_loop_stiffness_N_per_m": b.closed_loop_stiffness() if b.controller is None else None})
     return out
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import math
 from pathlib import Path
 
 import click
@@ -431,7 +432,7 @@ def _bearing_table(records: list | None):
     for a in records:
         excursion = a.get("max_excursion_um")
         table.add_row(a["name"], a["axis"], f"{a['levitated_offset_um']:.1f}", f"{a['peak_axis_current_A']:.2f}",
-                      "none" if a["max_current_A"] is None else f"{a['max_current_A']:g}",
+                      f"{a['max_current_A']:g}" if math.isfinite(a["max_current_A"]) else "unlimited",
                       "-" if excursion is None else f"{excursion:.1f}")
     return table
 

@@ -468,7 +468,7 @@ def _scenario_criteria(cases: Cases, criteria: dict | None = None) -> list[Crite
         return []
     out = []
     shares = [(a["peak_axis_current_A"] / a["max_current_A"], a["peak_axis_current_A"], a["max_current_A"], c,
-               a["name"]) for c, s in runs.items() for a in s["amb"] if a["max_current_A"]]
+               a["name"]) for c, s in runs.items() for a in s["amb"] if math.isfinite(a["max_current_A"])]
     name = "peak magnetic-bearing current against its amplifier's limit"
     if shares:
         share, peak, limit, case, bearing = max(shares)

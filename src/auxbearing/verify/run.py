@@ -69,10 +69,10 @@ def _scenario_rows(cases: Cases) -> list[list]:
         s = run.summary.get("scenario") or {}
         if not case.startswith(SCENARIO_CASE) or "outcome" not in s:
             continue
-        worst = max(run.summary.get("amb", []), key=lambda a: a["peak_axis_current_A"] / (a["max_current_A"] or
-                                                                                           math.inf), default=None)
+        worst = max(run.summary.get("amb", []), key=lambda a: a["peak_axis_current_A"] / a["max_current_A"],
+                    default=None)
         peak = "-" if worst is None else f"{worst['peak_axis_current_A']:.2f} A ({worst['name']})" + (
-            f" of {worst['max_current_A']:g} A" if worst["max_current_A"] else "")
+            f" of {worst['max_current_A']:g} A" if math.isfinite(worst["max_current_A"]) else "")
         # the longest of the bearings' times: a sum over bearings could exceed the run
         saturated = max((b["saturated_ms"] for b in s.get("saturation", [])), default=0.0)
         rows.append([case.removeprefix(SCENARIO_CASE), s["kind"].replace("_", " "), f"{s['time_ms']:.1f}",
