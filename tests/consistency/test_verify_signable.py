@@ -108,7 +108,7 @@ def _campaign(hits: int, drops: int) -> dict:
 
 
 def test_the_whirl_bound_is_named_the_one_sided_97_5_percent_bound_it_is():
-    # the blower's full run: 7 of 56 drops whirl
+    # 7 of 56 drops whirl (where the blower's campaign stopped before its drops' last whirl window was judged)
     c = _whirl_probability(_campaign(7, 56), {"max_backward_whirl_probability": 0.05, "given": []})
     assert "95 % bound" not in c.name and c.name.endswith("one-sided 97.5 % upper bound")
     assert "two-sided 95 % Wilson interval 0.062-0.236, whose upper end is judged" in c.evidence
