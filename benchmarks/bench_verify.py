@@ -12,7 +12,10 @@ In one process, after a short drop that compiles or loads the kernels:
    its store), the drops, the geometry search's points, the kernel loading and the design's report figures
    (drawn on the cluster at the end of the runs, so the wall time is what the command line waits for but
    the writing of the files), with how busy the workers were over the run. The verdict is printed too: it
-   must not change with the number of workers.
+   must not change with the number of workers;
+3. the drops each campaign ran (read from its store) and their wall time in units: the whirl criterion's
+   statistics set how many there are, and each is a unit drop without its time series, so their count over the
+   workers is a floor under the verification's units that no kernel speed-up or schedule moves.
 
     python benchmarks/bench_verify.py [--quick] [--workers 2 --workers 1] [--machine blower]
 
@@ -94,6 +97,7 @@ def one_verification(machine_name: str, workers: int, quick: bool) -> dict:
             result = verify(machine_name, Path(out), quick=quick, scheduler=client.scheduler.address,
                             progress=lambda text: phases.append((time.perf_counter(), text)))
             stores = _stores(Path(out))
+            campaign_drops = _campaign_drops(Path(out))
         wall = time.perf_counter() - wall0
         workers_cpu = children_cpu() - child0
     finally:
@@ -109,7 +113,38 @@ def one_verification(machine_name: str, workers: int, quick: bool) -> dict:
         entry[0] += 1
         entry[1] += compute
     return {"wall": wall, "cpu": time.process_time() - cpu0, "workers_cpu": workers_cpu, "workers": workers,
-            "verdict": result["verdict"], "reason": result["reason"], "split": split, "cases": cases}
+            "verdict": result["verdict"], "reason": result["reason"], "split": split, "cases": cases,
+            "campaign_drops": campaign_drops}
+
+
+def _campaign_drops(out: Path) -> dict:
+    """Store name -> (drops run, their summed wall time [s]), from each campaign store's samples."""
+    import zarr
+
+    runs = {}
+    for path in sorted(out.glob("*.zarr")):
+        group = zarr.open(str(path), mode="r")
+        ran = group["verdict"][:] > 0  # 0: a sample not run (the campaign stopped once decided)
+        runs[path.name] = (int(ran.sum()), float(group["sample_time"][:][ran].sum()))
+    return runs
+
+
+def floor_lines(run: dict, unit: float) -> list[str]:
+    """What the campaigns' drops alone cost, in units: a lower bound no scheduling or kernel speed-up moves.
+
+    A campaign drop is the same 0.2 s drop as the unit (lean: no time series), and the number of them is set by
+    the whirl criterion's statistics (a design passes only after enough drops without whirl for the bound to fall
+    under the limit), so their share of the verification cannot fall below their count over the workers.
+    """
+    drops = sum(n for n, _ in run["campaign_drops"].values())
+    seconds = sum(t for _, t in run["campaign_drops"].values())
+    per_store = ", ".join(f"{name.removesuffix('.zarr')} {n}" for name, (n, _) in run["campaign_drops"].items())
+    lines = [f"  campaign drops run: {drops} ({per_store}), {seconds:.1f} s of the workers = {seconds / unit:.0f} "
+             f"units, {seconds / unit / run['workers']:.0f} units of wall on {run['workers']} worker(s) at the least"]
+    coast = sum(sec for case, (_, sec) in run["cases"].items() if "coast-down" in case)
+    lines.append(f"  coast-downs and the convergence re-run: {coast:.1f} s of the workers = {coast / unit:.0f} units, "
+                 f"{coast / unit / run['workers']:.0f} units of wall")
+    return lines
 
 
 def main() -> None:
@@ -141,6 +176,7 @@ def main() -> None:
         for case, (tasks, seconds) in sorted(run["cases"].items(), key=lambda item: -item[1][1]):
             if seconds >= 0.05:
                 print(f"  {seconds:8.1f} s  {100 * seconds / busy:5.1f} %  {tasks:4d} tasks  {case}")
+        print("\n".join(floor_lines(run, unit)))
         print(load())
     if len(runs) > 1:
         (a, ra), (b, rb) = list(runs.items())[:2]
