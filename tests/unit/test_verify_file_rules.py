@@ -1,6 +1,7 @@
 """What the file's [criteria] and [verify] tables may hold, checked before any run, and the API's candidates."""
 
 import copy
+import json
 
 import pytest
 
@@ -84,3 +85,25 @@ def test_the_command_line_refuses_an_empty_candidate_in_its_list_writing_nothing
                                        "--candidates", "6208,"])
     assert result.exit_code == 2 and not out.exists()
     assert "--candidates = '6208,': a comma-separated list of bearings, no empty item" in result.output
+
+
+def test_none_asks_for_the_design_alone_without_the_file_s_candidates():
+    from auxbearing.verify.run import candidate_specs
+
+    # an engineer iterating on one design: the blower's file names three candidates, "none" runs none of them
+    assert candidate_specs("none", "--candidates") == [] == candidate_specs(" NONE ")
+    assert candidate_specs(None) is None  # the file's [[candidate]] tables
+    assert candidate_specs("none, 6208", "--candidates") == ["none", "6208"]  # a list is a list: refused as a name
+
+
+@pytest.mark.slow  # a quick verification of the blower without its campaign: about 15 s
+def test_the_command_line_verifies_the_design_alone_with_candidates_none(tmp_path):
+    from click.testing import CliRunner
+
+    from auxbearing.cli.main import cli
+
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli, ["verify", "--machine", "blower", "--out", str(out), "--quick", "--json",
+                                       "--campaign-samples", "0", "--no-recommendation", "--candidates", "none"])
+    assert result.exit_code == 3, result.output  # INCOMPLETE: a quick look
+    assert json.loads(result.stdout)["candidates"] == []

@@ -30,7 +30,7 @@ WIDE_TABLE = 110
               callback=checked_out_dir, help="Folder for report.html, verify.json and the data behind them.")
 @click.option("--candidates", default=None, metavar="LIST",
               help="Comma-separated catalogue bearings or bearing TOML files to try in the same seats "
-                   "(default: the file's [[candidate]] tables).")
+                   "(default: the file's [[candidate]] tables; none: the design alone).")
 @click.option("--quick", is_flag=True, help="A first look in well under a minute: short drops, the first seconds "
                                             "of the coast-down, 8 campaign drops, a coarse recommendation; what the "
                                             "cut runs pass is not checked (INCOMPLETE at best).")

@@ -164,6 +164,30 @@ def _design(cases: Cases, criteria: dict) -> dict:
             "cases": cases}
 
 
+#: ``candidates`` as text that asks for no candidate at all (the command line's ``--candidates none``): the design
+#: alone, as an engineer iterating on it runs it, without the file's ``[[candidate]]`` tables.
+NO_CANDIDATES = "none"
+
+
+def candidate_specs(candidates: list | str | None, option: str = "candidates") -> list | None:
+    """The candidates asked for: a list (a string split at its commas; :data:`NO_CANDIDATES`: none), or None.
+
+    None leaves the choice to the machine file's ``[[candidate]]`` tables.
+
+    >>> candidate_specs("7208, 6208"), candidate_specs("None"), candidate_specs(None)
+    (['7208', '6208'], [], None)
+    """
+    if not isinstance(candidates, str):
+        return candidates
+    if candidates.strip().lower() == NO_CANDIDATES:
+        return []
+    items = [c.strip() for c in candidates.split(",")]
+    if not all(items):
+        raise InputError.for_field(option, candidates, "a comma-separated list of bearings, no empty item "
+                                   f"('{NO_CANDIDATES}' for no candidate)")
+    return items
+
+
 def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quick: bool = False,
            samples: int | None = None, workers: int | None = None, scheduler: str | None = None,
            with_recommendation: bool = True, progress: Callable[[str], None] | None = None,
@@ -178,7 +202,8 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
         Folder the campaign stores go into (the caller writes the report there).
     candidates : list or str, optional
         Catalogue names, bearing TOML paths or ``[[candidate]]`` tables (a string: names separated by commas, as
-        the command line's ``--candidates``); default the file's ``[[candidate]]``.
+        the command line's ``--candidates``, or ``"none"``; an empty list: none); default the file's
+        ``[[candidate]]``.
     quick : bool
         A first look: short drops, a few seconds of coast-down, a small campaign, a coarse recommendation;
         what the cut runs pass is not checked, so its verdict is INCOMPLETE at best.
@@ -192,10 +217,7 @@ def verify(spec: str | Path, out_dir: Path, candidates: list | None = None, quic
     """
     start = time.perf_counter()
     out_dir = Path(out_dir)
-    if isinstance(candidates, str):
-        text, candidates = candidates, [c.strip() for c in candidates.split(",")]
-        if not all(candidates):
-            raise InputError.for_field(candidates_option, text, "a comma-separated list of bearings, no empty item")
+    candidates = candidate_specs(candidates, candidates_option)
     # the command line checks its options under their own names first; the API gets the same rules
     for key, value, low, high in (("samples", samples, 0, MAX_CAMPAIGN_SAMPLES), ("workers", workers, 1, 256)):
         if value is not None and (isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high):
