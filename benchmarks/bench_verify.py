@@ -17,7 +17,7 @@ In one process, after a short drop that compiles or loads the kernels:
    statistics set how many there are, and each is a unit drop without its time series, so their count over the
    workers is a floor under the verification's units that no kernel speed-up or schedule moves.
 
-    python benchmarks/bench_verify.py [--quick] [--workers 2 --workers 1] [--machine blower]
+    python benchmarks/bench_verify.py [--quick] [--design-alone] [--workers 2 --workers 1] [--machine blower]
 
 A full blower verification takes 4-8 minutes a run on the 2-core machine; ``--quick`` measures the quick
 verification instead.
@@ -84,7 +84,7 @@ def _stores(out: Path) -> dict:
     return names
 
 
-def one_verification(machine_name: str, workers: int, quick: bool) -> dict:
+def one_verification(machine_name: str, workers: int, quick: bool, alone: bool = False) -> dict:
     from distributed import get_task_stream
 
     from auxbearing.campaign.run import _client
@@ -94,7 +94,8 @@ def one_verification(machine_name: str, workers: int, quick: bool) -> dict:
     try:
         cpu0, child0, wall0 = time.process_time(), children_cpu(), time.perf_counter()
         with tempfile.TemporaryDirectory() as out, get_task_stream(client) as stream:
-            result = verify(machine_name, Path(out), quick=quick, scheduler=client.scheduler.address,
+            result = verify(machine_name, Path(out), [] if alone else None, quick=quick,
+                            with_recommendation=not alone, scheduler=client.scheduler.address,
                             progress=lambda text: phases.append((time.perf_counter(), text)))
             stores = _stores(Path(out))
             campaign_drops = _campaign_drops(Path(out))
@@ -151,6 +152,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--machine", default="blower")
     parser.add_argument("--quick", action="store_true", help="the quick verification instead of the full one")
+    parser.add_argument("--design-alone", action="store_true",
+                        help="the design only: no candidate, no search (--candidates none --no-recommendation)")
     parser.add_argument("--workers", type=int, action="append", help="cluster sizes to compare (default 2, 1)")
     args = parser.parse_args()
     print(load())
@@ -158,13 +161,15 @@ def main() -> None:
     print(f"one 0.2 s {args.machine} drop: {drop:.3f} s wall (best of 3)")
     runs = {}
     for workers in args.workers or [2, 1]:
-        run = runs[workers] = one_verification(args.machine, workers, args.quick)
+        run = runs[workers] = one_verification(args.machine, workers, args.quick, args.design_alone)
         # this machine's speed drifts by 20-30 % over minutes: the unit is the drop measured before and after
         after = one_drop(args.machine)
         unit = 0.5 * (drop + after)
         print(f"\none 0.2 s {args.machine} drop after it: {after:.3f} s wall (best of 3); the unit below is "
               f"their mean, {unit:.3f} s")
-        print(f"verify --machine {args.machine}{' --quick' if args.quick else ''} on {workers} worker(s): "
+        options = (" --quick" if args.quick else "") + (" --candidates none --no-recommendation" if args.design_alone
+                                                         else "")
+        print(f"verify --machine {args.machine}{options} on {workers} worker(s): "
               f"{run['wall']:.1f} s wall = {run['wall'] / unit:.0f} drops (target: 150), CPU {run['cpu']:.1f} s "
               f"here + {run['workers_cpu']:.1f} s in the workers; {run['verdict'].upper()}: {run['reason']}")
         drop = after

@@ -12,6 +12,7 @@ import math
 import time
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import replace
 from functools import partial
 from pathlib import Path
 
@@ -397,14 +398,21 @@ def _run_all(data, name, base, criteria, settings, candidate_list, quick, sample
     def design() -> tuple[dict, Callable]:
         # the design's governing case runs again tighter, beside whatever still runs, as soon as it is known: the
         # campaign's criterion is judged last, so a criterion its own drops or coast-down fail governs whatever
-        # the campaign shows (the blower's peak temperature)
+        # the campaign shows (the blower's peak temperature). The campaign goes out with the runs, not after the
+        # coast-down: the design verified alone (no candidate, no search) left a worker idle for that long
         cases, futures, *_ = planned["design"]
-        collect_cases(cases, futures)
-        converging, before_campaign = None, judge(cases, criteria)
-        if any(c.passed is False for c in before_campaign):
-            say("convergence of the governing case")
-            converging = convergence_started(cases, before_campaign, executor.ahead())
-        campaign("design")
+
+        def first_look() -> Callable | None:
+            collect_cases(cases, futures)
+            # judged without the campaign, which may have finished by now: which case runs again must not depend on
+            # how fast the cluster went
+            before_campaign = judge(replace(cases, campaign=None, campaign_store=None), criteria)
+            if any(c.passed is False for c in before_campaign):
+                say("convergence of the governing case")
+                return convergence_started(cases, before_campaign, executor.ahead())
+            return None
+
+        converging, _ = _side_by_side([first_look, partial(campaign, "design")])
         judged = _design(cases, criteria)
         if converging is None:
             say("convergence of the governing case")
